@@ -1,0 +1,168 @@
+#include <gridvector/GridVector.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridvector
+{
+using mrpt::math::TPoint2D;
+
+namespace
+{
+int columnsFor(double length, double res) { return std::max(1, int(std::ceil(length / res - 1e-9))); }
+}  // namespace
+
+GridVector::GridVector(const TPoint2D& start, const TPoint2D& end, const GridOptions& grid)
+	: start_(start),
+	  end_(end),
+	  res_(grid.resolution),
+	  halfWidth_(grid.halfWidth),
+	  priorOcc_(float(grid.priorOccupy)),
+	  priorVisit_(float(grid.priorVisit))
+{
+	setGeometry(start, end, columnsFor(length(), res_));
+}
+
+void GridVector::setGeometry(const TPoint2D& s, const TPoint2D& e, int cols)
+{
+	start_ = s;
+	end_ = e;
+	cols_ = std::max(1, cols);
+	GridCell prior;
+	prior.n_occupy = priorOcc_;
+	prior.n_visit = priorVisit_;
+	cells_.assign(size_t(rows()) * cols_, prior);
+}
+
+double GridVector::psi() const { return std::atan2(end_.y - start_.y, end_.x - start_.x); }
+TPoint2D GridVector::centre() const { return {(start_.x + end_.x) / 2, (start_.y + end_.y) / 2}; }
+double GridVector::length() const { return std::hypot(end_.x - start_.x, end_.y - start_.y); }
+
+TPoint2D GridVector::direction() const
+{
+	const double l = length();
+	if (l <= 0) return {1, 0};
+	return {(end_.x - start_.x) / l, (end_.y - start_.y) / l};
+}
+
+TPoint2D GridVector::leftNormal() const
+{
+	const TPoint2D d = direction();
+	return {-d.y, d.x};
+}
+
+Line2D GridVector::line() const
+{
+	Line2D l;
+	l.theta = mrpt::math::wrapToPi(psi() - M_PI / 2);
+	const TPoint2D c = centre();
+	l.rho = std::cos(l.theta) * c.x + std::sin(l.theta) * c.y;
+	return l;
+}
+
+TPoint2D GridVector::toGridFrame(const TPoint2D& p) const
+{
+	const TPoint2D d = direction(), n = leftNormal();
+	const double dx = p.x - start_.x, dy = p.y - start_.y;
+	return {dx * d.x + dy * d.y, dx * n.x + dy * n.y};
+}
+
+bool GridVector::cellOf(const TPoint2D& p, int& row, int& col) const
+{
+	const TPoint2D g = toGridFrame(p);
+	const double c = std::floor(g.x / res_);
+	const double r = std::floor(g.y / res_ + 0.5) + halfWidth_;
+	if (c < 0 || c >= cols_ || r < 0 || r >= rows()) return false;
+	col = int(c);
+	row = int(r);
+	return true;
+}
+
+TPoint2D GridVector::cellCentre(int row, int col) const
+{
+	const double u = (col + 0.5) * res_, w = (row - halfWidth_) * res_;
+	const TPoint2D d = direction(), n = leftNormal();
+	return {start_.x + u * d.x + w * n.x, start_.y + u * d.y + w * n.y};
+}
+
+TPoint2D GridVector::cellMeanPoint(int row, int col) const
+{
+	const GridCell& c = cell(row, col);
+	if (c.n_acc <= 0) return cellCentre(row, col);
+	const double u = col * res_ + c.x_acc / c.n_acc;
+	const double w = (row - halfWidth_ - 0.5) * res_ + c.y_acc / c.n_acc;
+	const TPoint2D d = direction(), n = leftNormal();
+	return {start_.x + u * d.x + w * n.x, start_.y + u * d.y + w * n.y};
+}
+
+// Algorithm 1: initialise the cell a beam endpoint drops in.
+bool GridVector::addEndpoint(const TPoint2D& p)
+{
+	int row, col;
+	if (!cellOf(p, row, col)) return false;
+	const TPoint2D g = toGridFrame(p);
+	GridCell& c = cell(row, col);
+	c.x_acc += float(g.x - col * res_);
+	c.y_acc += float(g.y - (row - halfWidth_ - 0.5) * res_);
+	c.n_acc += 1;
+	c.n_occupy += 1;
+	c.n_visit += 1;
+	return true;
+}
+
+// Fig. 4: probabilities summed across the width, normalised by the width.
+std::vector<double> GridVector::occupancyProfile() const
+{
+	std::vector<double> prof(size_t(cols_), 0.0);
+	for (int c = 0; c < cols_; ++c)
+	{
+		double s = 0;
+		for (int r = 0; r < rows(); ++r) s += cell(r, c).occupancy();
+		prof[size_t(c)] = s / rows();
+	}
+	return prof;
+}
+
+double GridVector::pStatic() const
+{
+	const auto prof = occupancyProfile();
+	double s = 0;
+	for (double v : prof) s += v;
+	return prof.empty() ? 0.5 : s / prof.size();
+}
+
+double GridVector::totalOccupy() const
+{
+	double s = 0;
+	for (const auto& c : cells_) s += c.n_occupy;
+	return s;
+}
+
+double GridVector::totalVisit() const
+{
+	double s = 0;
+	for (const auto& c : cells_) s += c.n_visit;
+	return s;
+}
+
+double GridVector::totalPoints() const
+{
+	double s = 0;
+	for (const auto& c : cells_) s += c.n_acc;
+	return s;
+}
+
+// m_{i,t} = x_t (+) v_{i,t}: the grid rides in the vector's own frame.
+GridVector GridVector::compose(const mrpt::math::TPose2D& pose) const
+{
+	GridVector out = *this;
+	const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+	auto tf = [&](const TPoint2D& p) {
+		return TPoint2D(pose.x + c * p.x - s * p.y, pose.y + s * p.x + c * p.y);
+	};
+	out.start_ = tf(start_);
+	out.end_ = tf(end_);
+	return out;
+}
+
+}  // namespace gridvector

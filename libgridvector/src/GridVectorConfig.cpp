@@ -1,0 +1,128 @@
+#include <gridvector/GridVectorConfig.h>
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <type_traits>
+
+namespace gridvector
+{
+namespace
+{
+template <class T>
+std::string toText(const T& value)
+{
+	std::ostringstream os;
+	if constexpr (std::is_same_v<T, bool>) os << (value ? "true" : "false");
+	else os << value;
+	return os.str();
+}
+
+void readValue(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k, double& f)
+{
+	f = c.read_double(s, k, f);
+}
+void readValue(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k, int& f)
+{
+	f = c.read_int(s, k, f);
+}
+void readValue(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k, bool& f)
+{
+	f = c.read_bool(s, k, f);
+}
+
+template <class Group>
+std::set<std::string> keysOf(Group& g)
+{
+	std::set<std::string> keys;
+	g.visit([&](const char* key, auto&, const char*) { keys.insert(key); });
+	return keys;
+}
+}  // namespace
+
+void GridVectorConfig::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& cfg, const std::string& prefix,
+	const std::string& sourceName)
+{
+	visitGroups([&](const char* group, auto& g) {
+		const std::string section = prefix + "_" + group;
+		if (!cfg.sectionExists(section)) return;
+		const auto known = keysOf(g);
+		std::vector<std::string> present;
+		cfg.getAllKeys(section, present);
+		for (const auto& k : present)
+			if (!known.count(k))
+				throw std::runtime_error(
+					sourceName + ": unknown key '" + k + "' in section [" + section + "]");
+		g.visit([&](const char* key, auto& field, const char*) {
+			readValue(cfg, section, key, field);
+		});
+	});
+	validate();
+}
+
+void GridVectorConfig::loadFromFile(const std::string& iniPath, const std::string& prefix)
+{
+	std::ifstream probe(iniPath);
+	if (!probe) throw std::runtime_error(iniPath + ": cannot open config file");
+	mrpt::config::CConfigFile cfg(iniPath);
+	try
+	{
+		loadFromConfigFile(cfg, prefix, iniPath);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(iniPath + ": " + e.what());
+	}
+}
+
+void GridVectorConfig::dumpAsIni(std::ostream& out, const std::string& prefix) const
+{
+	auto& self = const_cast<GridVectorConfig&>(*this);
+	self.visitGroups([&](const char* group, auto& g) {
+		out << "[" << prefix << "_" << group << "]\n";
+		g.visit([&](const char* key, auto& field, const char* doc) {
+			out << "; " << doc << "\n" << key << " = " << toText(field) << "\n";
+		});
+		out << "\n";
+	});
+}
+
+std::string GridVectorConfig::parameterTableMarkdown(const std::string& prefix)
+{
+	GridVectorConfig defaults;
+	std::ostringstream out;
+	out << "| section | key | default | meaning |\n|---|---|---|---|\n";
+	defaults.visitGroups([&](const char* group, auto& g) {
+		g.visit([&](const char* key, auto& field, const char* doc) {
+			out << "| `[" << prefix << "_" << group << "]` | `" << key << "` | "
+				<< toText(field) << " | " << doc << " |\n";
+		});
+	});
+	return out.str();
+}
+
+void GridVectorConfig::validate() const
+{
+	auto require = [](bool ok, const char* what) {
+		if (!ok) throw std::invalid_argument(std::string("invalid parameter: ") + what);
+	};
+	require(extraction.splitThreshold > 0, "extraction.split_threshold must be > 0");
+	require(extraction.mergeThreshold > 0, "extraction.merge_threshold must be > 0");
+	require(extraction.minPoints >= 2, "extraction.min_points must be >= 2");
+	require(extraction.minLength >= 0, "extraction.min_length must be >= 0");
+	require(extraction.breakDistance > 0, "extraction.break_distance must be > 0");
+	require(grid.resolution > 0, "grid.resolution must be > 0");
+	require(grid.halfWidth >= 0 && grid.halfWidth <= 20, "grid.half_width must be in [0,20]");
+	require(grid.priorVisit > 0 && grid.priorOccupy >= 0 && grid.priorOccupy <= grid.priorVisit,
+			"grid priors need 0 <= prior_occupy <= prior_visit, prior_visit > 0");
+	require(map.hitBand > 0, "map.hit_band must be > 0");
+	require(map.indexCellSize > 0, "map.index_cell_size must be > 0");
+	require(estep.staticThreshold > 0 && estep.staticThreshold < 1, "estep.static_threshold must be in (0,1)");
+	require(mstep.maxIterations >= 1, "mstep.max_iterations must be >= 1");
+}
+
+}  // namespace gridvector

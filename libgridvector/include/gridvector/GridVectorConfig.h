@@ -37,7 +37,7 @@ struct ExtractionOptions
 		v("merge_threshold", mergeThreshold, "Merge neighbouring collinear segments when the joint fit's max residual is below this [m]");
 		v("min_points", minPoints, "Minimum laser points per vector");
 		v("min_length", minLength, "Minimum vector length [m]");
-		v("max_point_gap", maxPointGap, "Largest gap between consecutive points inside one vector [m]");
+		v("max_point_gap", maxPointGap, "Largest gap between consecutive points inside one vector; caps the adaptive breakpoint [m]");
 	}
 };
 

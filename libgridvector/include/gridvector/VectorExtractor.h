@@ -1,0 +1,71 @@
+// Sec. 3.1: grid-vector extraction from a 2D range scan by split-and-merge.
+#pragma once
+
+#include <gridvector/GridVector.h>
+#include <gridvector/GridVectorConfig.h>
+
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <vector>
+
+namespace gridvector
+{
+/** V_t: the local map of one scan, in the robot frame. */
+struct LocalScan
+{
+	std::vector<GridVector> vectors;  //!< v_{i,t}, robot frame, open space on the left
+	mrpt::math::TPoint2D sensorOrigin{0, 0};  //!< apex of the wipe triangles (robot frame)
+	int64_t scanIndex = -1;  //!< t
+	double timestamp = 0;
+	size_t validBeams = 0;  //!< beams that returned a usable range
+};
+
+/** A fitted run of points [first, last] of the ordered scan points. */
+struct ScanSegment
+{
+	size_t first = 0, last = 0;  //!< inclusive indices into the point list
+	Line2D line;  //!< least-squares fit (Eq. 3)
+	double maxResidual = 0;  //!< largest |distance| of its points to the line
+};
+
+class VectorExtractor
+{
+   public:
+	VectorExtractor(const ExtractionOptions& ext = {}, const GridOptions& grid = {});
+
+	/** Extract v_{1,t}..v_{n,t} from a scan (sensorPose, aperture,
+	 * rightToLeft and per-beam validity respected; NaN, inf, <= min_range and
+	 * >= maxRange readings break segments). */
+	LocalScan extract(const mrpt::obs::CObservation2DRangeScan& scan) const;
+
+	/** Valid beam endpoints (robot frame), in scan order, and the index at
+	 * which each contiguous run starts (runs break at invalid beams and at
+	 * the adaptive breakpoint of Borges & Aldon 2004). */
+	void scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
+					std::vector<mrpt::math::TPoint2D>& pts,
+					std::vector<size_t>& runStarts) const;
+
+	/** Split-and-merge over one run of ordered points [first, last]. */
+	std::vector<ScanSegment> splitAndMerge(
+		const std::vector<mrpt::math::TPoint2D>& pts, size_t first, size_t last) const;
+
+	/** Directed grid vector from a fitted segment: endpoints are the
+	 * projections of the extreme points, open space (sensor) on the left,
+	 * grid initialised by Algorithm 1 with the segment's points. */
+	GridVector makeVector(const std::vector<mrpt::math::TPoint2D>& pts, const ScanSegment& seg,
+						  const mrpt::math::TPoint2D& sensor) const;
+
+	const ExtractionOptions& extractionOptions() const { return ext_; }
+	const GridOptions& gridOptions() const { return grid_; }
+
+   private:
+	void split(const std::vector<mrpt::math::TPoint2D>& pts, size_t i, size_t j,
+			   std::vector<ScanSegment>& out) const;
+	bool fitSegment(const std::vector<mrpt::math::TPoint2D>& pts, size_t i, size_t j,
+					ScanSegment& seg) const;
+
+	ExtractionOptions ext_;
+	GridOptions grid_;
+};
+
+}  // namespace gridvector

@@ -1,0 +1,169 @@
+#include <gridvector/VectorExtractor.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridvector
+{
+using mrpt::math::TPoint2D;
+
+VectorExtractor::VectorExtractor(const ExtractionOptions& ext, const GridOptions& grid)
+	: ext_(ext), grid_(grid)
+{
+}
+
+void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
+								 std::vector<TPoint2D>& pts, std::vector<size_t>& runStarts) const
+{
+	pts.clear();
+	runStarts.clear();
+	const size_t n = scan.getScanSize();
+	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y(), syaw = scan.sensorPose.yaw();
+	const double cs = std::cos(syaw), ss = std::sin(syaw);
+	const double dPhi = n > 1 ? std::abs(scan.aperture) / (n - 1) : 0.0;
+	// Borges & Aldon adaptive breakpoint: D = r sin(dphi) / sin(lambda - dphi) + 3 sigma
+	const double lambda = ext_.breakAngleDeg * M_PI / 180.0;
+	const double adaptive = std::sin(dPhi) / std::max(1e-6, std::sin(lambda - dPhi));
+	const double sigma3 = 3.0 * std::max(0.0f, scan.stdError);
+	bool prevValid = false;
+	double prevR = 0;
+	for (size_t i = 0; i < n; ++i)
+	{
+		const float r = scan.getScanRange(i);
+		const bool valid = scan.getScanRangeValidity(i) && std::isfinite(r) &&
+						   r > ext_.minRange && r < scan.maxRange - ext_.maxRangeMargin;
+		if (!valid)
+		{
+			prevValid = false;
+			continue;
+		}
+		const double a = scan.getScanAngle(i);
+		const double lx = r * std::cos(a), ly = r * std::sin(a);
+		const TPoint2D p(sx + cs * lx - ss * ly, sy + ss * lx + cs * ly);
+		bool brk = !prevValid;
+		if (!brk)
+		{
+			const double jump = std::hypot(p.x - pts.back().x, p.y - pts.back().y);
+			brk = jump > std::min(ext_.maxPointGap,
+								 std::max(ext_.breakDistance, prevR * adaptive + sigma3));
+		}
+		if (brk) runStarts.push_back(pts.size());
+		pts.push_back(p);
+		prevValid = true;
+		prevR = r;
+	}
+}
+
+bool VectorExtractor::fitSegment(const std::vector<TPoint2D>& pts, size_t i, size_t j,
+								 ScanSegment& seg) const
+{
+	LineMoments m;
+	for (size_t k = i; k <= j; ++k) m.add(pts[k].x, pts[k].y);
+	if (!m.fit(seg.line)) return false;
+	seg.first = i;
+	seg.last = j;
+	seg.maxResidual = 0;
+	for (size_t k = i; k <= j; ++k)
+		seg.maxResidual = std::max(seg.maxResidual, std::abs(seg.line.distance(pts[k])));
+	return true;
+}
+
+// Split step: recursive end-point fit, splitting at the point farthest from the chord.
+void VectorExtractor::split(const std::vector<TPoint2D>& pts, size_t i, size_t j,
+							std::vector<ScanSegment>& out) const
+{
+	if (j <= i) return;
+	const TPoint2D a = pts[i], b = pts[j];
+	const double len = std::hypot(b.x - a.x, b.y - a.y);
+	double best = 0;
+	size_t k = i;
+	if (len > 1e-9)
+	{
+		for (size_t q = i + 1; q < j; ++q)
+		{
+			const double d =
+				std::abs((b.x - a.x) * (a.y - pts[q].y) - (a.x - pts[q].x) * (b.y - a.y)) / len;
+			if (d > best) best = d, k = q;
+		}
+	}
+	ScanSegment seg;
+	if (best <= ext_.splitThreshold && fitSegment(pts, i, j, seg))
+	{
+		out.push_back(seg);
+		return;
+	}
+	if (k == i) k = (i + j) / 2;  // degenerate chord (coincident ends): bisect
+	split(pts, i, k, out);
+	split(pts, k, j, out);
+}
+
+// Merge step: neighbouring segments whose joint least-squares fit stays tight.
+std::vector<ScanSegment> VectorExtractor::splitAndMerge(const std::vector<TPoint2D>& pts,
+														size_t first, size_t last) const
+{
+	std::vector<ScanSegment> segs;
+	split(pts, first, last, segs);
+	bool merged = true;
+	while (merged && segs.size() > 1)
+	{
+		merged = false;
+		for (size_t s = 0; s + 1 < segs.size(); ++s)
+		{
+			ScanSegment joint;
+			if (fitSegment(pts, segs[s].first, segs[s + 1].last, joint) &&
+				joint.maxResidual <= ext_.mergeThreshold)
+			{
+				segs[s] = joint;
+				segs.erase(segs.begin() + long(s) + 1);
+				merged = true;
+			}
+		}
+	}
+	return segs;
+}
+
+GridVector VectorExtractor::makeVector(const std::vector<TPoint2D>& pts, const ScanSegment& seg,
+									   const TPoint2D& sensor) const
+{
+	const TPoint2D d(-std::sin(seg.line.theta), std::cos(seg.line.theta));
+	size_t kmin = seg.first, kmax = seg.first;
+	double umin = 1e300, umax = -1e300;
+	for (size_t k = seg.first; k <= seg.last; ++k)
+	{
+		const double u = pts[k].x * d.x + pts[k].y * d.y;
+		if (u < umin) umin = u, kmin = k;
+		if (u > umax) umax = u, kmax = k;
+	}
+	TPoint2D s = seg.line.project(pts[kmin]), e = seg.line.project(pts[kmax]);
+	// Open space (the sensor) on the left: cross(e - s, sensor - s) > 0.
+	if ((e.x - s.x) * (sensor.y - s.y) - (e.y - s.y) * (sensor.x - s.x) < 0) std::swap(s, e);
+	GridVector v(s, e, grid_);
+	for (size_t k = seg.first; k <= seg.last; ++k) v.addEndpoint(pts[k]);  // Algorithm 1
+	return v;
+}
+
+LocalScan VectorExtractor::extract(const mrpt::obs::CObservation2DRangeScan& scan) const
+{
+	LocalScan out;
+	out.sensorOrigin = TPoint2D(scan.sensorPose.x(), scan.sensorPose.y());
+	out.timestamp = mrpt::Clock::toDouble(scan.timestamp);
+	std::vector<TPoint2D> pts;
+	std::vector<size_t> runs;
+	scanToRuns(scan, pts, runs);
+	out.validBeams = pts.size();
+	runs.push_back(pts.size());
+	for (size_t r = 0; r + 1 < runs.size(); ++r)
+	{
+		if (runs[r + 1] - runs[r] < size_t(ext_.minPoints)) continue;
+		for (const auto& seg : splitAndMerge(pts, runs[r], runs[r + 1] - 1))
+		{
+			if (seg.last - seg.first + 1 < size_t(ext_.minPoints)) continue;
+			GridVector v = makeVector(pts, seg, out.sensorOrigin);
+			if (v.length() < ext_.minLength) continue;
+			out.vectors.push_back(std::move(v));
+		}
+	}
+	return out;
+}
+
+}  // namespace gridvector

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace gridvector
 {
@@ -21,6 +22,17 @@ GridVector::GridVector(const TPoint2D& start, const TPoint2D& end, const GridOpt
 	  priorVisit_(float(grid.priorVisit))
 {
 	setGeometry(start, end, columnsFor(length(), res_));
+}
+
+GridVector GridVector::fromParts(const TPoint2D& start, const TPoint2D& end,
+								 const GridOptions& grid, int cols, std::vector<GridCell> cells)
+{
+	GridVector v(start, end, grid);
+	if (cols < 1 || cells.size() != size_t(v.rows()) * size_t(cols))
+		throw std::invalid_argument("GridVector::fromParts: cell count does not match the grid");
+	v.cols_ = cols;
+	v.cells_ = std::move(cells);
+	return v;
 }
 
 void GridVector::setGeometry(const TPoint2D& s, const TPoint2D& e, int cols)

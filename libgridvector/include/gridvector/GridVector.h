@@ -35,6 +35,11 @@ class GridVector
 	GridVector(const mrpt::math::TPoint2D& start, const mrpt::math::TPoint2D& end,
 			   const GridOptions& grid);
 
+	/** Rebuild a vector from stored parts (deserialisation). Throws
+	 * std::invalid_argument if cells.size() != (2*halfWidth+1)*cols. */
+	static GridVector fromParts(const mrpt::math::TPoint2D& start, const mrpt::math::TPoint2D& end,
+								const GridOptions& grid, int cols, std::vector<GridCell> cells);
+
 	// --- geometry (Sec. 3.1) ---
 	const mrpt::math::TPoint2D& start() const { return start_; }
 	const mrpt::math::TPoint2D& end() const { return end_; }

@@ -85,6 +85,7 @@ bool GridVector::cellOf(const TPoint2D& p, int& row, int& col) const
 	double c = std::floor(g.x / res_);
 	const double r = std::floor(g.y / res_ + 0.5) + halfWidth_;
 	if (c == cols_ && g.x <= length() + 1e-9) c = cols_ - 1;  // the terminal point itself
+	if (c == -1 && g.x >= -1e-9) c = 0;  // the start point, up to rounding
 	if (c < 0 || c >= cols_ || r < 0 || r >= rows()) return false;
 	col = int(c);
 	row = int(r);

@@ -1,0 +1,93 @@
+// gridvector: the grid vector map (Wang, Xiong, Chu 2011) as an MRPT metric map.
+#pragma once
+
+#include <gridvector/GlobalMap.h>
+#include <gridvector/GridVectorConfig.h>
+#include <gridvector/VectorExtractor.h>
+
+#include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/CMetricMap.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+namespace mrpt::maps
+{
+/** A map of grid vectors: directed line segments (open space on their left)
+ * each carrying a slender occupancy grid (Sec. 3 of the paper).
+ *
+ * Inserting a CObservation2DRangeScan extracts its grid vectors (Sec. 3.1),
+ * compounds them with the robot pose and updates the global map (Sec. 3.2:
+ * wipe triangles, correspondence, Algorithm 2 merging).
+ *
+ * In a CMultiMetricMap .ini (short name `gridVectorMap`):
+ * \code
+ * [MappingApplication]
+ * gridVectorMap_count = 1
+ * ; optional, every key of gridvector::GridVectorConfig, grouped:
+ * [MappingApplication_gridVectorMap_00_extraction]
+ * split_threshold = 0.04
+ * [MappingApplication_gridVectorMap_00_grid]
+ * resolution = 0.10
+ * [MappingApplication_gridVectorMap_00_likelihoodOpts]
+ * sigma = 0.05
+ * \endcode
+ * Unknown keys in these sections are an error, not silently ignored. */
+class CGridVectorMap : public CMetricMap
+{
+	DEFINE_SERIALIZABLE(CGridVectorMap, mrpt::maps)
+
+   public:
+	explicit CGridVectorMap(const gridvector::GridVectorConfig& cfg = {});
+
+	/** Parameters of computeObservationLikelihood(): a likelihood field over
+	 * the vectors, each weighted by its occupancy. */
+	struct TLikelihoodOptions : public mrpt::config::CLoadableOptions
+	{
+		double sigma = 0.05;  //!< std. dev. of the range error [m]
+		double maxCorrDistance = 0.30;  //!< beyond this a point has no correspondence [m]
+		double zRandom = 0.05;  //!< weight of the uniform "random measurement" term
+		int decimation = 2;  //!< use one beam out of this many
+		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
+								const std::string& section) override;
+		void dumpToTextStream(std::ostream& out) const override;
+	} likelihoodOptions;
+
+	// --- access ---
+	const gridvector::GlobalMap& globalMap() const { return map_; }
+	gridvector::GlobalMap& globalMap() { return map_; }
+	const std::vector<gridvector::GridVector>& vectors() const { return map_.vectors(); }
+	const gridvector::GridVectorConfig& config() const { return map_.config(); }
+	void setConfig(const gridvector::GridVectorConfig& cfg);
+	size_t insertedScans() const { return insertedScans_; }
+
+	/** Extract the grid vectors of a scan in the robot frame (Sec. 3.1). */
+	gridvector::LocalScan extractLocal(const mrpt::obs::CObservation2DRangeScan& scan) const;
+
+	// --- CMetricMap ---
+	bool isEmpty() const override;
+	/** Writes `<prefix>_vectors.txt` (x1 y1 x2 y2 p_static state per line)
+	 * and `<prefix>_vectors.svg`. */
+	void saveMetricMapRepresentationToFile(const std::string& prefix) const override;
+	std::string asString() const override;
+	/** Vectors as line segments coloured by p_static (blue static .. red dynamic). */
+	void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
+
+	MAP_DEFINITION_START(CGridVectorMap)
+	gridvector::GridVectorConfig config;  //!< all mapping parameters
+	TLikelihoodOptions likelihoodOpts;
+	MAP_DEFINITION_END(CGridVectorMap)
+
+   private:
+	void internal_clear() override;
+	bool internal_insertObservation(
+		const mrpt::obs::CObservation& obs,
+		const std::optional<const mrpt::poses::CPose3D>& robotPose) override;
+	double internal_computeObservationLikelihood(
+		const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const override;
+	bool internal_canComputeObservationLikelihood(const mrpt::obs::CObservation& obs) const override;
+
+	gridvector::GlobalMap map_;
+	gridvector::VectorExtractor extractor_;
+	size_t insertedScans_ = 0;
+};
+
+}  // namespace mrpt::maps

@@ -1,0 +1,97 @@
+// CGridVectorMap: map definition (registry), construction, clear, description.
+#include <mrpt/config/CConfigFileBase.h>
+#include <mrpt/maps/CGridVectorMap.h>
+
+#include <sstream>
+
+using namespace mrpt::maps;
+
+MAP_DEFINITION_REGISTER("mrpt::maps::CGridVectorMap,gridVectorMap", mrpt::maps::CGridVectorMap)
+
+CGridVectorMap::TMapDefinition::TMapDefinition() = default;
+
+void CGridVectorMap::TMapDefinition::loadFromConfigFile_map_specific(
+	const mrpt::config::CConfigFileBase& source, const std::string& sectionNamePrefix)
+{
+	// [<prefix>_extraction], [<prefix>_grid], ... : see GridVectorConfig.
+	config.loadFromConfigFile(source, sectionNamePrefix, "CGridVectorMap config");
+	likelihoodOpts.loadFromConfigFile(source, sectionNamePrefix + "_likelihoodOpts");
+}
+
+void CGridVectorMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const
+{
+	config.dumpAsIni(out, "<prefix>");
+	likelihoodOpts.dumpToTextStream(out);
+}
+
+mrpt::maps::CMetricMap* CGridVectorMap::internal_CreateFromMapDefinition(
+	const mrpt::maps::TMetricMapInitializer& _def)
+{
+	const auto& def = dynamic_cast<const CGridVectorMap::TMapDefinition&>(_def);
+	auto* obj = new CGridVectorMap(def.config);
+	obj->likelihoodOptions = def.likelihoodOpts;
+	return obj;
+}
+
+CGridVectorMap::CGridVectorMap(const gridvector::GridVectorConfig& cfg)
+	: map_(cfg), extractor_(cfg.extraction, cfg.grid)
+{
+}
+
+void CGridVectorMap::setConfig(const gridvector::GridVectorConfig& cfg)
+{
+	cfg.validate();
+	map_.setConfig(cfg);
+	extractor_ = gridvector::VectorExtractor(cfg.extraction, cfg.grid);
+}
+
+void CGridVectorMap::internal_clear()
+{
+	map_.clear();
+	insertedScans_ = 0;
+}
+
+bool CGridVectorMap::isEmpty() const { return map_.empty(); }
+
+std::string CGridVectorMap::asString() const
+{
+	double len = 0;
+	size_t nStatic = 0, nDynamic = 0;
+	for (const auto& v : map_.vectors())
+	{
+		len += v.length();
+		nStatic += v.state == gridvector::VectorState::Static;
+		nDynamic += v.state == gridvector::VectorState::Dynamic;
+	}
+	std::ostringstream os;
+	os << "CGridVectorMap: " << map_.size() << " grid vectors (" << nStatic << " static, "
+	   << nDynamic << " dynamic), total length " << len << " m, " << insertedScans_
+	   << " scans inserted, resolution " << map_.config().grid.resolution << " m";
+	return os.str();
+}
+
+void CGridVectorMap::TLikelihoodOptions::loadFromConfigFile(
+	const mrpt::config::CConfigFileBase& source, const std::string& section)
+{
+	if (source.sectionExists(section))
+	{
+		std::vector<std::string> keys;
+		source.getAllKeys(section, keys);
+		for (const auto& k : keys)
+			if (k != "sigma" && k != "maxCorrDistance" && k != "zRandom" && k != "decimation")
+				throw std::runtime_error(
+					"CGridVectorMap config: unknown key '" + k + "' in section [" + section + "]");
+	}
+	sigma = source.read_double(section, "sigma", sigma);
+	maxCorrDistance = source.read_double(section, "maxCorrDistance", maxCorrDistance);
+	zRandom = source.read_double(section, "zRandom", zRandom);
+	decimation = source.read_int(section, "decimation", decimation);
+	if (sigma <= 0 || maxCorrDistance <= 0 || decimation < 1 || zRandom < 0 || zRandom >= 1)
+		throw std::runtime_error("CGridVectorMap config: invalid value in section [" + section + "]");
+}
+
+void CGridVectorMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const
+{
+	out << "[<prefix>_likelihoodOpts]\nsigma = " << sigma << "\nmaxCorrDistance = " << maxCorrDistance
+		<< "\nzRandom = " << zRandom << "\ndecimation = " << decimation << "\n";
+}

@@ -1,0 +1,174 @@
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/maps/CGridVectorMap.h>
+#include <mrpt/maps/CMultiMetricMap.h>
+#include <mrpt/opengl/CSetOfObjects.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/system/filesystem.h>
+
+#include <fstream>
+
+#include "test_scans.h"
+
+using mrpt::maps::CGridVectorMap;
+using mrpt::math::TPose2D;
+
+namespace
+{
+const auto kRoom = gvtest::room(-3, -2, 5, 3);
+
+mrpt::obs::CObservation2DRangeScan scanAt(const TPose2D& p)
+{
+	return gvtest::castScan(p, kRoom, {}, 361, M_PI);
+}
+
+CGridVectorMap mapOfRoom()
+{
+	CGridVectorMap m;
+	for (int k = 0; k < 4; ++k)
+	{
+		const TPose2D p(0.5 * k, 0.2, 0.4 + 0.8 * k);
+		m.insertObservation(scanAt(p), mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)));
+	}
+	return m;
+}
+}  // namespace
+
+TEST(CGridVectorMap, CreatedFromMultiMetricMapIniByShortName)
+{
+	mrpt::config::CConfigFileMemory ini(
+		"[map]\ngridVectorMap_count = 1\npointsMap_count = 1\n"
+		"[map_gridVectorMap_00_grid]\nresolution = 0.05\n"
+		"[map_gridVectorMap_00_likelihoodOpts]\nsigma = 0.1\n");
+	mrpt::maps::TSetOfMetricMapInitializers inits;
+	inits.loadFromConfigFile(ini, "map");
+	mrpt::maps::CMultiMetricMap mm;
+	mm.setListOfMaps(inits);
+	auto gv = mm.mapByClass<CGridVectorMap>();
+	ASSERT_TRUE(gv);
+	EXPECT_DOUBLE_EQ(gv->config().grid.resolution, 0.05);
+	EXPECT_DOUBLE_EQ(gv->likelihoodOptions.sigma, 0.1);
+	mm.insertObservation(scanAt(TPose2D(0, 0, 0)));
+	EXPECT_FALSE(gv->isEmpty());
+}
+
+TEST(CGridVectorMap, UnknownIniKeyIsRejected)
+{
+	mrpt::config::CConfigFileMemory ini("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_grid]\nresolushun = 0.05\n");
+	mrpt::maps::TSetOfMetricMapInitializers inits;
+	EXPECT_THROW(inits.loadFromConfigFile(ini, "map"), std::exception);
+}
+
+TEST(CGridVectorMap, InsertedVectorsAreInGlobalCoordinates)
+{
+	CGridVectorMap m;
+	EXPECT_TRUE(m.isEmpty());
+	const TPose2D p(1.0, -0.5, 0.7);
+	EXPECT_TRUE(m.insertObservation(scanAt(p), mrpt::poses::CPose3D(mrpt::poses::CPose2D(p))));
+	ASSERT_FALSE(m.isEmpty());
+	for (const auto& v : m.vectors())
+	{
+		// Every vector lies on one of the room's walls (x = -3, x = 5, y = -2, y = 3).
+		const auto c = v.centre();
+		const double d = std::min({std::abs(c.x + 3), std::abs(c.x - 5), std::abs(c.y + 2), std::abs(c.y - 3)});
+		EXPECT_LT(d, 0.02);
+		EXPECT_EQ(v.scanIndex, 0);
+	}
+	EXPECT_EQ(m.insertedScans(), 1u);
+	m.clear();
+	EXPECT_TRUE(m.isEmpty());
+	EXPECT_EQ(m.insertedScans(), 0u);
+}
+
+TEST(CGridVectorMap, IgnoresObservationsItCannotUse)
+{
+	CGridVectorMap m;
+	mrpt::obs::CObservation2DRangeScan empty;
+	m.insertObservation(empty);
+	EXPECT_TRUE(m.isEmpty());
+}
+
+TEST(CGridVectorMap, SerializationRoundTrip)
+{
+	CGridVectorMap a = mapOfRoom();
+	a.likelihoodOptions.sigma = 0.123;
+	auto cfg = a.config();
+	cfg.extraction.minLength = 0.33;
+	a.setConfig(cfg);
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << a;
+	buf.Seek(0);
+	CGridVectorMap b;
+	arch >> b;
+	ASSERT_EQ(a.vectors().size(), b.vectors().size());
+	EXPECT_EQ(a.insertedScans(), b.insertedScans());
+	EXPECT_DOUBLE_EQ(b.likelihoodOptions.sigma, 0.123);
+	EXPECT_DOUBLE_EQ(b.config().extraction.minLength, 0.33);
+	for (size_t i = 0; i < a.vectors().size(); ++i)
+	{
+		const auto &va = a.vectors()[i], &vb = b.vectors()[i];
+		EXPECT_EQ(va.start(), vb.start());
+		EXPECT_EQ(va.end(), vb.end());
+		EXPECT_EQ(va.id, vb.id);
+		EXPECT_EQ(va.scanIndex, vb.scanIndex);
+		ASSERT_EQ(va.cells().size(), vb.cells().size());
+		for (size_t k = 0; k < va.cells().size(); ++k)
+		{
+			EXPECT_EQ(va.cells()[k].n_occupy, vb.cells()[k].n_occupy);
+			EXPECT_EQ(va.cells()[k].n_visit, vb.cells()[k].n_visit);
+			EXPECT_EQ(va.cells()[k].x_acc, vb.cells()[k].x_acc);
+		}
+	}
+	// Polymorphic read through MRPT's class registry.
+	buf.Seek(0);
+	auto obj = arch.ReadObject();
+	ASSERT_TRUE(std::dynamic_pointer_cast<CGridVectorMap>(obj));
+}
+
+TEST(CGridVectorMap, CorruptStreamThrowsInsteadOfCrashing)
+{
+	CGridVectorMap a = mapOfRoom();
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << a;
+	const size_t n = size_t(buf.getTotalBytesCount());
+	mrpt::io::CMemoryStream cut;
+	cut.Write(buf.getRawBufferData(), n / 2);
+	cut.Seek(0);
+	auto arch2 = mrpt::serialization::archiveFrom(cut);
+	CGridVectorMap b;
+	EXPECT_THROW(arch2 >> b, std::exception);
+}
+
+TEST(CGridVectorMap, LikelihoodPeaksAtTheTruePose)
+{
+	CGridVectorMap m = mapOfRoom();
+	const TPose2D truth(0.7, 0.4, 1.1);
+	const auto obs = scanAt(truth);
+	const double atTruth = m.computeObservationLikelihood(obs, mrpt::poses::CPose3D(mrpt::poses::CPose2D(truth)));
+	for (const TPose2D& off : {TPose2D(0.85, 0.4, 1.1), TPose2D(0.7, 0.25, 1.1), TPose2D(0.7, 0.4, 1.2)})
+		EXPECT_GT(atTruth, m.computeObservationLikelihood(obs, mrpt::poses::CPose3D(mrpt::poses::CPose2D(off))));
+	EXPECT_TRUE(m.canComputeObservationLikelihood(obs));
+}
+
+TEST(CGridVectorMap, TextRepresentationAndVisualisation)
+{
+	CGridVectorMap m = mapOfRoom();
+	const std::string prefix = mrpt::system::getTempFileName();
+	m.saveMetricMapRepresentationToFile(prefix);
+	std::ifstream f(prefix + "_vectors.txt");
+	ASSERT_TRUE(f.good());
+	std::string line;
+	size_t rows = 0;
+	while (std::getline(f, line))
+		if (!line.empty() && line[0] != '#') ++rows;
+	EXPECT_EQ(rows, m.vectors().size());
+	EXPECT_NE(m.asString().find("grid vectors"), std::string::npos);
+	mrpt::opengl::CSetOfObjects o;
+	m.getVisualizationInto(o);
+	EXPECT_GT(o.size(), 0u);
+}

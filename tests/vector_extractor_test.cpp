@@ -1,0 +1,207 @@
+#include <gridvector/VectorExtractor.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "test_scans.h"
+
+using namespace gridvector;
+using mrpt::math::TPoint2D;
+using mrpt::math::TPose2D;
+
+namespace
+{
+double angDiff(double a, double b) { return std::abs(std::remainder(a - b, 2 * M_PI)); }
+
+bool sensorOnLeft(const GridVector& v, const TPoint2D& s)
+{
+	return (v.end().x - v.start().x) * (s.y - v.start().y) - (v.end().y - v.start().y) * (s.x - v.start().x) > 0;
+}
+
+// The vector matching a true wall (same direction up to sign) or nullptr.
+const GridVector* findWall(const LocalScan& ls, const gvtest::Seg& w)
+{
+	const double wpsi = std::atan2(w.y2 - w.y1, w.x2 - w.x1);
+	for (const auto& v : ls.vectors)
+	{
+		if (std::min(angDiff(v.psi(), wpsi), angDiff(v.psi(), wpsi + M_PI)) > 0.05) continue;
+		const TPoint2D c = v.centre();
+		const double d = std::abs((w.x2 - w.x1) * (w.y1 - c.y) - (w.x1 - c.x) * (w.y2 - w.y1)) /
+						 std::hypot(w.x2 - w.x1, w.y2 - w.y1);
+		if (d < 0.05) return &v;
+	}
+	return nullptr;
+}
+
+double endpointError(const GridVector& v, const gvtest::Seg& w)
+{
+	const double a = std::max(std::hypot(v.start().x - w.x1, v.start().y - w.y1),
+							  std::hypot(v.end().x - w.x2, v.end().y - w.y2));
+	const double b = std::max(std::hypot(v.start().x - w.x2, v.start().y - w.y2),
+							  std::hypot(v.end().x - w.x1, v.end().y - w.y1));
+	return std::min(a, b);
+}
+}  // namespace
+
+TEST(VectorExtractor, RectangularRoomYieldsItsFourWalls)
+{
+	// Full-circle scan whose seam points exactly at a corner; walls in the sensor frame.
+	const double phi = std::atan2(-1.2, -1.5) + M_PI;
+	const auto world = gvtest::room(-1.5, -1.2, 2.5, 1.8);
+	auto scan = gvtest::castScan(TPose2D(0, 0, phi), world, {}, 1441, 2 * M_PI);
+	std::vector<gvtest::Seg> walls;
+	const double c = std::cos(-phi), s = std::sin(-phi);
+	for (const auto& w : world)
+		walls.push_back({c * w.x1 - s * w.y1, s * w.x1 + c * w.y1, c * w.x2 - s * w.y2, s * w.x2 + c * w.y2});
+	VectorExtractor ex;
+	const LocalScan ls = ex.extract(scan);
+	ASSERT_EQ(ls.vectors.size(), 4u);
+	for (const auto& w : walls)
+	{
+		const GridVector* v = findWall(ls, w);
+		ASSERT_NE(v, nullptr);
+		EXPECT_LT(endpointError(*v, w), 0.02);
+		const double wpsi = std::atan2(w.y2 - w.y1, w.x2 - w.x1);
+		EXPECT_LT(std::min(angDiff(v->psi(), wpsi), angDiff(v->psi(), wpsi + M_PI)), 0.5 * M_PI / 180);
+		EXPECT_TRUE(sensorOnLeft(*v, TPoint2D(0, 0)));
+	}
+}
+
+TEST(VectorExtractor, NoisyRoomKeepsAnglesWithinHalfDegree)
+{
+	const auto walls = gvtest::room(-3, -2, 5, 3);
+	auto scan = gvtest::castScan(TPose2D(0.3, 0.2, 0.4), walls, {}, 361, M_PI);
+	std::mt19937 rng(7);
+	std::normal_distribution<float> noise(0.f, 0.01f);
+	for (size_t i = 0; i < scan.getScanSize(); ++i)
+		if (scan.getScanRangeValidity(i)) scan.setScanRange(i, scan.getScanRange(i) + noise(rng));
+	// Scan taken from sensor pose (0.3,0.2,0.4): express walls in that frame.
+	const double c = std::cos(-0.4), s = std::sin(-0.4);
+	auto tf = [&](double x, double y) { return TPoint2D(c * (x - 0.3) - s * (y - 0.2), s * (x - 0.3) + c * (y - 0.2)); };
+	VectorExtractor ex;
+	const LocalScan ls = ex.extract(scan);
+	ASSERT_GE(ls.vectors.size(), 2u);
+	for (const auto& v : ls.vectors)
+	{
+		EXPECT_TRUE(sensorOnLeft(v, TPoint2D(0, 0)));
+		double best = 1e9;
+		for (const auto& w : walls)
+		{
+			const TPoint2D a = tf(w.x1, w.y1), b = tf(w.x2, w.y2);
+			const double wpsi = std::atan2(b.y - a.y, b.x - a.x);
+			const double d = std::abs((b.x - a.x) * (a.y - v.centre().y) - (a.x - v.centre().x) * (b.y - a.y)) /
+							 std::hypot(b.x - a.x, b.y - a.y);
+			if (d < 0.05) best = std::min(best, std::min(angDiff(v.psi(), wpsi), angDiff(v.psi(), wpsi + M_PI)));
+		}
+		EXPECT_LT(best, 0.5 * M_PI / 180) << "vector not on any wall within 0.5 deg";
+	}
+}
+
+TEST(VectorExtractor, PersonInFrontOfWallDoesNotBridgeTheWall)
+{
+	const std::vector<gvtest::Seg> wall = {{-5, 3, 5, 3}};
+	const gvtest::Disc person{0.5, 2.0, 0.25};
+	auto scan = gvtest::castScan(TPose2D(0, 0, M_PI / 2), wall, {person}, 181, M_PI);
+	VectorExtractor ex;
+	const LocalScan ls = ex.extract(scan);
+	ASSERT_GE(ls.vectors.size(), 2u);
+	// The shadow of the person on the wall (sensor frame: x forward = world +y).
+	size_t wallPieces = 0;
+	for (const auto& v : ls.vectors)
+	{
+		// Any vector must not pass through the person's disc...
+		const TPoint2D pc(2.0, -0.5);  // person centre in the sensor frame
+		const TPoint2D g = v.toGridFrame(pc);
+		const double u = std::clamp(g.x, 0.0, v.length());
+		EXPECT_GT(std::hypot(g.x - u, g.y), person.r - 0.05);
+		// ...nor can a wall vector span across the shadow behind the person.
+		if (std::abs(v.centre().x - 3.0) < 0.05)
+		{
+			++wallPieces;
+			const double y0 = std::min(v.start().y, v.end().y), y1 = std::max(v.start().y, v.end().y);
+			EXPECT_FALSE(y0 < -0.5 && y1 > -0.5) << "wall vector bridges the shadow";
+		}
+		// Nothing wall-length is fitted through the blob.
+		if (std::abs(v.centre().x - 2.0) < 0.4)
+		{
+			EXPECT_LT(v.length(), 0.6);
+		}
+	}
+	EXPECT_EQ(wallPieces, 2u);
+}
+
+TEST(VectorExtractor, InvalidReadingsBreakSegments)
+{
+	const std::vector<gvtest::Seg> wall = {{3, -4, 3, 4}};
+	auto scan = gvtest::castScan(TPose2D(0, 0, 0), wall, {}, 181, M_PI);
+	VectorExtractor ex;
+	ASSERT_EQ(ex.extract(scan).vectors.size(), 1u);
+	const float bad[] = {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(), -1.f, 0.f};
+	for (float b : bad)
+	{
+		auto s2 = scan;
+		s2.setScanRange(90, b);  // straight ahead, validity flag still true
+		const LocalScan ls = ex.extract(s2);
+		EXPECT_EQ(ls.vectors.size(), 2u) << "reading " << b;
+		EXPECT_EQ(ls.validBeams, ex.extract(scan).validBeams - 1);
+	}
+	auto s3 = scan;
+	s3.setScanRangeValidity(90, false);
+	EXPECT_EQ(ex.extract(s3).vectors.size(), 2u);
+	auto s4 = scan;
+	s4.setScanRange(90, s4.maxRange);  // no hit
+	EXPECT_EQ(ex.extract(s4).vectors.size(), 2u);
+}
+
+TEST(VectorExtractor, EmptyAndDegenerateScansGiveNoVectors)
+{
+	VectorExtractor ex;
+	mrpt::obs::CObservation2DRangeScan empty;
+	EXPECT_TRUE(ex.extract(empty).vectors.empty());
+	auto scan = gvtest::castScan(TPose2D(0, 0, 0), {}, {}, 181, M_PI);  // nothing in range
+	EXPECT_TRUE(ex.extract(scan).vectors.empty());
+}
+
+TEST(VectorExtractor, SensorPoseAndScanDirectionAreRespected)
+{
+	const std::vector<gvtest::Seg> wall = {{3, -4, 3, 4}};
+	// Sensor mounted 0.5 m ahead of the robot: the robot sees the wall at x = 3.5.
+	auto scan = gvtest::castScan(TPose2D(0, 0, 0), wall, {}, 181, M_PI);
+	scan.sensorPose = mrpt::poses::CPose3D(0.5, 0, 0.3, 0, 0, 0);
+	VectorExtractor ex;
+	LocalScan ls = ex.extract(scan);
+	ASSERT_EQ(ls.vectors.size(), 1u);
+	EXPECT_NEAR(ls.vectors[0].centre().x, 3.5, 1e-6);
+	EXPECT_NEAR(ls.sensorOrigin.x, 0.5, 1e-12);
+	EXPECT_TRUE(sensorOnLeft(ls.vectors[0], ls.sensorOrigin));
+	// Same ranges stored left-to-right: the wall is mirrored (still on x = 3.5) and
+	// the direction still keeps the sensor on the left.
+	auto flipped = scan;
+	flipped.rightToLeft = false;
+	for (size_t i = 0; i < scan.getScanSize(); ++i)
+		flipped.setScanRange(i, scan.getScanRange(scan.getScanSize() - 1 - i));
+	ls = ex.extract(flipped);
+	ASSERT_EQ(ls.vectors.size(), 1u);
+	EXPECT_NEAR(ls.vectors[0].centre().x, 3.5, 1e-6);
+	EXPECT_TRUE(sensorOnLeft(ls.vectors[0], ls.sensorOrigin));
+}
+
+TEST(VectorExtractor, Algorithm1InitialisesTheVectorsGrid)
+{
+	const std::vector<gvtest::Seg> wall = {{3, -1, 3, 1}};
+	auto scan = gvtest::castScan(TPose2D(0, 0, 0), wall, {}, 181, M_PI);
+	VectorExtractor ex;
+	const LocalScan ls = ex.extract(scan);
+	ASSERT_EQ(ls.vectors.size(), 1u);
+	const GridVector& v = ls.vectors[0];
+	size_t valid = 0;
+	for (size_t i = 0; i < scan.getScanSize(); ++i) valid += scan.getScanRangeValidity(i);
+	EXPECT_NEAR(v.totalPoints(), double(valid), 1e-9);  // every point landed in the grid
+	for (int c = 0; c < v.cols(); ++c)
+	{
+		EXPECT_FLOAT_EQ(v.cell(0, c).n_acc, 0.f);  // noise-free: all in the centre row
+		EXPECT_FLOAT_EQ(v.cell(2, c).n_acc, 0.f);
+	}
+}

@@ -32,6 +32,7 @@ void usage()
 template <class T>
 void readObject(const std::string& path, T& obj)
 {
+	if (!mrpt::system::fileExists(path)) fail(path + ": no such file");
 	mrpt::io::CFileGZInputStream f;
 	if (!f.open(path)) fail(path + ": cannot open");
 	try

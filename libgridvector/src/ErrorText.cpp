@@ -1,32 +1,48 @@
 #include <gridvector/ErrorText.h>
 
 #include <cctype>
+#include <sstream>
 
 namespace gridvector
 {
+namespace
+{
+std::string trim(const std::string& s)
+{
+	size_t a = 0, b = s.size();
+	while (a < b && std::isspace(static_cast<unsigned char>(s[a]))) ++a;
+	while (b > a && std::isspace(static_cast<unsigned char>(s[b - 1]))) --b;
+	return s.substr(a, b - a);
+}
+
+bool startsWith(const std::string& s, const char* p) { return s.rfind(p, 0) == 0; }
+}  // namespace
+
 std::string oneLineError(const std::exception& e, size_t maxLen) { return oneLineError(std::string(e.what()), maxLen); }
 
+// MRPT exceptions nest blocks of "Message:", "Location:", "Call stack backtrace:"
+// and frame lines; keep only the message text, innermost (last) first.
 std::string oneLineError(const std::string& text, size_t maxLen)
 {
-	// MRPT nests "Message: ..." blocks; the last one is the root cause.
-	std::string s = text;
-	const auto pos = s.rfind("Message:");
-	if (pos != std::string::npos) s = s.substr(pos + 8);
-	const auto stack = s.find("==== MRPT exception");
-	if (stack != std::string::npos) s = s.substr(0, stack);
-	std::string out;
-	bool space = false;
-	for (char c : s)
+	std::istringstream in(text);
+	std::string line, out, lastMessage;
+	bool inStack = false;
+	while (std::getline(in, line))
 	{
-		if (std::isspace(static_cast<unsigned char>(c))) space = !out.empty();
-		else
-		{
-			if (space) out += ' ';
-			out += c;
-			space = false;
-		}
+		line = trim(line);
+		if (line.empty() || startsWith(line, "====")) continue;
+		if (startsWith(line, "Call stack backtrace")) { inStack = true; continue; }
+		if (startsWith(line, "Location:")) { inStack = false; continue; }
+		if (startsWith(line, "Message:")) { inStack = false; lastMessage = trim(line.substr(8)); continue; }
+		if (inStack || startsWith(line, "[")) continue;
+		if (!lastMessage.empty()) lastMessage += ' ' + line;
+		else out += (out.empty() ? "" : " ") + line;
 	}
-	if (out.size() > maxLen) out = out.substr(0, maxLen - 3) + "...";
-	return out.empty() ? "unknown error" : out;
+	std::string s;
+	for (char c : lastMessage.empty() ? out : lastMessage)
+		if (!std::isspace(static_cast<unsigned char>(c))) s += c;
+		else if (!s.empty() && s.back() != ' ') s += ' ';
+	if (s.size() > maxLen) s = s.substr(0, maxLen - 3) + "...";
+	return s.empty() ? "unknown error" : s;
 }
 }  // namespace gridvector

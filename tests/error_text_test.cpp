@@ -1,0 +1,29 @@
+#include <gridvector/ErrorText.h>
+#include <gtest/gtest.h>
+#include <mrpt/core/exceptions.h>
+
+TEST(ErrorText, PlainMessagesPassThroughOnOneLine)
+{
+	EXPECT_EQ(gridvector::oneLineError(std::string("a\n  b\tc")), "a b c");
+}
+
+TEST(ErrorText, MrptExceptionsKeepOnlyTheMessage)
+{
+	try
+	{
+		THROW_EXCEPTION("the root cause");
+	}
+	catch (const std::exception& e)
+	{
+		const std::string s = gridvector::oneLineError(e);
+		EXPECT_EQ(s.find('\n'), std::string::npos);
+		EXPECT_NE(s.find("the root cause"), std::string::npos);
+		EXPECT_EQ(s.find("Call stack"), std::string::npos);
+		EXPECT_EQ(s.find("Location"), std::string::npos);
+	}
+}
+
+TEST(ErrorText, LongMessagesAreCut)
+{
+	EXPECT_EQ(gridvector::oneLineError(std::string(1000, 'x'), 50).size(), 50u);
+}

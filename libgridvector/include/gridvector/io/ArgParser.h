@@ -1,0 +1,54 @@
+// Command-line parsing for the tools: declared options only, every problem is
+// one clear line ("prog: unknown option --x (see --help)").
+#pragma once
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace gridvector::io
+{
+/** A command-line usage error (tools exit with status 2). */
+struct UsageError : std::runtime_error
+{
+	using std::runtime_error::runtime_error;
+};
+
+class ArgParser
+{
+   public:
+	ArgParser(std::string program, std::string synopsis);
+
+	/** --name VALUE (also --name=VALUE). */
+	void option(const std::string& name, const std::string& valueName, const std::string& help);
+	/** --name without a value. */
+	void flag(const std::string& name, const std::string& help);
+
+	/** Throws UsageError; returns false if --help was given (usage() says what to print). */
+	bool parse(int argc, const char* const* argv);
+	std::string usage() const;
+
+	bool has(const std::string& name) const { return values_.count(name) > 0; }
+	std::string get(const std::string& name, const std::string& def = "") const;
+	double getDouble(const std::string& name, double def) const;
+	long getInt(const std::string& name, long def, long lo, long hi) const;
+	const std::vector<std::string>& positional() const { return positional_; }
+	/** Throws UsageError unless there are between lo and hi positional arguments. */
+	void requirePositional(size_t lo, size_t hi) const;
+	[[noreturn]] void fail(const std::string& msg) const;
+
+   private:
+	struct Spec
+	{
+		std::string valueName, help;
+		bool takesValue;
+	};
+	std::string program_, synopsis_;
+	std::map<std::string, Spec> specs_;
+	std::vector<std::string> order_;
+	std::map<std::string, std::string> values_;
+	std::vector<std::string> positional_;
+};
+
+}  // namespace gridvector::io

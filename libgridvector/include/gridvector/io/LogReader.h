@@ -1,0 +1,58 @@
+// Input logs (CARMEN .log/.clf and MRPT .rawlog, plain or gzip) as a list of
+// laser scans with odometry, and "t x y theta" trajectory files.
+#pragma once
+
+#include <mrpt/math/TPose2D.h>
+#include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gridvector::io
+{
+/** One laser scan of a log with what the log says about the robot at that time. */
+struct ScanRecord
+{
+	double timestamp = 0;  //!< seconds, the log's real timestamp
+	/** aperture, rightToLeft, maxRange, sensorPose, per-beam validity set correctly */
+	mrpt::obs::CObservation2DRangeScan::Ptr scan;
+	mrpt::math::TPose2D odometry;  //!< robot odometry pose at the scan's time (dead reckoning)
+	bool hasOdometry = false;
+	/** The pose the log attaches to the scan (CARMEN FLASER's first pose:
+	 * SLAM-corrected in *-corrected logs). */
+	mrpt::math::TPose2D logPose;
+	bool hasLogPose = false;
+};
+
+struct LogData
+{
+	std::vector<ScanRecord> scans;
+	std::string source;  //!< the path read
+	std::string summary;  //!< one line: what was read (counts, laser geometry, warnings)
+	std::vector<std::string> warnings;  //!< oddities that are not errors (also in summary)
+};
+
+struct ReadOptions
+{
+	bool quiet = true;  //!< false: progress on stderr when it is a terminal
+	bool includeRearLaser = true;  //!< CARMEN RLASER / RAWLASER2 scans
+	std::string sensorLabel;  //!< rawlogs: keep only scans with this label (empty: all)
+};
+
+/** Detects CARMEN (.log/.clf, optionally .gz) vs MRPT rawlog (.rawlog, optionally
+ * gz-compressed; both the actions+sensory-frames and the observation-only format).
+ * Throws std::runtime_error("file:line: what is wrong"). */
+LogData readLog(const std::string& path, const ReadOptions& opt = {});
+
+using Trajectory = std::vector<std::pair<double, mrpt::math::TPose2D>>;
+
+/** Trajectory files "t x y theta" (one pose per line, '#' comments, extra columns ignored). */
+Trajectory readTrajectory(const std::string& path);
+/** Writes "t x y theta" lines (%.6f), atomically. */
+void writeTrajectory(const std::string& path, const Trajectory& traj);
+
+/** The odometry (or, with logPose=true, the log's own pose) of every scan that has one. */
+Trajectory trajectoryOf(const LogData& log, bool logPose = false);
+
+}  // namespace gridvector::io

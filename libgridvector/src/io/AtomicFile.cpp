@@ -1,0 +1,94 @@
+#include <gridvector/io/AtomicFile.h>
+
+#include <unistd.h>
+
+#include <atomic>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <stdexcept>
+#include <system_error>
+
+namespace gridvector::io
+{
+namespace fs = std::filesystem;
+
+namespace
+{
+std::string temporaryNameFor(const std::string& path)
+{
+	static std::atomic<unsigned> counter{0};
+	const fs::path p(path);
+	const std::string name = "." + p.filename().string() + ".tmp" + std::to_string(::getpid()) + "_" +
+							 std::to_string(counter++);
+	return (p.parent_path() / name).string();
+}
+
+std::string errnoText() { return std::strerror(errno); }
+}  // namespace
+
+AtomicFile::AtomicFile(std::string path, Mode mode) : path_(std::move(path)), mode_(mode)
+{
+	if (path_.empty()) throw std::runtime_error("(empty path): cannot write (no file name given)");
+	if (fs::is_directory(path_)) fail("it is a directory");
+	tmp_ = temporaryNameFor(path_);
+	const auto flags = mode_ == Mode::Text ? std::ios::out | std::ios::trunc
+										   : std::ios::out | std::ios::trunc | std::ios::binary;
+	errno = 0;
+	out_.open(tmp_, flags);
+	if (!out_) fail(errno ? errnoText() : "cannot create a temporary file next to it");
+	if (mode_ == Mode::External) out_.close();  // created: the directory is writable
+}
+
+AtomicFile::~AtomicFile()
+{
+	if (committed_) return;
+	if (out_.is_open()) out_.close();
+	std::error_code ec;
+	fs::remove(tmp_, ec);
+}
+
+std::ostream& AtomicFile::stream()
+{
+	if (mode_ == Mode::External) throw std::logic_error("AtomicFile::stream() in External mode");
+	return out_;
+}
+
+void AtomicFile::commit()
+{
+	if (committed_) return;
+	if (mode_ != Mode::External)
+	{
+		out_.flush();
+		if (!out_) fail("write error (disk full?)");
+		out_.close();
+		if (out_.fail()) fail("error while closing");
+	}
+	if (std::rename(tmp_.c_str(), path_.c_str()) != 0) fail(errnoText());
+	committed_ = true;
+}
+
+void AtomicFile::fail(const std::string& reason) const
+{
+	throw std::runtime_error(path_ + ": cannot write (" + reason + ")");
+}
+
+void writeFileAtomically(const std::string& path, const std::function<void(std::ostream&)>& fill)
+{
+	AtomicFile f(path);
+	fill(f.stream());
+	f.commit();
+}
+
+void ensureWritableDirectory(const std::string& dir)
+{
+	std::error_code ec;
+	if (!fs::exists(dir, ec)) fs::create_directories(dir, ec);
+	if (ec) throw std::runtime_error(dir + ": cannot write (" + ec.message() + ")");
+	if (!fs::is_directory(dir)) throw std::runtime_error(dir + ": cannot write (not a directory)");
+	if (::access(dir.c_str(), W_OK | X_OK) != 0)
+		throw std::runtime_error(dir + ": cannot write (" + errnoText() + ")");
+}
+
+}  // namespace gridvector::io

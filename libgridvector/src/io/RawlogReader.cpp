@@ -1,0 +1,162 @@
+#include <gridvector/io/FileBytes.h>
+#include <gridvector/io/OdometryTrack.h>
+#include <gridvector/io/Progress.h>
+#include <gridvector/io/RawlogReader.h>
+
+#include <mrpt/io/CMemoryStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <map>
+#include <stdexcept>
+
+namespace gridvector::io
+{
+namespace
+{
+using namespace mrpt::obs;
+
+std::string firstLine(const std::string& s)
+{
+	const auto nl = s.find('\n');
+	std::string l = s.substr(0, nl);
+	return l.size() > 200 ? l.substr(0, 200) + "..." : l;
+}
+
+class RawlogParser
+{
+   public:
+	RawlogParser(std::string source, const ReadOptions& opt) : opt_(opt) { out_.source = std::move(source); }
+	LogData parse(const std::vector<char>& bytes);
+
+   private:
+	void onObject(const mrpt::serialization::CSerializable::Ptr& obj);
+	void onActions(const CActionCollection& acts);
+	void onObservation(const CObservation::Ptr& obs, bool inFrame);
+	void finish();
+	[[noreturn]] void fail(const std::string& msg) const;
+
+	ReadOptions opt_;
+	LogData out_;
+	size_t entry_ = 0;
+	size_t frames_ = 0, actions_ = 0, observations_ = 0, noTimestamp_ = 0;
+	std::map<std::string, size_t> other_;
+	OdometryTrack odomObs_;
+	mrpt::poses::CPose2D cumulative_;
+	bool hasMotion_ = false;
+};
+
+LogData RawlogParser::parse(const std::vector<char>& bytes)
+{
+	mrpt::io::CMemoryStream mem;
+	mem.assignMemoryNotOwn(bytes.data(), bytes.size());
+	auto arch = mrpt::serialization::archiveFrom(mem);
+	Progress progress("reading " + out_.source, opt_.quiet);
+	while (mem.getPosition() < bytes.size())
+	{
+		entry_++;
+		mrpt::serialization::CSerializable::Ptr obj;
+		try
+		{
+			arch >> obj;
+		}
+		catch (const mrpt::serialization::CExceptionEOF&)
+		{
+			fail("truncated rawlog (the file ends inside this object)");
+		}
+		catch (const std::exception& e)
+		{
+			fail("corrupt rawlog object (" + firstLine(e.what()) + ")");
+		}
+		onObject(obj);
+		progress.update(double(mem.getPosition()) / double(bytes.size()), out_.scans.size());
+	}
+	progress.done();
+	finish();
+	return std::move(out_);
+}
+
+void RawlogParser::fail(const std::string& msg) const
+{
+	throw std::runtime_error(out_.source + ": entry " + std::to_string(entry_) + ": " + msg);
+}
+
+void RawlogParser::onObject(const mrpt::serialization::CSerializable::Ptr& obj)
+{
+	if (!obj) return void(other_["null object"]++);
+	if (auto acts = std::dynamic_pointer_cast<CActionCollection>(obj)) return onActions(*acts);
+	if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(obj))
+	{
+		frames_++;
+		for (const auto& o : *sf) onObservation(o, true);
+		return;
+	}
+	if (auto o = std::dynamic_pointer_cast<CObservation>(obj)) return onObservation(o, false);
+	other_[obj->GetRuntimeClass()->className]++;
+}
+
+void RawlogParser::onActions(const CActionCollection& acts)
+{
+	actions_++;
+	const auto mov = acts.getActionByClass<CActionRobotMovement2D>();
+	if (!mov) return;
+	const mrpt::poses::CPose2D inc = mov->estimationMethod == CActionRobotMovement2D::emOdometry
+										 ? mov->rawOdometryIncrementReading
+										 : mov->poseChange->getMeanVal();
+	cumulative_ = cumulative_ + inc;
+	hasMotion_ = true;
+}
+
+void RawlogParser::onObservation(const CObservation::Ptr& obs, bool inFrame)
+{
+	if (!inFrame) observations_++;
+	const double t = obs->timestamp == INVALID_TIMESTAMP ? 0.0 : mrpt::Clock::toDouble(obs->timestamp);
+	if (auto odo = std::dynamic_pointer_cast<CObservationOdometry>(obs))
+		return odomObs_.add(t, odo->odometry.asTPose());
+	auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(obs);
+	if (!scan) return void(other_[obs->GetRuntimeClass()->className]++);
+	if (!opt_.sensorLabel.empty() && scan->sensorLabel != opt_.sensorLabel) return void(other_["scans of other sensors"]++);
+	if (obs->timestamp == INVALID_TIMESTAMP) noTimestamp_++;
+	ScanRecord r;
+	r.timestamp = t;
+	r.scan = scan;
+	r.odometry = cumulative_.asTPose();
+	r.hasOdometry = hasMotion_;
+	out_.scans.push_back(std::move(r));
+}
+
+void RawlogParser::finish()
+{
+	if (!odomObs_.empty())
+		for (auto& r : out_.scans)
+		{
+			r.odometry = *odomObs_.at(r.timestamp);
+			r.hasOdometry = true;
+		}
+	if (noTimestamp_) out_.warnings.push_back(std::to_string(noTimestamp_) + " scans have no timestamp (set to 0)");
+	if (out_.scans.empty()) out_.warnings.push_back("no 2D laser scans in the file");
+	std::string s = out_.source + ": " + std::to_string(out_.scans.size()) + " scans; ";
+	s += frames_ ? "actions+sensory-frames format (" + std::to_string(actions_) + " action sets, " +
+					   std::to_string(frames_) + " sensory frames)"
+				 : "observation-only format (" + std::to_string(observations_) + " observations)";
+	s += odomObs_.empty() ? (hasMotion_ ? "; odometry from robot-movement actions" : "; no odometry")
+						  : "; odometry from " + std::to_string(odomObs_.size()) + " odometry observations";
+	for (const auto& [k, n] : other_) s += ", " + std::to_string(n) + " " + k + " ignored";
+	for (const auto& w : out_.warnings) s += "; warning: " + w;
+	out_.summary = s;
+}
+}  // namespace
+
+LogData parseRawlog(const std::vector<char>& bytes, const std::string& source, const ReadOptions& opt)
+{
+	RawlogParser p(source, opt);
+	return p.parse(bytes);
+}
+
+LogData readRawlog(const std::string& path, const ReadOptions& opt) { return parseRawlog(readFileBytes(path), path, opt); }
+
+}  // namespace gridvector::io

@@ -1,0 +1,93 @@
+#include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/RawlogWriter.h>
+
+#include <mrpt/core/Clock.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/io/CFileOutputStream.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <memory>
+#include <stdexcept>
+
+namespace gridvector::io
+{
+namespace
+{
+using namespace mrpt::obs;
+using mrpt::poses::CPose2D;
+
+std::unique_ptr<mrpt::io::CStream> openOutput(const std::string& tmp, bool compress)
+{
+	if (compress)
+	{
+		auto gz = std::make_unique<mrpt::io::CFileGZOutputStream>();
+		std::string err;
+		if (!gz->open(tmp, 1, err)) throw std::runtime_error(err.empty() ? "cannot open" : err);
+		return gz;
+	}
+	auto f = std::make_unique<mrpt::io::CFileOutputStream>();
+	if (!f->open(tmp)) throw std::runtime_error("cannot open");
+	return f;
+}
+
+void writeObservations(mrpt::serialization::CArchive& ar, const ScanRecord& r)
+{
+	if (r.hasOdometry)
+	{
+		auto o = CObservationOdometry::Create();
+		o->sensorLabel = "ODOMETRY";
+		o->timestamp = mrpt::Clock::fromDouble(r.timestamp);
+		o->odometry = CPose2D(r.odometry);
+		ar << *o;
+	}
+	ar << *r.scan;
+}
+
+void writeFrame(mrpt::serialization::CArchive& ar, const ScanRecord& r, const CPose2D& increment)
+{
+	CActionCollection acts;
+	CActionRobotMovement2D mov;
+	mov.timestamp = mrpt::Clock::fromDouble(r.timestamp);
+	mov.computeFromOdometry(increment, CActionRobotMovement2D::TMotionModelOptions());
+	acts.insert(mov);
+	CSensoryFrame sf;
+	sf.insert(r.scan);
+	ar << acts << sf;
+}
+}  // namespace
+
+void writeRawlog(const std::string& path, const LogData& log, const RawlogWriteOptions& opt)
+{
+	AtomicFile file(path, AtomicFile::Mode::External);
+	try
+	{
+		auto out = openOutput(file.tempPath(), opt.compress);
+		auto ar = mrpt::serialization::archiveFrom(*out);
+		CPose2D prev;
+		bool havePrev = false;
+		for (const ScanRecord& r : log.scans)
+		{
+			if (!r.scan) throw std::runtime_error("scan record without a scan");
+			if (opt.format == RawlogFormat::Observations) writeObservations(ar, r);
+			else
+			{
+				const CPose2D odo(r.odometry);
+				writeFrame(ar, r, havePrev && r.hasOdometry ? odo - prev : CPose2D());
+				if (r.hasOdometry) prev = odo, havePrev = true;
+			}
+		}
+		out.reset();  // flush and close before renaming
+	}
+	catch (const std::exception& e)
+	{
+		throw std::runtime_error(path + ": cannot write (" + e.what() + ")");
+	}
+	file.commit();
+}
+
+}  // namespace gridvector::io

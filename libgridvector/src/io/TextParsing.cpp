@@ -1,0 +1,68 @@
+#include <gridvector/io/TextParsing.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
+
+namespace gridvector::io
+{
+void parseError(const TextPos& pos, const std::string& msg)
+{
+	throw std::runtime_error(pos.str() + ": " + msg);
+}
+
+std::vector<std::string_view> splitTokens(std::string_view line)
+{
+	std::vector<std::string_view> out;
+	size_t i = 0;
+	const auto blank = [](char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; };
+	while (i < line.size())
+	{
+		while (i < line.size() && blank(line[i])) i++;
+		size_t j = i;
+		while (j < line.size() && !blank(line[j])) j++;
+		if (j > i) out.push_back(line.substr(i, j - i));
+		i = j;
+	}
+	return out;
+}
+
+double parseDouble(std::string_view tok, const TextPos& pos, const std::string& what)
+{
+	const std::string s(tok);
+	char* end = nullptr;
+	errno = 0;
+	const double v = std::strtod(s.c_str(), &end);
+	if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v) || errno == ERANGE)
+		parseError(pos, what + " is '" + s + "' (not a finite number)");
+	return v;
+}
+
+long parseInt(std::string_view tok, const TextPos& pos, const std::string& what, long lo, long hi)
+{
+	const std::string s(tok);
+	char* end = nullptr;
+	errno = 0;
+	const long v = std::strtol(s.c_str(), &end, 10);
+	if (s.empty() || end != s.c_str() + s.size() || errno == ERANGE)
+		parseError(pos, what + " is '" + s + "' (not an integer)");
+	if (v < lo || v > hi)
+		parseError(pos, what + " is " + s + " (must be in " + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+	return v;
+}
+
+bool LineCursor::next(std::string_view& line)
+{
+	if (pos_ >= text_.size()) return false;
+	size_t end = pos_;
+	while (end < text_.size() && text_[end] != '\n') end++;
+	size_t stop = end;
+	if (stop > pos_ && text_[stop - 1] == '\r') stop--;
+	line = std::string_view(text_.data() + pos_, stop - pos_);
+	pos_ = end < text_.size() ? end + 1 : end;
+	line_++;
+	return true;
+}
+
+}  // namespace gridvector::io

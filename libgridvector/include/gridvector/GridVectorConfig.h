@@ -95,43 +95,121 @@ struct EStepOptions
 	}
 };
 
-/** Sec. 4.2-4.3: vector-matching registration, pose graph, EM loop. */
+/** Sec. 4.2 (after Sohn & Kim 2008): vector-matching scan registration. */
+struct MatcherOptions
+{
+	int maxIterations = 25;  //!< outer iterations (gating + rotation + translation)
+	double gatePsiInitialDeg = 20.0;  //!< criterion 1 gate at the first iteration [deg]
+	double gatePsiFinalDeg = 6.0;  //!< criterion 1 gate once tightened [deg]
+	double gateRhoInitial = 0.60;  //!< criterion 2 gate (line offset) at the first iteration [m]
+	double gateRhoFinal = 0.12;  //!< criterion 2 gate once tightened [m]
+	double gateShrink = 0.7;  //!< factor applied to the gates per iteration
+	double minOverlap = 0.10;  //!< matched segments must overlap along the line by this [m]
+	int minMatches = 3;  //!< fewest matched vector pairs
+	double minMatchedLength = 1.5;  //!< fewest metres of overlapping matched vectors [m]
+	double maxRms = 0.06;  //!< largest RMS point-to-line residual of an accepted match [m]
+	double sigmaFloor = 0.03;  //!< smallest residual std. dev. per metre of line used in the information [m]
+	double convergenceTranslation = 1e-4;  //!< stop when a step moves less than this [m]
+	double convergenceRotation = 1e-5;  //!< ... and turns less than this [rad]
+
+	template <class V>
+	void visit(V&& v)
+	{
+		v("max_iterations", maxIterations, "Iterations of gating, rotation and translation per registration");
+		v("gate_psi_initial_deg", gatePsiInitialDeg, "Correspondence criterion 1 (direction) gate at the first iteration [deg]");
+		v("gate_psi_final_deg", gatePsiFinalDeg, "Correspondence criterion 1 (direction) gate after tightening [deg]");
+		v("gate_rho_initial", gateRhoInitial, "Correspondence criterion 2 (line offset) gate at the first iteration [m]");
+		v("gate_rho_final", gateRhoFinal, "Correspondence criterion 2 (line offset) gate after tightening [m]");
+		v("gate_shrink", gateShrink, "Factor by which the gates tighten each iteration (0..1]");
+		v("min_overlap", minOverlap, "Matched vectors must overlap along their line by at least this [m]");
+		v("min_matches", minMatches, "Fewest matched vector pairs for an accepted registration");
+		v("min_matched_length", minMatchedLength, "Fewest metres of overlapping matched vectors for an accepted registration [m]");
+		v("max_rms", maxRms, "Largest RMS point-to-line residual of an accepted registration [m]");
+		v("sigma_floor", sigmaFloor, "Smallest residual std. dev. per metre of matched line used for the information matrix [m]");
+		v("convergence_translation", convergenceTranslation, "Registration converged when a step moves less than this [m]");
+		v("convergence_rotation", convergenceRotation, "Registration converged when a step turns less than this [rad]");
+	}
+};
+
+/** Sec. 4.2, Eq. 21-22: pose-graph optimisation. */
+struct PoseGraphOptions
+{
+	bool useMrptOptimizer = false;  //!< MRPT's optimize_graph_spa_levmarq instead of the built-in robust Gauss-Newton
+	int maxIterations = 30;  //!< optimiser iterations per M-step
+	double robustKernelWidth = 3.0;  //!< dynamic covariance scaling Phi (chi2 units) for registration edges
+	double rejectChi2 = 50.0;  //!< edges still above this chi2 after optimisation are dropped
+	double odometrySigmaXYPerM = 0.08;  //!< odometry translation std. dev. per metre travelled
+	double odometrySigmaXYMin = 0.02;  //!< odometry translation std. dev. floor [m]
+	double odometrySigmaPhi = 0.03;  //!< odometry rotation std. dev. per step [rad]
+	double odometrySigmaPhiPerM = 0.03;  //!< odometry rotation std. dev. per metre travelled [rad/m]
+
+	template <class V>
+	void visit(V&& v)
+	{
+		v("use_mrpt_optimizer", useMrptOptimizer, "Use MRPT's optimize_graph_spa_levmarq (with chi2 edge rejection) instead of the built-in robust Gauss-Newton");
+		v("max_iterations", maxIterations, "Optimiser iterations per M-step");
+		v("robust_kernel_width", robustKernelWidth, "Dynamic covariance scaling Phi for registration edges (chi2 units)");
+		v("reject_chi2", rejectChi2, "Registration edges whose chi2 stays above this after optimisation are removed");
+		v("odometry_sigma_xy_per_m", odometrySigmaXYPerM, "Odometry translation std. dev. per metre travelled");
+		v("odometry_sigma_xy_min", odometrySigmaXYMin, "Odometry translation std. dev. floor [m]");
+		v("odometry_sigma_phi", odometrySigmaPhi, "Odometry rotation std. dev. per step [rad]");
+		v("odometry_sigma_phi_per_m", odometrySigmaPhiPerM, "Odometry rotation std. dev. per metre travelled [rad/m]");
+	}
+};
+
+/** Sec. 4.2-4.3, Eq. 16-25: edges of the pose graph and the EM loop. */
 struct MStepOptions
 {
 	int maxIterations = 10;  //!< EM iterations at most (stops earlier when no constraint changes)
 	int sequentialWindow = 5;  //!< register each scan against this many predecessors
-	double overlapDistance = 8.0;  //!< candidate edge when poses are closer than this [m]
-	int minMatchedVectors = 3;  //!< a registration needs at least this many matched vectors
-	int matcherMaxIterations = 20;  //!< iterations of the vector matcher
-	double robustKernelWidth = 1.0;  //!< pose-graph robust kernel (chi) width
+	double overlapDistance = 6.0;  //!< poses closer than this are candidates for an overlap edge [m]
+	double overlapMinLength = 2.0;  //!< corresponding static length that makes two scans overlap [m]
+	double overlapMinShare = 0.25;  //!< matched share of the shorter scan's static length for an overlap edge
+	int overlapRunGap = 10;  //!< candidate poses further apart than this in time belong to different passes
+	double recheckGateFactor = 1.5;  //!< gates x this when testing whether an edge's correspondences changed
+	bool loopSearch = true;  //!< search loop closures in a window growing with pose uncertainty
+	double loopSearchSigmas = 3.0;  //!< window half-size in standard deviations of the relative pose
+	double loopSearchMaxRadius = 8.0;  //!< the window never exceeds this [m]
+	double minChangedShare = 0.0;  //!< converged when the share of changed constraints is at most this
 
 	template <class V>
 	void visit(V&& v)
 	{
 		v("max_iterations", maxIterations, "EM iterations at most");
 		v("sequential_window", sequentialWindow, "Register each scan against this many predecessors");
-		v("overlap_distance", overlapDistance, "Poses closer than this are candidates for an edge [m]");
-		v("min_matched_vectors", minMatchedVectors, "Minimum matched vectors for a registration");
-		v("matcher_max_iterations", matcherMaxIterations, "Iterations of the vector matcher");
-		v("robust_kernel_width", robustKernelWidth, "Width of the pose-graph robust kernel");
+		v("overlap_distance", overlapDistance, "Poses closer than this are candidates for an overlap edge [m]");
+		v("overlap_min_length", overlapMinLength, "Corresponding static vector length that makes two scans overlap [m]");
+		v("overlap_min_share", overlapMinShare, "Matched share of the shorter scan's static length needed to accept an overlap edge");
+		v("overlap_run_gap", overlapRunGap, "Candidate poses further apart than this many scans belong to different passes");
+		v("recheck_gate_factor", recheckGateFactor, "Gates are widened by this when testing whether an edge's correspondences changed (Eq. 24-25)");
+		v("loop_search", loopSearch, "Search loop closures within a window growing with the pose uncertainty");
+		v("loop_search_sigmas", loopSearchSigmas, "Loop-search window half-size in standard deviations");
+		v("loop_search_max_radius", loopSearchMaxRadius, "Largest loop-search window [m]");
+		v("min_changed_share", minChangedShare, "EM has converged when at most this share of constraints changed");
 	}
 };
 
 /** Sec. 5.4: door detection from static/dynamic corners. */
 struct DoorOptions
 {
+	double maxCornerGap = 0.30;  //!< a static and a dynamic vector form a corner when their ends are this close [m]
+	double minCornerAngleDeg = 10.0;  //!< ... and their directions differ by at least this [deg]
 	double maxVertexDistance = 0.25;  //!< corners' vertices closer than this share a hinge [m]
 	double maxLengthDiff = 0.15;  //!< dynamic vectors of equal length within this [m]
 	double minDoorLength = 0.6;  //!< door leaf length range [m]
 	double maxDoorLength = 1.4;
+	double minStateDiffDeg = 10.0;  //!< two door states differ by at least this [deg]
 
 	template <class V>
 	void visit(V&& v)
 	{
+		v("max_corner_gap", maxCornerGap, "A static and a dynamic vector form a corner when an end of each is this close [m]");
+		v("min_corner_angle_deg", minCornerAngleDeg, "A corner's two vectors differ in direction by at least this [deg]");
 		v("max_vertex_distance", maxVertexDistance, "Corners whose vertices are closer than this share a hinge [m]");
 		v("max_length_diff", maxLengthDiff, "Dynamic vectors whose lengths differ by less than this are one door [m]");
 		v("min_door_length", minDoorLength, "Shortest door leaf [m]");
 		v("max_door_length", maxDoorLength, "Longest door leaf [m]");
+		v("min_state_diff_deg", minStateDiffDeg, "Two door states (leaf angles) differ by at least this [deg]");
 	}
 };
 
@@ -143,6 +221,8 @@ struct GridVectorConfig
 	GridOptions grid;
 	MapOptions map;
 	EStepOptions estep;
+	MatcherOptions matcher;
+	PoseGraphOptions posegraph;
 	MStepOptions mstep;
 	DoorOptions doors;
 
@@ -153,6 +233,8 @@ struct GridVectorConfig
 		v("grid", grid);
 		v("map", map);
 		v("estep", estep);
+		v("matcher", matcher);
+		v("posegraph", posegraph);
 		v("mstep", mstep);
 		v("doors", doors);
 	}

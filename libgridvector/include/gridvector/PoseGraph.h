@@ -1,0 +1,87 @@
+// Sec. 4.2, Eq. 21-22: graph-based maximum-likelihood trajectory estimation.
+#pragma once
+
+#include <gridvector/GridVectorConfig.h>
+
+#include <Eigen/Core>
+#include <mrpt/graphs/CNetworkOfPoses.h>
+#include <mrpt/math/TPose2D.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace gridvector
+{
+enum class EdgeKind : uint8_t
+{
+	Odometry = 0,  //!< u_t between consecutive poses (never robustified)
+	Sequential,  //!< registration against a recent predecessor
+	Overlap,  //!< registration between poses whose scans overlap
+	Loop  //!< registration found by the loop search
+};
+const char* toString(EdgeKind k);
+
+/** An edge <j, i> ~ N(delta_ji, Sigma_ji) (Eq. 21): z is the pose of `to`
+ * seen from `from`, `information` = Sigma^-1 over (x, y, phi). */
+struct PoseEdge
+{
+	uint32_t from = 0, to = 0;
+	mrpt::math::TPose2D z;
+	Eigen::Matrix3d information = Eigen::Matrix3d::Identity();
+	EdgeKind kind = EdgeKind::Odometry;
+	bool active = true;  //!< false once rejected by its residual
+	double chi2 = 0;  //!< e^T Omega e at the last optimisation
+	double scale = 1;  //!< robust (DCS) scale at the last optimisation
+};
+
+struct OptimizeStats
+{
+	int iterations = 0;
+	double initialError = 0, finalError = 0;  //!< sum of robust chi2 (Eq. 22)
+	size_t rejected = 0;  //!< edges deactivated by the chi2 test
+	double seconds = 0;
+};
+
+/** Nodes x_0..x_{n-1} (x_0 fixed) and edges; stored so they convert to
+ * MRPT's CNetworkOfPoses2DInf. optimize() minimises Eq. 22 either with the
+ * built-in sparse Gauss-Newton/Levenberg-Marquardt (Eigen SimplicialLDLT,
+ * dynamic covariance scaling on registration edges) or with MRPT's
+ * optimize_graph_spa_levmarq; both then deactivate edges whose chi2 stays
+ * above reject_chi2 and re-optimise. */
+class PoseGraph
+{
+   public:
+	explicit PoseGraph(const PoseGraphOptions& opts = {});
+
+	void setNodes(std::vector<mrpt::math::TPose2D> nodes) { nodes_ = std::move(nodes); }
+	const std::vector<mrpt::math::TPose2D>& nodes() const { return nodes_; }
+	size_t addEdge(const PoseEdge& e);
+	void clearEdges() { edges_.clear(); }
+	std::vector<PoseEdge>& edges() { return edges_; }
+	const std::vector<PoseEdge>& edges() const { return edges_; }
+
+	OptimizeStats optimize();
+
+	/** e = z^-1 (+) (x_from^-1 (+) x_to), angle wrapped (Eq. 21's f - delta). */
+	static Eigen::Vector3d error(const mrpt::math::TPose2D& xi, const mrpt::math::TPose2D& xj,
+								 const mrpt::math::TPose2D& z);
+	/** Odometry edge information from the motion model of the options. */
+	static Eigen::Matrix3d odometryInformation(const mrpt::math::TPose2D& delta,
+											   const PoseGraphOptions& o);
+
+	mrpt::graphs::CNetworkOfPoses2DInf toMrpt(bool activeOnly = true) const;
+
+   private:
+	OptimizeStats optimizeGaussNewton();
+	OptimizeStats levenbergMarquardt();
+	OptimizeStats optimizeMrpt();
+	double updateResiduals(const std::vector<mrpt::math::TPose2D>& x, bool robust);
+	size_t rejectOutliers();
+
+	PoseGraphOptions opts_;
+	std::vector<mrpt::math::TPose2D> nodes_;
+	std::vector<PoseEdge> edges_;
+	double phi_ = 1;  //!< current DCS width
+};
+
+}  // namespace gridvector

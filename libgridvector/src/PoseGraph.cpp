@@ -1,0 +1,261 @@
+#include <gridvector/PoseGraph.h>
+
+#include <mrpt/graphslam/levmarq.h>
+#include <mrpt/math/wrap2pi.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPosePDFGaussianInf.h>
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <chrono>
+#include <cmath>
+
+namespace gridvector
+{
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+using mrpt::math::TPose2D;
+
+const char* toString(EdgeKind k)
+{
+	switch (k)
+	{
+		case EdgeKind::Odometry: return "odometry";
+		case EdgeKind::Sequential: return "sequential";
+		case EdgeKind::Overlap: return "overlap";
+		case EdgeKind::Loop: return "loop";
+	}
+	return "?";
+}
+
+PoseGraph::PoseGraph(const PoseGraphOptions& opts) : opts_(opts) {}
+
+size_t PoseGraph::addEdge(const PoseEdge& e)
+{
+	edges_.push_back(e);
+	return edges_.size() - 1;
+}
+
+// Eq. 21: e = z^-1 (+) (x_i^-1 (+) x_j).
+Vector3d PoseGraph::error(const TPose2D& xi, const TPose2D& xj, const TPose2D& z)
+{
+	const double ci = std::cos(xi.phi), si = std::sin(xi.phi);
+	const double dx = xj.x - xi.x, dy = xj.y - xi.y;
+	const double lx = ci * dx + si * dy, ly = -si * dx + ci * dy;  // R_i^T (t_j - t_i)
+	const double cz = std::cos(z.phi), sz = std::sin(z.phi);
+	const double ex = lx - z.x, ey = ly - z.y;
+	return {cz * ex + sz * ey, -sz * ex + cz * ey, mrpt::math::wrapToPi(xj.phi - xi.phi - z.phi)};
+}
+
+Matrix3d PoseGraph::odometryInformation(const TPose2D& d, const PoseGraphOptions& o)
+{
+	const double dist = std::hypot(d.x, d.y);
+	const double st = std::max(o.odometrySigmaXYMin, o.odometrySigmaXYPerM * dist);
+	const double sr = o.odometrySigmaPhi + o.odometrySigmaPhiPerM * dist;
+	Matrix3d I = Matrix3d::Zero();
+	I(0, 0) = I(1, 1) = 1.0 / (st * st);
+	I(2, 2) = 1.0 / (sr * sr);
+	return I;
+}
+
+// Chi2 of every edge at x; DCS scale s = min(1, 2 Phi / (Phi + chi2)) for registrations.
+double PoseGraph::updateResiduals(const std::vector<TPose2D>& x, bool robust)
+{
+	double total = 0;
+	const double phi = phi_;
+	for (auto& e : edges_)
+	{
+		if (!e.active) continue;
+		const Vector3d r = error(x[e.from], x[e.to], e.z);
+		e.chi2 = r.dot(e.information * r);
+		e.scale = 1;
+		if (robust && e.kind != EdgeKind::Odometry && phi > 0)
+			e.scale = std::min(1.0, 2 * phi / (phi + e.chi2));
+		total += e.scale * e.scale * e.chi2;
+	}
+	return total;
+}
+
+size_t PoseGraph::rejectOutliers()
+{
+	size_t n = 0;
+	for (auto& e : edges_)
+		if (e.active && e.kind != EdgeKind::Odometry && e.chi2 > opts_.rejectChi2)
+			e.active = false, ++n;
+	return n;
+}
+
+OptimizeStats PoseGraph::optimize()
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	phi_ = opts_.robustKernelWidth;
+	OptimizeStats st = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
+	// Iterative edge rejection by chi2, then re-optimisation.
+	for (int round = 0; round < 3; ++round)
+	{
+		updateResiduals(nodes_, false);
+		const size_t rej = rejectOutliers();
+		if (!rej) break;
+		st.rejected += rej;
+		const OptimizeStats again = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
+		st.iterations += again.iterations;
+		st.finalError = again.finalError;
+	}
+	updateResiduals(nodes_, !opts_.useMrptOptimizer);
+	st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	return st;
+}
+
+// Sparse Levenberg-Marquardt on Eq. 22 with x_0 fixed; H assembled from 3x3 blocks.
+// Graduated robustness: the DCS width Phi shrinks from wide (almost least squares)
+// to robust_kernel_width, so a poor start does not switch off correct edges.
+OptimizeStats PoseGraph::optimizeGaussNewton()
+{
+	OptimizeStats st;
+	bool first = true;
+	for (double phi = std::max(opts_.robustKernelWidth, 1e4);; phi = std::max(opts_.robustKernelWidth, phi * 0.1))
+	{
+		phi_ = phi;
+		const OptimizeStats s = levenbergMarquardt();
+		if (first) st.initialError = s.initialError, first = false;
+		st.iterations += s.iterations;
+		st.finalError = s.finalError;
+		if (phi <= opts_.robustKernelWidth) break;
+	}
+	return st;
+}
+
+OptimizeStats PoseGraph::levenbergMarquardt()
+{
+	OptimizeStats st;
+	const size_t n = nodes_.size();
+	if (n < 2) return st;
+	const int dim = int(3 * (n - 1));
+	auto col = [](uint32_t node) { return int(node) * 3 - 3; };  // node 0 is fixed
+	std::vector<Eigen::Triplet<double>> trip;
+	Eigen::VectorXd b(dim);
+	Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+	bool analysed = false;
+	double lambda = 1e-4;
+	double err = updateResiduals(nodes_, true);
+	st.initialError = err;
+	for (int it = 0; it < opts_.maxIterations; ++it)
+	{
+		trip.clear();
+		b.setZero();
+		for (int k = 0; k < dim; ++k) trip.emplace_back(k, k, lambda);
+		for (const auto& e : edges_)
+		{
+			if (!e.active || e.from == e.to) continue;
+			const TPose2D &xi = nodes_[e.from], &xj = nodes_[e.to];
+			const Vector3d r = error(xi, xj, e.z);
+			const double ci = std::cos(xi.phi), si = std::sin(xi.phi);
+			const double cz = std::cos(e.z.phi), sz = std::sin(e.z.phi);
+			Eigen::Matrix2d RzT, RiT, dRiT;
+			RzT << cz, sz, -sz, cz;
+			RiT << ci, si, -si, ci;
+			dRiT << -si, ci, -ci, -si;
+			const Eigen::Vector2d dt(xj.x - xi.x, xj.y - xi.y);
+			Matrix3d A = Matrix3d::Zero(), B = Matrix3d::Zero();
+			A.topLeftCorner<2, 2>() = -RzT * RiT;
+			A.topRightCorner<2, 1>() = RzT * dRiT * dt;
+			A(2, 2) = -1;
+			B.topLeftCorner<2, 2>() = RzT * RiT;
+			B(2, 2) = 1;
+			const Matrix3d W = e.scale * e.scale * e.information;
+			const int ci0 = e.from ? col(e.from) : -1, cj0 = e.to ? col(e.to) : -1;
+			auto block = [&](int r0, int c0, const Matrix3d& M) {
+				for (int p = 0; p < 3; ++p)
+					for (int q = 0; q < 3; ++q) trip.emplace_back(r0 + p, c0 + q, M(p, q));
+			};
+			if (ci0 >= 0)
+			{
+				block(ci0, ci0, A.transpose() * W * A);
+				b.segment<3>(ci0) += A.transpose() * W * r;
+			}
+			if (cj0 >= 0)
+			{
+				block(cj0, cj0, B.transpose() * W * B);
+				b.segment<3>(cj0) += B.transpose() * W * r;
+			}
+			if (ci0 >= 0 && cj0 >= 0)
+			{
+				const Matrix3d AB = A.transpose() * W * B;
+				block(ci0, cj0, AB);
+				block(cj0, ci0, AB.transpose());
+			}
+		}
+		Eigen::SparseMatrix<double> H(dim, dim);
+		H.setFromTriplets(trip.begin(), trip.end());
+		if (!analysed) solver.analyzePattern(H), analysed = true;
+		solver.factorize(H);
+		if (solver.info() != Eigen::Success)
+		{
+			lambda *= 10;
+			continue;
+		}
+		const Eigen::VectorXd dx = solver.solve(-b);
+		std::vector<TPose2D> cand = nodes_;
+		for (size_t i = 1; i < n; ++i)
+		{
+			cand[i].x += dx(col(uint32_t(i)));
+			cand[i].y += dx(col(uint32_t(i)) + 1);
+			cand[i].phi = mrpt::math::wrapToPi(cand[i].phi + dx(col(uint32_t(i)) + 2));
+		}
+		// the structure of H (pattern) may change with lambda: keep it fixed (diagonal always present)
+		const double cerr = updateResiduals(cand, true);
+		++st.iterations;
+		if (cerr <= err)
+		{
+			const double rel = (err - cerr) / std::max(1e-12, err);
+			nodes_.swap(cand);
+			err = cerr;
+			lambda = std::max(1e-9, lambda / 3);
+			if (rel < 1e-7 || dx.cwiseAbs().maxCoeff() < 1e-7) break;
+		}
+		else
+		{
+			updateResiduals(nodes_, true);  // restore the scales of the kept estimate
+			lambda *= 10;
+			if (lambda > 1e8) break;
+		}
+	}
+	st.finalError = err;
+	return st;
+}
+
+mrpt::graphs::CNetworkOfPoses2DInf PoseGraph::toMrpt(bool activeOnly) const
+{
+	mrpt::graphs::CNetworkOfPoses2DInf g;
+	g.root = 0;
+	for (size_t i = 0; i < nodes_.size(); ++i) g.nodes[i] = mrpt::poses::CPose2D(nodes_[i]);
+	for (const auto& e : edges_)
+	{
+		if (activeOnly && !e.active) continue;
+		mrpt::math::CMatrixDouble33 inf;
+		for (int r = 0; r < 3; ++r)
+			for (int c = 0; c < 3; ++c) inf(r, c) = e.information(r, c);
+		g.insertEdge(e.from, e.to, mrpt::poses::CPosePDFGaussianInf(mrpt::poses::CPose2D(e.z), inf));
+	}
+	return g;
+}
+
+// MRPT's sparse LM (no robust kernel: robustness comes from the chi2 rejection rounds).
+OptimizeStats PoseGraph::optimizeMrpt()
+{
+	OptimizeStats st;
+	if (nodes_.size() < 2) return st;
+	st.initialError = updateResiduals(nodes_, false);
+	auto g = toMrpt(true);
+	mrpt::graphslam::TResultInfoSpaLevMarq info;
+	mrpt::containers::yaml params;
+	params["max_iterations"] = opts_.maxIterations;
+	mrpt::graphslam::optimize_graph_spa_levmarq(g, info, nullptr, params);
+	for (const auto& kv : g.nodes) nodes_[kv.first] = kv.second.asTPose();
+	st.iterations = int(info.num_iters);
+	st.finalError = updateResiduals(nodes_, false);
+	return st;
+}
+
+}  // namespace gridvector

@@ -1,0 +1,138 @@
+// PoseGraph (Eq. 21-22): exact solutions, outlier robustness, both optimisers agree.
+#include <gridvector/PoseGraph.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <cmath>
+#include <random>
+
+using namespace gridvector;
+using mrpt::math::TPose2D;
+
+namespace
+{
+TPose2D relative(const TPose2D& a, const TPose2D& b)
+{
+	const double c = std::cos(a.phi), s = std::sin(a.phi);
+	const double dx = b.x - a.x, dy = b.y - a.y;
+	return {c * dx + s * dy, -s * dx + c * dy, mrpt::math::wrapToPi(b.phi - a.phi)};
+}
+
+// A square loop of 40 poses; noisy odometry, exact loop-closure edges every 10 poses.
+std::vector<TPose2D> squareLoop()
+{
+	std::vector<TPose2D> p;
+	for (int side = 0; side < 4; ++side)
+		for (int k = 0; k < 10; ++k)
+		{
+			const double a = side * M_PI / 2, d = k * 0.5;
+			const double cx[4] = {0, 5, 5, 0}, cy[4] = {0, 0, 5, 5};
+			p.emplace_back(cx[side] + d * std::cos(a), cy[side] + d * std::sin(a), a);
+		}
+	return p;
+}
+
+PoseGraph buildGraph(const std::vector<TPose2D>& truth, PoseGraphOptions o, unsigned seed)
+{
+	std::mt19937 rng(seed);
+	std::normal_distribution<double> n(0, 1);
+	PoseGraph g(o);
+	std::vector<TPose2D> odo{truth[0]};
+	for (size_t i = 1; i < truth.size(); ++i)
+	{
+		TPose2D z = relative(truth[i - 1], truth[i]);
+		z.x += 0.03 * n(rng), z.y += 0.03 * n(rng), z.phi += 0.03 + 0.01 * n(rng);  // biased
+		const TPose2D& prev = odo.back();
+		const double c = std::cos(prev.phi), s = std::sin(prev.phi);
+		odo.emplace_back(prev.x + c * z.x - s * z.y, prev.y + s * z.x + c * z.y, prev.phi + z.phi);
+		PoseEdge e;
+		e.from = uint32_t(i - 1), e.to = uint32_t(i), e.z = z;
+		e.information = PoseGraph::odometryInformation(z, o);
+		g.addEdge(e);
+	}
+	for (size_t i = 10; i < truth.size(); i += 3)
+		for (size_t j : {size_t(0), i - 10})
+		{
+			PoseEdge e;
+			e.from = uint32_t(j), e.to = uint32_t(i), e.z = relative(truth[j], truth[i]);
+			e.kind = EdgeKind::Overlap;
+			e.information = Eigen::Vector3d(1e4, 1e4, 1e5).asDiagonal();
+			g.addEdge(e);
+		}
+	g.setNodes(odo);
+	return g;
+}
+
+double maxError(const std::vector<TPose2D>& a, const std::vector<TPose2D>& b)
+{
+	double m = 0;
+	for (size_t i = 0; i < a.size(); ++i) m = std::max(m, std::hypot(a[i].x - b[i].x, a[i].y - b[i].y));
+	return m;
+}
+}  // namespace
+
+TEST(PoseGraph, ErrorIsZeroForConsistentEdge)
+{
+	const TPose2D a(1, 2, 0.5), b(-3, 4, 2.9);
+	EXPECT_LT(PoseGraph::error(a, b, relative(a, b)).norm(), 1e-12);
+	const Eigen::Vector3d e = PoseGraph::error(a, b, TPose2D(0, 0, 0));
+	EXPECT_NEAR(e.z(), mrpt::math::wrapToPi(2.4), 1e-12);
+}
+
+TEST(PoseGraph, LoopClosuresRemoveOdometryDrift)
+{
+	const auto truth = squareLoop();
+	PoseGraph g = buildGraph(truth, {}, 3);
+	EXPECT_GT(maxError(g.nodes(), truth), 1.0);
+	const OptimizeStats st = g.optimize();
+	EXPECT_LT(st.finalError, st.initialError);
+	EXPECT_LT(maxError(g.nodes(), truth), 0.1);
+	EXPECT_EQ(st.rejected, 0u);
+}
+
+TEST(PoseGraph, WrongEdgesAreDownweightedAndRejected)
+{
+	const auto truth = squareLoop();
+	PoseGraph g = buildGraph(truth, {}, 4);
+	// three confident, wrong loop closures
+	for (auto [i, j] : {std::pair{5, 25}, std::pair{12, 33}, std::pair{2, 38}})
+	{
+		PoseEdge e;
+		e.from = uint32_t(i), e.to = uint32_t(j), e.kind = EdgeKind::Loop;
+		e.z = TPose2D(0.5, -0.3, 0.4);
+		e.information = Eigen::Vector3d(1e4, 1e4, 1e5).asDiagonal();
+		g.addEdge(e);
+	}
+	PoseGraph clean = buildGraph(truth, {}, 4);
+	clean.optimize();
+	const OptimizeStats st = g.optimize();
+	EXPECT_LT(maxError(g.nodes(), clean.nodes()), 0.01);
+	EXPECT_GE(st.rejected, 3u);
+	for (const auto& e : g.edges())
+		EXPECT_TRUE(e.kind != EdgeKind::Loop || !e.active) << e.from << "-" << e.to;
+}
+
+TEST(PoseGraph, MrptOptimizerAgreesOnCleanGraph)
+{
+	const auto truth = squareLoop();
+	PoseGraphOptions o;
+	PoseGraph own = buildGraph(truth, o, 5);
+	o.useMrptOptimizer = true;
+	PoseGraph mrpt = buildGraph(truth, o, 5);
+	own.optimize();
+	mrpt.optimize();
+	EXPECT_LT(maxError(own.nodes(), mrpt.nodes()), 1e-3);
+	const auto net = own.toMrpt();
+	EXPECT_EQ(net.nodes.size(), truth.size());
+	EXPECT_EQ(net.edges.size(), own.edges().size());
+}
+
+TEST(PoseGraph, OdometryInformationGrowsWeakerWithDistance)
+{
+	const PoseGraphOptions o;
+	const auto near = PoseGraph::odometryInformation(TPose2D(0.1, 0, 0), o);
+	const auto far = PoseGraph::odometryInformation(TPose2D(2.0, 0, 0), o);
+	EXPECT_GT(near(0, 0), far(0, 0));
+	EXPECT_GT(near(2, 2), far(2, 2));
+}

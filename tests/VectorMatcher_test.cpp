@@ -1,0 +1,179 @@
+// VectorMatcher (Sec. 4.2): registration accuracy, corridor degeneracy, rejection, speed.
+#include <gridvector/VectorMatcher.h>
+
+#include <Eigen/Eigenvalues>
+#include <gtest/gtest.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <chrono>
+#include <cmath>
+#include <random>
+
+using namespace gridvector;
+using mrpt::math::TPose2D;
+
+namespace
+{
+struct WorldSeg
+{
+	double x1, y1, x2, y2;
+};
+
+// Express world segments (open side on the left) in the frame of `pose`, with noise.
+std::vector<MatchSegment> observe(const std::vector<WorldSeg>& world, const TPose2D& pose,
+								  double noise, unsigned seed, uint64_t firstId)
+{
+	std::mt19937 rng(seed);
+	std::normal_distribution<double> n(0, noise);
+	const double c = std::cos(pose.phi), s = std::sin(pose.phi);
+	auto local = [&](double x, double y) {
+		const double dx = x - pose.x, dy = y - pose.y;
+		return Eigen::Vector2d(c * dx + s * dy + n(rng), -s * dx + c * dy + n(rng));
+	};
+	std::vector<MatchSegment> out;
+	for (const auto& w : world)
+	{
+		MatchSegment m;
+		m.s = local(w.x1, w.y1);
+		m.e = local(w.x2, w.y2);
+		m.length = (m.e - m.s).norm();
+		m.id = firstId++;
+		out.push_back(m);
+	}
+	return out;
+}
+
+TPose2D relative(const TPose2D& a, const TPose2D& b)
+{
+	const double c = std::cos(a.phi), s = std::sin(a.phi);
+	const double dx = b.x - a.x, dy = b.y - a.y;
+	return {c * dx + s * dy, -s * dx + c * dy, mrpt::math::wrapToPi(b.phi - a.phi)};
+}
+
+// An office-like room (walls counter-clockwise, seen from inside) with furniture.
+std::vector<WorldSeg> room()
+{
+	return {{0, 0, 4, 0},	{4.5, 0, 8, 0},	   {8, 0, 8, 3},	 {8, 3.8, 8, 6},
+			{8, 6, 3, 6},	{2.2, 6, 0, 6},	   {0, 6, 0, 0},	 {2, 2, 2, 3.2},
+			{2, 3.2, 3.5, 3.2}, {3.5, 3.2, 3.5, 2}, {3.5, 2, 2, 2}, {6, 4, 5.2, 4.6}};
+}
+}  // namespace
+
+TEST(VectorMatcher, RecoversRelativePoseFromPerturbedGuess)
+{
+	const TPose2D xa(1.0, 1.0, 0.3), xb(1.6, 1.4, 0.45);
+	const auto a = observe(room(), xa, 0.0, 1, 1), b = observe(room(), xb, 0.0, 2, 100);
+	const TPose2D truth = relative(xa, xb);
+	VectorMatcher m;
+	const TPose2D guess(truth.x + 0.25, truth.y - 0.2, truth.phi + 0.12);
+	const MatchResult r = m.match(a, b, guess);
+	ASSERT_TRUE(r.ok()) << toString(r.status);
+	EXPECT_NEAR(r.pose.x, truth.x, 1e-6);
+	EXPECT_NEAR(r.pose.y, truth.y, 1e-6);
+	EXPECT_NEAR(r.pose.phi, truth.phi, 1e-7);
+	EXPECT_LT(r.rms, 1e-6);
+	EXPECT_GE(r.pairs.size(), 8u);
+	// correspondences are the same wall seen twice: ids 1.. and 100.. in the same order
+	for (const auto& p : r.pairs) EXPECT_EQ(p.b - 100, p.a - 1);
+	// full rank information, positive definite
+	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(r.information);
+	EXPECT_GT(es.eigenvalues()(0), 100.0);
+}
+
+TEST(VectorMatcher, NoisySegmentsGiveCentimetreAccuracy)
+{
+	const TPose2D xa(1.0, 1.0, 0.3), xb(2.0, 1.5, -0.2);
+	const TPose2D truth = relative(xa, xb);
+	VectorMatcher m;
+	double worst = 0;
+	for (unsigned seed = 0; seed < 20; ++seed)
+	{
+		const auto a = observe(room(), xa, 0.01, 10 + seed, 1);
+		const auto b = observe(room(), xb, 0.01, 50 + seed, 100);
+		const MatchResult r = m.match(a, b, TPose2D(truth.x - 0.3, truth.y + 0.2, truth.phi - 0.1));
+		ASSERT_TRUE(r.ok()) << toString(r.status);
+		worst = std::max(worst, std::hypot(r.pose.x - truth.x, r.pose.y - truth.y));
+		EXPECT_NEAR(r.pose.phi, truth.phi, 0.01);
+	}
+	EXPECT_LT(worst, 0.03);
+}
+
+TEST(VectorMatcher, CorridorLeavesTranslationAlongItUnconstrained)
+{
+	// two parallel walls along x, open space between them (both seen from inside)
+	const std::vector<WorldSeg> corridor = {{0, -1, 5, -1}, {5.6, -1, 12, -1}, {12, 1, 0, 1}};
+	const TPose2D xa(2, 0, 0), xb(3, 0.1, 0.05);
+	const auto a = observe(corridor, xa, 0, 1, 1), b = observe(corridor, xb, 0, 1, 10);
+	const TPose2D truth = relative(xa, xb);
+	VectorMatcher m;
+	const TPose2D guess(truth.x + 0.4, truth.y + 0.1, truth.phi + 0.03);
+	const MatchResult r = m.match(a, b, guess);
+	ASSERT_GE(r.pairs.size(), 2u);
+	// lateral offset and heading are recovered ...
+	EXPECT_NEAR(r.pose.phi, truth.phi, 1e-6);
+	const Eigen::Vector2d axis(std::cos(0.0), std::sin(0.0));  // corridor axis in A's frame
+	const Eigen::Vector2d err(r.pose.x - truth.x, r.pose.y - truth.y);
+	EXPECT_NEAR(err.dot(Eigen::Vector2d(-axis.y(), axis.x())), 0.0, 1e-6);
+	// ... the axial component stays where the guess put it, and carries no information
+	EXPECT_NEAR(err.dot(axis), 0.4, 1e-3);
+	const Eigen::Vector3d ax(axis.x(), axis.y(), 0);
+	const Eigen::Vector3d lat(-axis.y(), axis.x(), 0);
+	EXPECT_LT(ax.dot(r.information * ax), 1e-6 * lat.dot(r.information * lat));
+	EXPECT_LT(r.translationDegeneracy, 1e-6);
+}
+
+TEST(VectorMatcher, RejectsInsufficientAndOppositeMatches)
+{
+	VectorMatcher m;
+	// a single wall: too few matches
+	const std::vector<WorldSeg> one = {{0, 0, 5, 0}};
+	const auto a1 = observe(one, TPose2D(1, 1, 0), 0, 1, 1), b1 = observe(one, TPose2D(1.2, 1, 0), 0, 1, 5);
+	EXPECT_EQ(m.match(a1, b1, TPose2D(0.2, 0, 0)).status, MatchStatus::TooFewMatches);
+	// the same walls seen from the other side (opposite directions) never correspond
+	auto rev = room();
+	for (auto& w : rev) std::swap(w.x1, w.x2), std::swap(w.y1, w.y2);
+	const auto a = observe(room(), TPose2D(1, 1, 0), 0, 1, 1);
+	const auto b = observe(rev, TPose2D(1, 1, 0), 0, 1, 100);
+	const MatchResult r = m.match(a, b, TPose2D(0, 0, 0));
+	EXPECT_FALSE(r.ok());
+	EXPECT_TRUE(r.pairs.empty());
+	// empty input
+	EXPECT_FALSE(m.match({}, b, TPose2D()).ok());
+	EXPECT_FALSE(m.match(a, {}, TPose2D()).ok());
+}
+
+TEST(VectorMatcher, CorrespondencesUnderFixedPose)
+{
+	const TPose2D xa(1.0, 1.0, 0.3), xb(1.6, 1.4, 0.45);
+	const auto a = observe(room(), xa, 0, 1, 1), b = observe(room(), xb, 0, 2, 100);
+	VectorMatcher m;
+	std::vector<VectorPair> pairs;
+	const double len = m.correspondences(a, b, relative(xa, xb), m.finalGates(), &pairs);
+	EXPECT_GT(len, 20.0);
+	EXPECT_GE(pairs.size(), 10u);
+	EXPECT_TRUE(std::is_sorted(pairs.begin(), pairs.end()));
+	// a 1 m shift breaks criterion 2 for every wall
+	TPose2D off = relative(xa, xb);
+	off.x += 1.0, off.y += 1.0;
+	EXPECT_LT(m.correspondences(a, b, off, m.finalGates(), nullptr), len / 4);
+}
+
+TEST(VectorMatcher, IsFast)
+{
+	// 40 segments per scan: a dense indoor scan
+	std::vector<WorldSeg> w = room();
+	for (int k = 0; k < 28; ++k)
+		w.push_back({10.0 + k, 0.0 + 0.1 * k, 10.5 + k, 0.3 + 0.1 * k});
+	const TPose2D xa(1, 1, 0.1), xb(1.3, 1.1, 0.15);
+	const auto a = observe(w, xa, 0.005, 3, 1), b = observe(w, xb, 0.005, 4, 100);
+	VectorMatcher m;
+	const int n = 300;
+	const auto t0 = std::chrono::steady_clock::now();
+	int ok = 0;
+	for (int i = 0; i < n; ++i) ok += m.match(a, b, TPose2D(0.25, 0.1, 0.1)).ok();
+	const double us =
+		std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - t0).count() / n;
+	EXPECT_EQ(ok, n);
+	EXPECT_LT(us, 2000.0) << "one registration took " << us << " us";
+	RecordProperty("microseconds_per_match", int(us));
+}

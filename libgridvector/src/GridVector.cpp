@@ -21,7 +21,7 @@ GridVector::GridVector(const TPoint2D& start, const TPoint2D& end, const GridOpt
 	  priorOcc_(float(grid.priorOccupy)),
 	  priorVisit_(float(grid.priorVisit))
 {
-	setGeometry(start, end, columnsFor(length(), res_));
+	setGeometry(start, end, columnsFor(std::hypot(end.x - start.x, end.y - start.y), res_));
 }
 
 GridVector GridVector::fromParts(const TPoint2D& start, const TPoint2D& end,
@@ -39,6 +39,7 @@ void GridVector::setGeometry(const TPoint2D& s, const TPoint2D& e, int cols)
 {
 	start_ = s;
 	end_ = e;
+	updateDirection();
 	cols_ = std::max(1, cols);
 	GridCell prior;
 	prior.n_occupy = priorOcc_;
@@ -48,13 +49,13 @@ void GridVector::setGeometry(const TPoint2D& s, const TPoint2D& e, int cols)
 
 double GridVector::psi() const { return std::atan2(end_.y - start_.y, end_.x - start_.x); }
 TPoint2D GridVector::centre() const { return {(start_.x + end_.x) / 2, (start_.y + end_.y) / 2}; }
-double GridVector::length() const { return std::hypot(end_.x - start_.x, end_.y - start_.y); }
+double GridVector::length() const { return len_; }
+TPoint2D GridVector::direction() const { return dir_; }
 
-TPoint2D GridVector::direction() const
+void GridVector::updateDirection()
 {
-	const double l = length();
-	if (l <= 0) return {1, 0};
-	return {(end_.x - start_.x) / l, (end_.y - start_.y) / l};
+	len_ = std::hypot(end_.x - start_.x, end_.y - start_.y);
+	dir_ = len_ > 0 ? TPoint2D((end_.x - start_.x) / len_, (end_.y - start_.y) / len_) : TPoint2D(1, 0);
 }
 
 TPoint2D GridVector::leftNormal() const
@@ -74,9 +75,8 @@ Line2D GridVector::line() const
 
 TPoint2D GridVector::toGridFrame(const TPoint2D& p) const
 {
-	const TPoint2D d = direction(), n = leftNormal();
 	const double dx = p.x - start_.x, dy = p.y - start_.y;
-	return {dx * d.x + dy * d.y, dx * n.x + dy * n.y};
+	return {dx * dir_.x + dy * dir_.y, dy * dir_.x - dx * dir_.y};
 }
 
 bool GridVector::cellOf(const TPoint2D& p, int& row, int& col) const
@@ -176,6 +176,7 @@ GridVector GridVector::compose(const mrpt::math::TPose2D& pose) const
 	};
 	out.start_ = tf(start_);
 	out.end_ = tf(end_);
+	out.updateDirection();
 	return out;
 }
 

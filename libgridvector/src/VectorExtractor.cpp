@@ -7,6 +7,27 @@ namespace gridvector
 {
 using mrpt::math::TPoint2D;
 
+namespace
+{
+// cos/sin of every beam angle, cached per thread for the last scan geometry.
+struct BeamTrig
+{
+	size_t n = 0;
+	float aperture = 0;
+	bool rightToLeft = true;
+	std::vector<double> c, s;
+	const BeamTrig& update(const mrpt::obs::CObservation2DRangeScan& scan)
+	{
+		if (scan.getScanSize() == n && scan.aperture == aperture && scan.rightToLeft == rightToLeft)
+			return *this;
+		n = scan.getScanSize(), aperture = scan.aperture, rightToLeft = scan.rightToLeft;
+		c.resize(n), s.resize(n);
+		for (size_t i = 0; i < n; ++i) c[i] = std::cos(scan.getScanAngle(i)), s[i] = std::sin(scan.getScanAngle(i));
+		return *this;
+	}
+};
+}  // namespace
+
 VectorExtractor::VectorExtractor(const ExtractionOptions& ext, const GridOptions& grid)
 	: ext_(ext), grid_(grid)
 {
@@ -25,6 +46,8 @@ void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
 	const double lambda = ext_.breakAngleDeg * M_PI / 180.0;
 	const double adaptive = std::sin(dPhi) / std::max(1e-6, std::sin(lambda - dPhi));
 	const double sigma3 = 3.0 * std::max(0.0f, scan.stdError);
+	thread_local BeamTrig trigCache;
+	const BeamTrig& trig = trigCache.update(scan);
 	bool prevValid = false;
 	double prevR = 0;
 	for (size_t i = 0; i < n; ++i)
@@ -37,8 +60,7 @@ void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
 			prevValid = false;
 			continue;
 		}
-		const double a = scan.getScanAngle(i);
-		const double lx = r * std::cos(a), ly = r * std::sin(a);
+		const double lx = r * trig.c[i], ly = r * trig.s[i];
 		const TPoint2D p(sx + cs * lx - ss * ly, sy + ss * lx + cs * ly);
 		bool brk = !prevValid;
 		if (!brk)

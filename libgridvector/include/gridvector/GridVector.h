@@ -96,7 +96,10 @@ class GridVector
 	uint32_t mergedCount = 1;  //!< how many per-scan vectors this one stands for
 
    private:
+	void updateDirection();
 	mrpt::math::TPoint2D start_{0, 0}, end_{0, 0};
+	mrpt::math::TPoint2D dir_{1, 0};  //!< unit vector start -> end (cached: hot path)
+	double len_ = 0;  //!< cached length
 	double res_ = 0.1;
 	int halfWidth_ = 1;
 	int cols_ = 0;

@@ -1,0 +1,114 @@
+// gv-bench-extract: grid-vector extraction throughput (Sec. 3.1) on a real log,
+// single-threaded, against MRPT's own scan -> CSimplePointsMap conversion of the
+// same scans in the same run (a peer every MRPT user already pays for).
+//
+//   gv-bench-extract LOG [--repeat N] [--config FILE.ini]
+#include <gridvector/ErrorText.h>
+#include <gridvector/VectorExtractor.h>
+#include <gridvector/io/LogReader.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <string>
+#include <vector>
+
+using namespace gridvector;
+using Clock = std::chrono::steady_clock;
+
+namespace
+{
+[[noreturn]] void fail(const std::string& m)
+{
+	std::cerr << "gv-bench-extract: " << m << "\n";
+	std::exit(1);
+}
+
+double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
+
+// RMS orthogonal residual of each fitted segment (not timed).
+void residuals(const VectorExtractor& ex, const mrpt::obs::CObservation2DRangeScan& scan, std::vector<double>& out)
+{
+	std::vector<mrpt::math::TPoint2D> pts;
+	std::vector<size_t> runs;
+	ex.scanToRuns(scan, pts, runs);
+	runs.push_back(pts.size());
+	const auto& o = ex.extractionOptions();
+	for (size_t r = 0; r + 1 < runs.size(); ++r)
+	{
+		if (runs[r + 1] - runs[r] < size_t(o.minPoints)) continue;
+		for (const auto& s : ex.splitAndMerge(pts, runs[r], runs[r + 1] - 1))
+		{
+			if (s.last - s.first + 1 < size_t(o.minPoints)) continue;
+			if (ex.makeVector(pts, s, {0, 0}).length() < o.minLength) continue;
+			double ss = 0;
+			for (size_t k = s.first; k <= s.last; ++k) ss += std::pow(s.line.distance(pts[k]), 2);
+			out.push_back(std::sqrt(ss / double(s.last - s.first + 1)));
+		}
+	}
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	std::string log, config;
+	int repeat = 5;
+	for (int i = 1; i < argc; ++i)
+	{
+		const std::string a = argv[i];
+		auto next = [&]() -> std::string {
+			if (i + 1 >= argc) fail("option " + a + " needs a value");
+			return argv[++i];
+		};
+		if (a == "--repeat") repeat = std::max(1, std::atoi(next().c_str()));
+		else if (a == "--config") config = next();
+		else if (a[0] == '-') fail("unknown option " + a);
+		else log = a;
+	}
+	if (log.empty()) fail("usage: gv-bench-extract LOG [--repeat N] [--config FILE.ini]");
+	GridVectorConfig cfg;
+	io::LogData data;
+	try
+	{
+		if (!config.empty()) cfg.loadFromFile(config);
+		data = io::readLog(log);
+	}
+	catch (const std::exception& e)
+	{
+		fail(oneLineError(e));
+	}
+	if (data.scans.empty()) fail(log + ": no laser scans");
+	const VectorExtractor ex(cfg.extraction, cfg.grid);
+
+	size_t vectors = 0, beams = 0;
+	const auto t0 = Clock::now();
+	for (int r = 0; r < repeat; ++r)
+		for (const auto& rec : data.scans) vectors += ex.extract(*rec.scan).vectors.size();
+	const auto t1 = Clock::now();
+	for (int r = 0; r < repeat; ++r)
+		for (const auto& rec : data.scans)
+		{
+			mrpt::maps::CSimplePointsMap pm;
+			pm.insertObservation(*rec.scan);
+			beams += pm.size();
+		}
+	const auto t2 = Clock::now();
+
+	std::vector<double> res;
+	for (const auto& rec : data.scans) residuals(ex, *rec.scan, res);
+	std::sort(res.begin(), res.end());
+	const double n = double(data.scans.size()) * repeat;
+	const double gvRate = n / seconds(t0, t1), pmRate = n / seconds(t1, t2);
+	std::printf("log: %s\nscans: %zu x %d repeats, %zu beams/scan\n", log.c_str(), data.scans.size(), repeat,
+				data.scans[0].scan->getScanSize());
+	std::printf("extraction: %.0f scans/s (%.1f us/scan), %.2f vectors/scan\n", gvRate, 1e6 / gvRate,
+				double(vectors) / n);
+	std::printf("peer CSimplePointsMap::insertObservation: %.0f scans/s; extraction/peer speed ratio %.2f\n", pmRate,
+				gvRate / pmRate);
+	std::printf("fit residual (RMS per segment): median %.4f m, 90th pct %.4f m over %zu segments\n",
+				res.empty() ? 0.0 : res[res.size() / 2], res.empty() ? 0.0 : res[res.size() * 9 / 10], res.size());
+	return 0;
+}

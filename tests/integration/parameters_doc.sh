@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# doc/parameters.md must list every parameter with its current default:
+# its table is exactly what `gv-config --markdown` prints.
+set -euo pipefail
+doc="$GV_SOURCE_DIR/doc/parameters.md"
+gen=$(mktemp); trap 'rm -f "$gen" "$gen.ini"' EXIT
+"$GV_BIN/gv-config" --markdown > "$gen"
+if ! grep -qxFf "$gen" "$doc" || [ "$(grep -cxFf "$gen" "$doc")" -ne "$(wc -l < "$gen")" ]; then
+  echo "doc/parameters.md is out of date; regenerate its table with: gv-config --markdown"
+  diff <(grep '^|' "$doc") "$gen" || true
+  exit 1
+fi
+# The default .ini round-trips, and a typo is reported with file and key.
+"$GV_BIN/gv-config" --ini > "$gen.ini"
+"$GV_BIN/gv-config" --check "$gen.ini"
+printf '[gridvector_grid]\nresolutoin = 0.05\n' > "$gen.ini"
+if "$GV_BIN/gv-config" --check "$gen.ini" 2> err.txt; then echo "typo accepted"; exit 1; fi
+grep -q "resolutoin" err.txt && grep -q "$gen.ini" err.txt
+rm -f err.txt
+echo "parameters doc is complete"

@@ -1,13 +1,37 @@
+#include <gridvector/Correspondence.h>
 #include <gridvector/GlobalMap.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace gridvector
 {
-GlobalMap::GlobalMap(const GridVectorConfig& cfg) : cfg_(cfg) {}
+using mrpt::math::TPoint2D;
+
+GlobalMap::GlobalMap(const GridVectorConfig& cfg)
+	: cfg_(cfg), index_(cfg.map.indexCellSize), wiper_(cfg.map.hitBand), merger_(cfg)
+{
+}
 
 void GlobalMap::clear()
 {
 	vectors_.clear();
+	index_.clear();
 	nextId_ = 1;
+	stats_ = {};
+}
+
+void GlobalMap::setConfig(const GridVectorConfig& cfg)
+{
+	const bool reindex = cfg.map.indexCellSize != cfg_.map.indexCellSize;
+	cfg_ = cfg;
+	wiper_ = ScanWipe(cfg.map.hitBand);
+	merger_ = VectorMerger(cfg);
+	if (reindex)
+	{
+		index_ = VectorIndex(cfg.map.indexCellSize);
+		rebuildIndex();
+	}
 }
 
 void GlobalMap::setVectors(std::vector<GridVector> v)
@@ -15,18 +39,107 @@ void GlobalMap::setVectors(std::vector<GridVector> v)
 	vectors_ = std::move(v);
 	nextId_ = 1;
 	for (const auto& g : vectors_) nextId_ = std::max(nextId_, g.id + 1);
+	rebuildIndex();
 }
 
-// m_{i,t} = x_t (+) v_{i,t} (Sec. 3.2). Wipe triangles and merging: see issue #4.
+void GlobalMap::rebuildIndex()
+{
+	index_.clear();
+	for (size_t i = 0; i < vectors_.size(); ++i) index_.insert(uint32_t(i), Box2D::of(vectors_[i]));
+}
+
+void GlobalMap::addSlot(GridVector m)
+{
+	vectors_.push_back(std::move(m));
+	index_.insert(uint32_t(vectors_.size() - 1), Box2D::of(vectors_.back()));
+}
+
+// Removes slots by moving the last vector into each hole (largest slot first).
+void GlobalMap::removeSlots(std::vector<size_t> slots)
+{
+	std::sort(slots.rbegin(), slots.rend());
+	for (size_t i : slots)
+	{
+		const size_t last = vectors_.size() - 1;
+		index_.remove(uint32_t(i));
+		if (i != last)
+		{
+			index_.remove(uint32_t(last));
+			vectors_[i] = std::move(vectors_[last]);
+			index_.insert(uint32_t(i), Box2D::of(vectors_[i]));
+		}
+		vectors_.pop_back();
+	}
+}
+
+TPoint2D GlobalMap::sensorPosition(const mrpt::math::TPose2D& x, const LocalScan& scan)
+{
+	const double c = std::cos(x.phi), s = std::sin(x.phi);
+	const TPoint2D& o = scan.sensorOrigin;
+	return {x.x + c * o.x - s * o.y, x.y + s * o.x + c * o.y};
+}
+
+std::vector<size_t> GlobalMap::correspondents(const GridVector& v) const
+{
+	std::vector<uint32_t> cand;
+	index_.query(Box2D::of(v).expanded(correspondenceSearchMargin(v.length(), cfg_.map)), cand);
+	std::vector<size_t> out;
+	for (uint32_t s : cand)
+		if (corresponds(v, vectors_[s], cfg_.map)) out.push_back(s);
+	std::sort(out.begin(), out.end());
+	return out;
+}
+
+// Eq. 8: the triangles of V_t over the vectors already in the map.
+ScanWipe::Stats GlobalMap::wipe(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
+{
+	std::vector<ScanWipe::Segment> segs;
+	segs.reserve(scan.vectors.size());
+	const double c = std::cos(robotPose.phi), s = std::sin(robotPose.phi);
+	auto tf = [&](const TPoint2D& p) {
+		return TPoint2D(robotPose.x + c * p.x - s * p.y, robotPose.y + s * p.x + c * p.y);
+	};
+	for (const auto& v : scan.vectors) segs.push_back({tf(v.start()), tf(v.end())});
+	const int64_t own = scan.scanIndex;
+	auto skip = [&](uint32_t slot) { return own >= 0 && vectors_[slot].scanIndex == own; };
+	return wiper_.apply(sensorPosition(robotPose, scan), segs, vectors_, index_, skip);
+}
+
+// Algorithm 2 with every correspondent, repeated while the merged vector finds new ones.
+void GlobalMap::insertVector(GridVector m)
+{
+	m.id = nextId_++;
+	if (cfg_.map.mergeOnInsert)
+	{
+		for (int round = 0; round < 8; ++round)
+		{
+			const std::vector<size_t> corr = correspondents(m);
+			if (corr.empty()) break;
+			std::vector<const GridVector*> parts{&m};
+			for (size_t s : corr) parts.push_back(&vectors_[s]);
+			GridVector merged = merger_.merge(parts);
+			merged.id = nextId_++;
+			++stats_.merges;
+			stats_.absorbed += corr.size();
+			removeSlots(corr);
+			m = std::move(merged);
+		}
+	}
+	addSlot(std::move(m));
+}
+
+// m_{i,t} = x_t (+) v_{i,t} (Sec. 3.2), after the Eq. 8 update by the same scan.
 void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
 {
+	stats_ = {};
+	stats_.wipe = wipe(robotPose, scan);
 	for (const auto& v : scan.vectors)
 	{
 		GridVector m = v.compose(robotPose);
 		m.scanIndex = scan.scanIndex;
 		m.timestamp = scan.timestamp;
-		m.id = nextId_++;
-		vectors_.push_back(std::move(m));
+		insertVector(std::move(m));
+		++stats_.inserted;
 	}
 }
 

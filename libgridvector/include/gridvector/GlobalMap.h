@@ -3,7 +3,10 @@
 
 #include <gridvector/GridVector.h>
 #include <gridvector/GridVectorConfig.h>
+#include <gridvector/ScanWipe.h>
 #include <gridvector/VectorExtractor.h>
+#include <gridvector/VectorIndex.h>
+#include <gridvector/VectorMerger.h>
 
 #include <mrpt/math/TPose2D.h>
 
@@ -11,9 +14,26 @@
 
 namespace gridvector
 {
-/** The global map: vectors in world coordinates. insertScan() does the
- * pose compounding m = x (+) v, the wipe-triangle update of Eq. 8 and, when
- * configured, correspondence + Algorithm 2 merging. */
+/** Output of GlobalMap::mergeAll(). */
+struct MergeResult
+{
+	std::vector<GridVector> vectors;  //!< the merged map {m_j} (Eq. 4)
+	/** sources[k]: ids of the input vectors that went into vectors[k]
+	 * (ascending; one id when the input had no correspondent). This is the
+	 * correspondence set M_cor of Eq. 25. */
+	std::vector<std::vector<uint64_t>> sources;
+};
+
+/** The global map: vectors in world coordinates.
+ *
+ * Sequential mode (insertScan): the new scan's wipe triangles update the
+ * vectors already in the map (Eq. 8, through the spatial index), then its
+ * vectors are compounded with the pose (m = x (+) v) and inserted, each merged
+ * with its correspondents by Algorithm 2 when map.merge_on_insert is set.
+ * Cost per scan: O(vectors near the robot), independent of the map's size.
+ *
+ * Batch mode (buildPerScan + mergeAll): the full product of Eq. 8 over all
+ * scans, then the merge of Eq. 4; used by the EM loop. */
 class GlobalMap
 {
    public:
@@ -24,18 +44,74 @@ class GlobalMap
 	size_t size() const { return vectors_.size(); }
 	const std::vector<GridVector>& vectors() const { return vectors_; }
 	const GridVectorConfig& config() const { return cfg_; }
-	void setConfig(const GridVectorConfig& cfg) { cfg_ = cfg; }
+	/** Also rebuilds the spatial index if its bucket size changed. */
+	void setConfig(const GridVectorConfig& cfg);
 
-	/** Insert V_t observed from robot pose x_t. */
+	/** Insert V_t observed from robot pose x_t (sequential mode, see above).
+	 * Vectors of the map whose scanIndex equals scan.scanIndex (>= 0) are not
+	 * wiped by it. New vectors get fresh ids; merged vectors get a fresh id and
+	 * scanIndex -1. */
 	void insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
 
-	/** Replace the content (deserialisation, EM rebuilds). */
+	/** Eq. 8 alone: the scan's triangles applied to the map, nothing inserted. */
+	ScanWipe::Stats wipe(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
+
+	/** Insert one vector already in global coordinates (merged with its
+	 * correspondents if map.merge_on_insert). Its id is replaced by a fresh one. */
+	void insertVector(GridVector m);
+
+	/** Replace the content (deserialisation, EM rebuilds); rebuilds the index. */
 	void setVectors(std::vector<GridVector> v);
 
+	/** Indices into vectors() of the map vectors corresponding to v (Sec. 3.2 criteria). */
+	std::vector<size_t> correspondents(const GridVector& v) const;
+
+	/** What the last insertScan() did. */
+	struct InsertStats
+	{
+		ScanWipe::Stats wipe;
+		size_t inserted = 0;  //!< new vectors of the scan
+		size_t merges = 0;  //!< Algorithm 2 runs
+		size_t absorbed = 0;  //!< map vectors merged away
+	};
+	const InsertStats& lastInsertStats() const { return stats_; }
+	const VectorIndex& index() const { return index_; }
+
+	/** Sensor position in the world: x_t (+) sensorOrigin (apex of the wipe triangles). */
+	static mrpt::math::TPoint2D sensorPosition(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
+
+	/** Batch Eq. 4 + Eq. 8: all m_{i,t} = x_t (+) v_{i,t}, unmerged, each updated
+	 * by the wipe triangles of every *other* scan (earlier and later: the full
+	 * product of Eq. 8; a scan's own vectors are counted by Algorithm 1).
+	 * Output order: scan by scan, vector by vector; id = position + 1;
+	 * scanIndex = scans[t].scanIndex if >= 0, else t; timestamp of the scan.
+	 * Throws std::invalid_argument if poses.size() != scans.size().
+	 * Cost: O(sum over scans of the vectors near each pose). */
+	static std::vector<GridVector> buildPerScan(const std::vector<mrpt::math::TPose2D>& poses,
+												 const std::vector<LocalScan>& scans,
+												 const GridVectorConfig& cfg);
+
+	/** Eq. 4 "merge": groups corresponding vectors (Sec. 3.2 criteria, grown
+	 * greedily from the longest vectors, each group's geometry re-estimated as
+	 * it grows, so chains along one wall join) and merges each group once by
+	 * Algorithm 2 (VectorMerger). A vector without correspondent is copied
+	 * unchanged (id and scanIndex kept); merged vectors get ids above the
+	 * largest input id and scanIndex -1. Output ordered by each group's first
+	 * input position. Inputs must have distinct ids. */
+	static MergeResult mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg);
+
    private:
+	void addSlot(GridVector m);
+	void removeSlots(std::vector<size_t> slots);
+	void rebuildIndex();
+
 	GridVectorConfig cfg_;
 	std::vector<GridVector> vectors_;
 	uint64_t nextId_ = 1;
+	VectorIndex index_;
+	ScanWipe wiper_;
+	VectorMerger merger_;
+	InsertStats stats_;
 };
 
 }  // namespace gridvector

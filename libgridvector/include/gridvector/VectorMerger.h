@@ -1,0 +1,58 @@
+// Sec. 3.2, Algorithm 2: merging corresponding grid vectors.
+#pragma once
+
+#include <gridvector/GridVector.h>
+#include <gridvector/GridVectorConfig.h>
+#include <gridvector/LineFit.h>
+
+#include <vector>
+
+namespace gridvector
+{
+/** Algorithm 2. The parts are summed into a temporary grid in global
+ * coordinates (aligned with the part holding most points, large enough for
+ * all parts): counts added, accumulators (x_acc, y_acc) transformed to global
+ * coordinates and added (lines 1-11). The line is fitted by least squares on
+ * the temporary cells' gravity centres (x_acc, y_acc)/n_acc, each weighted by
+ * its n_occupy/n_visit, so rarely occupied (dynamic) cells hardly pull it
+ * (lines 12-18). The endpoints are the extreme projections on the fitted line
+ * of the parts' endpoints and of the occupied cells (line 19), and the new
+ * grid is formed along the new vector (line 20).
+ *
+ * Posterior kept (Eq. 6): every cell's counts go into the new grid, so the
+ * totals of n_occupy, n_visit and n_acc are conserved exactly. Across the
+ * vector a cell's counts go to the row whose band contains its centre (no
+ * smearing of a wall row into the free row in front of it, however often a
+ * vector is re-merged); along the vector they are split between the two
+ * columns its extent overlaps, in proportion to the overlap. Where the parts'
+ * grids coincide with the new grid (same line, columns on the same lattice)
+ * every cell maps onto one cell and Eq. 6 is unchanged at every point; in
+ * general it is unchanged for every cell-sized average along the vector.
+ * Counts of cells that fall outside the new grid (parts at an angle) go to
+ * the nearest border cell. The gravity centre of each cell's points moves to
+ * the new cell containing it, at its exact position.
+ *
+ * Merging N parts at once equals N-1 pairwise merges of Algorithm 2 with one
+ * fit and one resampling instead of N-1 of each. */
+class VectorMerger
+{
+   public:
+	explicit VectorMerger(const GridVectorConfig& cfg = {});
+
+	GridVector merge(const GridVector& a, const GridVector& b) const;
+	/** Merge any number (>= 1) of corresponding vectors of the same grid
+	 * resolution; throws std::invalid_argument otherwise. The result has
+	 * scanIndex -1, the latest timestamp, mergedCount the sum, state Unknown
+	 * and id 0 (the caller numbers it). */
+	GridVector merge(const std::vector<const GridVector*>& parts) const;
+
+	/** Algorithm 2 lines 1-18 only: the weighted least-squares line of the
+	 * parts' temporary grid (normal to the right of the merged direction, as
+	 * GridVector::line()). weighted=false gives the plain fit, for comparison. */
+	Line2D fitLine(const std::vector<const GridVector*>& parts, bool weighted = true) const;
+
+   private:
+	GridVectorConfig cfg_;
+};
+
+}  // namespace gridvector

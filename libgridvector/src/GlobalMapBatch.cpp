@@ -1,0 +1,208 @@
+// Batch mode of the global map: the full Eq. 8 over per-scan vectors, and the Eq. 4 merge.
+#include <gridvector/Correspondence.h>
+#include <gridvector/GlobalMap.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace gridvector
+{
+using mrpt::math::TPoint2D;
+
+// Eq. 4 (unmerged) and Eq. 8: every scan's triangles over every other scan's vectors.
+std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TPose2D>& poses,
+												 const std::vector<LocalScan>& scans,
+												 const GridVectorConfig& cfg)
+{
+	if (poses.size() != scans.size())
+		throw std::invalid_argument("GlobalMap::buildPerScan: poses and scans differ in number");
+	std::vector<GridVector> all;
+	std::vector<size_t> first(scans.size() + 1, 0);
+	for (size_t t = 0; t < scans.size(); ++t)
+	{
+		first[t] = all.size();
+		for (const auto& v : scans[t].vectors)
+		{
+			GridVector m = v.compose(poses[t]);  // m_{i,t} = x_t (+) v_{i,t}
+			m.scanIndex = scans[t].scanIndex >= 0 ? scans[t].scanIndex : int64_t(t);
+			m.timestamp = scans[t].timestamp;
+			m.id = all.size() + 1;
+			all.push_back(std::move(m));
+		}
+	}
+	first[scans.size()] = all.size();
+
+	VectorIndex index(cfg.map.indexCellSize);
+	for (size_t i = 0; i < all.size(); ++i) index.insert(uint32_t(i), Box2D::of(all[i]));
+	ScanWipe wiper(cfg.map.hitBand);
+	std::vector<ScanWipe::Segment> segs;
+	for (size_t t = 0; t < scans.size(); ++t)
+	{
+		segs.clear();
+		for (size_t i = first[t]; i < first[t + 1]; ++i) segs.push_back({all[i].start(), all[i].end()});
+		const uint32_t lo = uint32_t(first[t]), hi = uint32_t(first[t + 1]);
+		wiper.apply(sensorPosition(poses[t], scans[t]), segs, all, index,
+					[&](uint32_t s) { return s >= lo && s < hi; });
+	}
+	return all;
+}
+
+namespace
+{
+/** A group of corresponding inputs with the geometry its merge would have,
+ * estimated from additive sums so that groups can grow in O(1). */
+struct Group
+{
+	std::vector<uint32_t> members;  //!< input positions
+	LineMoments moments;  //!< occupied cells' gravity centres, weighted by occupancy
+	TPoint2D dirRef;  //!< orientation of the first member
+	TPoint2D extA, extB;  //!< endpoints lying furthest out along the line
+	TPoint2D s, e;  //!< estimated merged vector
+	size_t firstInput = 0;
+	bool alive = true;
+
+	void estimate()
+	{
+		Line2D l;
+		TPoint2D d = dirRef;
+		TPoint2D p0 = extA;
+		if (moments.fit(l))
+		{
+			d = TPoint2D(-std::sin(l.theta), std::cos(l.theta));
+			if (d.x * dirRef.x + d.y * dirRef.y < 0) d = TPoint2D(-d.x, -d.y);
+			p0 = l.project(extA);
+		}
+		auto t = [&](const TPoint2D& p) { return (p.x - p0.x) * d.x + (p.y - p0.y) * d.y; };
+		const double ta = t(extA), tb = t(extB);
+		s = TPoint2D(p0.x + std::min(ta, tb) * d.x, p0.y + std::min(ta, tb) * d.y);
+		e = TPoint2D(p0.x + std::max(ta, tb) * d.x, p0.y + std::max(ta, tb) * d.y);
+	}
+
+	void absorb(const Group& o)
+	{
+		members.insert(members.end(), o.members.begin(), o.members.end());
+		moments.add(o.moments);
+		firstInput = std::min(firstInput, o.firstInput);
+		estimate();  // line from the summed moments
+		const TPoint2D d(e.x - s.x, e.y - s.y);
+		const TPoint2D cand[4] = {extA, extB, o.extA, o.extB};
+		double tmin = 1e300, tmax = -1e300;
+		for (const TPoint2D& p : cand)
+		{
+			const double t = (p.x - s.x) * d.x + (p.y - s.y) * d.y;
+			if (t < tmin) tmin = t, extA = p;
+			if (t > tmax) tmax = t, extB = p;
+		}
+		estimate();
+	}
+
+	Box2D box(double band) const
+	{
+		return Box2D{std::min(s.x, e.x), std::min(s.y, e.y), std::max(s.x, e.x), std::max(s.y, e.y)}
+			.expanded(band);
+	}
+};
+
+Group groupOf(const GridVector& v, uint32_t pos)
+{
+	Group g;
+	g.members = {pos};
+	g.firstInput = pos;
+	for (int r = 0; r < v.rows(); ++r)
+		for (int c = 0; c < v.cols(); ++c)
+			if (v.cell(r, c).n_acc > 0)
+			{
+				const TPoint2D p = v.cellMeanPoint(r, c);
+				g.moments.add(p.x, p.y, v.cell(r, c).occupancy());
+			}
+	g.dirRef = v.direction();
+	g.extA = v.start();
+	g.extB = v.end();
+	g.s = v.start();
+	g.e = v.end();
+	Line2D l;
+	if (!g.moments.fit(l))  // no points: the geometry itself
+	{
+		g.moments = {};
+		g.moments.add(v.start().x, v.start().y);
+		g.moments.add(v.end().x, v.end().y);
+	}
+	g.estimate();
+	return g;
+}
+}  // namespace
+
+// Eq. 4: {m_{i,t}} -> {m_j}; groups by the Sec. 3.2 criteria, each merged once by Algorithm 2.
+MergeResult GlobalMap::mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg)
+{
+	std::vector<uint32_t> order(vectors.size());
+	std::iota(order.begin(), order.end(), 0u);
+	std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
+		return vectors[a].length() > vectors[b].length();
+	});
+	double band = 0;
+	for (const auto& v : vectors) band = std::max(band, (v.halfWidth() + 0.5) * v.resolution());
+
+	std::vector<Group> groups;
+	groups.reserve(vectors.size());
+	VectorIndex index(cfg.map.indexCellSize);
+	std::vector<uint32_t> cand;
+	for (uint32_t pos : order)
+	{
+		Group g = groupOf(vectors[pos], pos);
+		for (int round = 0; round < 16; ++round)
+		{
+			cand.clear();
+			const double len = std::hypot(g.e.x - g.s.x, g.e.y - g.s.y);
+			index.query(g.box(band + correspondenceSearchMargin(len, cfg.map)), cand);
+			bool grew = false;
+			for (uint32_t k : cand)
+			{
+				if (!testCorrespondence(g.s, g.e, groups[k].s, groups[k].e, cfg.map).match) continue;
+				g.absorb(groups[k]);
+				groups[k].alive = false;
+				index.remove(k);
+				grew = true;
+			}
+			if (!grew) break;
+		}
+		groups.push_back(std::move(g));
+		index.insert(uint32_t(groups.size() - 1), groups.back().box(band));
+	}
+
+	std::vector<const Group*> live;
+	for (const Group& g : groups)
+		if (g.alive) live.push_back(&g);
+	std::sort(live.begin(), live.end(),
+			  [](const Group* a, const Group* b) { return a->firstInput < b->firstInput; });
+
+	uint64_t nextId = 1;
+	for (const auto& v : vectors) nextId = std::max(nextId, v.id + 1);
+	const VectorMerger merger(cfg);
+	MergeResult out;
+	out.vectors.reserve(live.size());
+	for (const Group* g : live)
+	{
+		std::vector<uint64_t> ids;
+		std::vector<const GridVector*> parts;
+		for (uint32_t m : g->members)
+		{
+			ids.push_back(vectors[m].id);
+			parts.push_back(&vectors[m]);
+		}
+		std::sort(ids.begin(), ids.end());
+		if (parts.size() == 1)
+			out.vectors.push_back(*parts.front());
+		else
+		{
+			out.vectors.push_back(merger.merge(parts));  // Algorithm 2, once per group
+			out.vectors.back().id = nextId++;
+		}
+		out.sources.push_back(std::move(ids));
+	}
+	return out;
+}
+
+}  // namespace gridvector

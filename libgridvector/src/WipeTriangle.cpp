@@ -1,0 +1,97 @@
+#include <gridvector/WipeTriangle.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridvector
+{
+using mrpt::math::TPoint2D;
+
+WipeTriangle::WipeTriangle(const TPoint2D& sensor, const TPoint2D& start, const TPoint2D& end,
+						   double hitBand)
+	: o_(sensor)
+{
+	const double ax = start.x - sensor.x, ay = start.y - sensor.y;
+	const double bx = end.x - sensor.x, by = end.y - sensor.y;
+	const double len = std::hypot(end.x - start.x, end.y - start.y);
+	const double det = ax * by - ay * bx;
+	// distance of O to the far edge's line: |det| / |E - S| (twice the area over the base)
+	const double dO = len > 0 ? std::abs(det) / len : 0.0;
+	if (len < 1e-9 || dO < 1e-6) return;
+	degenerate_ = false;
+	i00_ = by / det, i01_ = -bx / det;
+	i10_ = -ay / det, i11_ = ax / det;
+	sHit_ = 1.0 - hitBand / dO;
+	sMax_ = 1.0 + hitBand / dO;
+	const double xs[3] = {sensor.x, sensor.x + sMax_ * ax, sensor.x + sMax_ * bx};
+	const double ys[3] = {sensor.y, sensor.y + sMax_ * ay, sensor.y + sMax_ * by};
+	minX_ = *std::min_element(xs, xs + 3), maxX_ = *std::max_element(xs, xs + 3);
+	minY_ = *std::min_element(ys, ys + 3), maxY_ = *std::max_element(ys, ys + 3);
+}
+
+void WipeTriangle::coords(double x, double y, double& a, double& b) const
+{
+	const double px = x - o_.x, py = y - o_.y;
+	a = i00_ * px + i01_ * py;
+	b = i10_ * px + i11_ * py;
+}
+
+WipePart WipeTriangle::classify(const TPoint2D& p) const
+{
+	if (degenerate_) return WipePart::Outside;
+	double a, b;
+	coords(p.x, p.y, a, b);
+	constexpr double eps = 1e-12;
+	if (a < -eps || b < -eps || a + b > sMax_) return WipePart::Outside;
+	return a + b < sHit_ ? WipePart::Visited : WipePart::Hit;
+}
+
+namespace
+{
+/** Intersect [lo, hi] with {u : g0 + g1 u >= c}; false if it becomes empty. */
+bool clipLinear(double g0, double g1, double c, double& lo, double& hi)
+{
+	if (std::abs(g1) < 1e-15)
+	{
+		if (g0 < c) return false;
+	}
+	else if (g1 > 0)
+		lo = std::max(lo, (c - g0) / g1);
+	else
+		hi = std::min(hi, (c - g0) / g1);
+	return lo <= hi;
+}
+}  // namespace
+
+bool WipeTriangle::rowSpan(const GridVector& m, const TPoint2D& q, const TPoint2D& d, int& k0,
+						   int& k1) const
+{
+	const double res = m.resolution();
+	double a0, b0, a1, b1;
+	coords(q.x, q.y, a0, b0);
+	a1 = i00_ * d.x + i01_ * d.y;
+	b1 = i10_ * d.x + i11_ * d.y;
+	double lo = 0.5 * res, hi = (m.cols() - 0.5) * res;  // column centres
+	constexpr double eps = 1e-9;
+	if (!clipLinear(a0, a1, -eps, lo, hi) || !clipLinear(b0, b1, -eps, lo, hi) ||
+		!clipLinear(-(a0 + b0), -(a1 + b1), -sMax_ - eps, lo, hi))
+		return false;
+	k0 = std::max(0, int(std::ceil(lo / res - 0.5 - 1e-9)));
+	k1 = std::min(m.cols() - 1, int(std::floor(hi / res - 0.5 + 1e-9)));
+	return k0 <= k1;
+}
+
+// Eq. 8 / Fig. 2: part c -> n_occupy, n_visit += 1; part b -> n_visit += 1; part a untouched.
+size_t WipeTriangle::apply(GridVector& m) const
+{
+	size_t n = 0;
+	forEachCell(m, [&](int r, int c, WipePart part) {
+		GridCell& cell = m.cell(r, c);
+		if (part == WipePart::Hit) cell.n_occupy += 1.f;
+		cell.n_visit += 1.f;
+		++n;
+	});
+	return n;
+}
+
+}  // namespace gridvector

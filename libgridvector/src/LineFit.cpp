@@ -63,13 +63,16 @@ double LineMoments::residual(const Line2D& l) const
 		   l.rho * l.rho * w;
 }
 
-PrefixMoments::PrefixMoments(const std::vector<mrpt::math::TPoint2D>& pts)
+PrefixMoments::PrefixMoments(const std::vector<mrpt::math::TPoint2D>& pts) : PrefixMoments(pts, 0, pts.size()) {}
+
+PrefixMoments::PrefixMoments(const std::vector<mrpt::math::TPoint2D>& pts, size_t first, size_t last)
+	: off_(first)
 {
-	m_.resize(pts.size() + 1);
-	for (size_t i = 0; i < pts.size(); ++i)
+	m_.resize(last - first + 1);
+	for (size_t i = first; i < last; ++i)
 	{
-		m_[i + 1] = m_[i];
-		m_[i + 1].add(pts[i].x, pts[i].y);
+		m_[i - first + 1] = m_[i - first];
+		m_[i - first + 1].add(pts[i].x, pts[i].y);
 	}
 }
 

@@ -76,23 +76,25 @@ void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
 	}
 }
 
-bool VectorExtractor::fitSegment(const std::vector<TPoint2D>& pts, size_t i, size_t j,
-								 ScanSegment& seg) const
+bool VectorExtractor::fitSegment(const std::vector<TPoint2D>& pts, const PrefixMoments& pm, size_t i,
+								 size_t j, ScanSegment& seg, double maxResidual) const
 {
-	LineMoments m;
-	for (size_t k = i; k <= j; ++k) m.add(pts[k].x, pts[k].y);
+	const LineMoments m = pm.range(i, j + 1);
 	if (!m.fit(seg.line)) return false;
+	// RMS <= max: a joint fit whose RMS already exceeds the bound cannot pass it.
+	if (maxResidual > 0 && m.residual(seg.line) > maxResidual * maxResidual * m.w) return false;
 	seg.first = i;
 	seg.last = j;
 	seg.maxResidual = 0;
+	const double c = std::cos(seg.line.theta), s = std::sin(seg.line.theta), rho = seg.line.rho;
 	for (size_t k = i; k <= j; ++k)
-		seg.maxResidual = std::max(seg.maxResidual, std::abs(seg.line.distance(pts[k])));
-	return true;
+		seg.maxResidual = std::max(seg.maxResidual, std::abs(c * pts[k].x + s * pts[k].y - rho));
+	return maxResidual <= 0 || seg.maxResidual <= maxResidual;
 }
 
 // Split step: recursive end-point fit, splitting at the point farthest from the chord.
-void VectorExtractor::split(const std::vector<TPoint2D>& pts, size_t i, size_t j,
-							std::vector<ScanSegment>& out) const
+void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoments& pm, size_t i,
+							size_t j, std::vector<ScanSegment>& out) const
 {
 	if (j <= i) return;
 	const TPoint2D a = pts[i], b = pts[j];
@@ -109,14 +111,14 @@ void VectorExtractor::split(const std::vector<TPoint2D>& pts, size_t i, size_t j
 		}
 	}
 	ScanSegment seg;
-	if (best <= ext_.splitThreshold && fitSegment(pts, i, j, seg))
+	if (best <= ext_.splitThreshold && fitSegment(pts, pm, i, j, seg))
 	{
 		out.push_back(seg);
 		return;
 	}
 	if (k == i) k = (i + j) / 2;  // degenerate chord (coincident ends): bisect
-	split(pts, i, k, out);
-	split(pts, k, j, out);
+	split(pts, pm, i, k, out);
+	split(pts, pm, k, j, out);
 }
 
 // Merge step: neighbouring segments whose joint least-squares fit stays tight.
@@ -124,7 +126,8 @@ std::vector<ScanSegment> VectorExtractor::splitAndMerge(const std::vector<TPoint
 														size_t first, size_t last) const
 {
 	std::vector<ScanSegment> segs;
-	split(pts, first, last, segs);
+	const PrefixMoments pm(pts, first, last + 1);
+	split(pts, pm, first, last, segs);
 	bool merged = true;
 	while (merged && segs.size() > 1)
 	{
@@ -132,8 +135,7 @@ std::vector<ScanSegment> VectorExtractor::splitAndMerge(const std::vector<TPoint
 		for (size_t s = 0; s + 1 < segs.size(); ++s)
 		{
 			ScanSegment joint;
-			if (fitSegment(pts, segs[s].first, segs[s + 1].last, joint) &&
-				joint.maxResidual <= ext_.mergeThreshold)
+			if (fitSegment(pts, pm, segs[s].first, segs[s + 1].last, joint, ext_.mergeThreshold))
 			{
 				segs[s] = joint;
 				segs.erase(segs.begin() + long(s) + 1);

@@ -38,10 +38,14 @@ class PrefixMoments
 {
    public:
 	explicit PrefixMoments(const std::vector<mrpt::math::TPoint2D>& pts);
-	LineMoments range(size_t i, size_t j) const { return m_[j].minus(m_[i]); }
+	/** Only the points [first, last) of pts; range() still takes indices into pts. */
+	PrefixMoments(const std::vector<mrpt::math::TPoint2D>& pts, size_t first, size_t last);
+	/** Moments of the points [i, j) (indices into the original vector). */
+	LineMoments range(size_t i, size_t j) const { return m_[j - off_].minus(m_[i - off_]); }
 
    private:
 	std::vector<LineMoments> m_;
+	size_t off_ = 0;
 };
 
 }  // namespace gridvector

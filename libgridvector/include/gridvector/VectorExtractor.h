@@ -59,10 +59,12 @@ class VectorExtractor
 	const GridOptions& gridOptions() const { return grid_; }
 
    private:
-	void split(const std::vector<mrpt::math::TPoint2D>& pts, size_t i, size_t j,
-			   std::vector<ScanSegment>& out) const;
-	bool fitSegment(const std::vector<mrpt::math::TPoint2D>& pts, size_t i, size_t j,
-					ScanSegment& seg) const;
+	void split(const std::vector<mrpt::math::TPoint2D>& pts, const PrefixMoments& pm, size_t i,
+			   size_t j, std::vector<ScanSegment>& out) const;
+	/** LS fit of [i, j] from prefix moments; false if degenerate or, when
+	 * maxResidual > 0, if the fit's residual provably exceeds it. */
+	bool fitSegment(const std::vector<mrpt::math::TPoint2D>& pts, const PrefixMoments& pm, size_t i,
+					size_t j, ScanSegment& seg, double maxResidual = 0) const;
 
 	ExtractionOptions ext_;
 	GridOptions grid_;

@@ -212,9 +212,15 @@ GridVector VectorMerger::merge(const std::vector<const GridVector*>& parts) cons
 	go.halfWidth = 0;
 	for (const GridVector* p : parts) go.halfWidth = std::max(go.halfWidth, p->halfWidth());
 	GridVector out(s, e, go);
-	for (auto& c : out.cells()) c = GridCell{0.f, 0.f, 0.f, 0.f, 0.f};
 	Lattice lat;
 	lat.f = SegFrame::of(s, out.direction());
+	// columns: the new length, or further if a part's cells reach beyond the end
+	double uMax = 0;
+	for (const GridVector* p : parts)
+		forCellsIn(*p, lat, [&](int, int, const GridCell&, double u, double) { uMax = std::max(uMax, u); });
+	const int needCols = int(std::ceil((uMax + 0.5 * go.resolution) / go.resolution - 1e-6));
+	if (needCols > out.cols()) out.setGeometry(s, e, needCols);
+	for (auto& c : out.cells()) c = GridCell{0.f, 0.f, 0.f, 0.f, 0.f};
 	lat.res = go.resolution;
 	lat.rowMin = -go.halfWidth;
 	lat.rows = out.rows();

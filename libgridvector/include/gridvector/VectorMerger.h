@@ -28,8 +28,9 @@ namespace gridvector
  * grids coincide with the new grid (same line, columns on the same lattice)
  * every cell maps onto one cell and Eq. 6 is unchanged at every point; in
  * general it is unchanged for every cell-sized average along the vector.
- * Counts of cells that fall outside the new grid (parts at an angle) go to
- * the nearest border cell. The gravity centre of each cell's points moves to
+ * The new grid has the columns of the new length, more if a part's cells
+ * reach beyond the new end; counts of cells that still fall outside it
+ * (parts at an angle) go to the nearest border cell. The gravity centre of each cell's points moves to
  * the new cell containing it, at its exact position.
  *
  * Merging N parts at once equals N-1 pairwise merges of Algorithm 2 with one

@@ -1,0 +1,88 @@
+// Sec. 3.2: the three correspondence criteria.
+#include <gridvector/Correspondence.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace gridvector;
+using mrpt::math::TPoint2D;
+
+namespace
+{
+GridVector vec(double x1, double y1, double x2, double y2) { return GridVector({x1, y1}, {x2, y2}, GridOptions{}); }
+TPoint2D rot(const TPoint2D& p, double a, const TPoint2D& c)
+{
+	const double dx = p.x - c.x, dy = p.y - c.y;
+	return {c.x + std::cos(a) * dx - std::sin(a) * dy, c.y + std::sin(a) * dx + std::cos(a) * dy};
+}
+}  // namespace
+
+TEST(Correspondence, CollinearOverlappingMatch)
+{
+	const MapOptions o;
+	EXPECT_TRUE(corresponds(vec(0, 0, 2, 0), vec(1, 0, 3, 0), o));
+	EXPECT_TRUE(corresponds(vec(0, 0, 2, 0), vec(0.5, 0.1, 1.5, 0.1), o));  // 10 cm apart
+}
+
+TEST(Correspondence, OppositeDirectionsNeverMatch)
+{
+	const MapOptions o;
+	// the two faces of a thin wall: same line, open space on different sides
+	EXPECT_FALSE(corresponds(vec(0, 0, 2, 0), vec(2, 0, 0, 0), o));
+	MapOptions loose;
+	loose.maxDirectionDiffDeg = 360;
+	loose.maxThetaDiffDeg = 360;
+	EXPECT_FALSE(corresponds(vec(0, 0, 2, 0), vec(2, 0, 0, 0), loose));
+}
+
+TEST(Correspondence, Criterion1And2Angle)
+{
+	const MapOptions o;  // 10 deg
+	const TPoint2D c(1, 0);
+	auto rotated = [&](double deg) {
+		const TPoint2D s = rot({0, 0}, deg * M_PI / 180, c), e = rot({2, 0}, deg * M_PI / 180, c);
+		return GridVector(s, e, GridOptions{});
+	};
+	EXPECT_TRUE(corresponds(vec(0, 0, 2, 0), rotated(8), o));
+	EXPECT_FALSE(corresponds(vec(0, 0, 2, 0), rotated(12), o));
+	const auto t = testCorrespondence(vec(0, 0, 2, 0), rotated(8), o);
+	EXPECT_NEAR(t.dPsi, 8 * M_PI / 180, 1e-9);
+	EXPECT_NEAR(t.dTheta, 8 * M_PI / 180, 1e-9);
+}
+
+TEST(Correspondence, Criterion2Offset)
+{
+	const MapOptions o;  // 0.15 m
+	EXPECT_TRUE(corresponds(vec(0, 0, 2, 0), vec(0, 0.14, 2, 0.14), o));
+	EXPECT_FALSE(corresponds(vec(0, 0, 2, 0), vec(0, 0.16, 2, 0.16), o));
+	EXPECT_NEAR(testCorrespondence(vec(0, 0, 2, 0), vec(0, 0.14, 2, 0.14), o).dRho, 0.14, 1e-12);
+}
+
+TEST(Correspondence, Criterion3CentreDistance)
+{
+	const MapOptions o;
+	// centres 2.9 apart, half the summed lengths 3: match; 3.1 apart: no
+	EXPECT_TRUE(corresponds(vec(0, 0, 3, 0), vec(2.9, 0, 5.9, 0), o));
+	EXPECT_FALSE(corresponds(vec(0, 0, 3, 0), vec(3.1, 0, 6.1, 0), o));
+	EXPECT_FALSE(corresponds(vec(0, 0, 3, 0), vec(3.0, 0, 6.0, 0), o));  // touching ends: strict
+}
+
+TEST(Correspondence, IndependentOfWhereTheWorldOriginIs)
+{
+	// Two pieces of one wall 1 km from the origin, 3 deg apart: locally 2 cm apart.
+	const MapOptions o;
+	const TPoint2D c(1000, 0);
+	const GridVector a({1000, -1}, {1000, 1}, GridOptions{});
+	const GridVector b(rot({1000, -1}, 3 * M_PI / 180, c), rot({1000, 1}, 3 * M_PI / 180, c), GridOptions{});
+	EXPECT_TRUE(corresponds(a, b, o));
+	// rho from the world origin would differ by ~1000 * (1 - cos 3deg) ... and far more off-axis
+	EXPECT_GT(std::abs(a.line().rho - b.line().rho), 0.15);
+}
+
+TEST(Correspondence, SearchMarginGrowsWithLength)
+{
+	const MapOptions o;
+	EXPECT_NEAR(correspondenceSearchMargin(0, o), o.maxRhoDiff, 1e-12);
+	EXPECT_GT(correspondenceSearchMargin(10, o), correspondenceSearchMargin(1, o));
+}

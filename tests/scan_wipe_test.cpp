@@ -1,0 +1,67 @@
+// Eq. 8 for one scan: every triangle of the scan over the map, once per cell per scan.
+#include <gridvector/ScanWipe.h>
+
+#include <gtest/gtest.h>
+
+using namespace gridvector;
+using mrpt::math::TPoint2D;
+
+namespace
+{
+VectorIndex indexOf(const std::vector<GridVector>& map)
+{
+	VectorIndex idx(2.0);
+	for (size_t i = 0; i < map.size(); ++i) idx.insert(uint32_t(i), Box2D::of(map[i]));
+	return idx;
+}
+}  // namespace
+
+TEST(ScanWipe, CellOnSharedRayCountedOncePerScan)
+{
+	// Two walls meeting at a corner (0, 2); a map vector along x = 0 lies on the shared ray.
+	std::vector<GridVector> map{GridVector({0, 0.5}, {0, 1.5}, GridOptions{})};
+	const VectorIndex idx = indexOf(map);
+	ScanWipe w(0.05);
+	const std::vector<ScanWipe::Segment> scan{{{1, 2}, {0, 2}}, {{0, 2}, {-1, 2}}};
+	const auto st = w.apply({0, 0}, scan, map, idx);
+	EXPECT_EQ(st.triangles, 2u);
+	EXPECT_EQ(st.vectorsTouched, 1u);
+	// the middle row (on the ray) is in both triangles, but counted once
+	for (int c = 0; c < map[0].cols(); ++c) EXPECT_FLOAT_EQ(map[0].cell(1, c).n_visit, 2.f);
+}
+
+TEST(ScanWipe, HitWinsOverVisit)
+{
+	// Two triangles sharing the ray x = 0: the first ends on the wall y = 2,
+	// the second on a wall further away (y = 2.5). The map vector on y = 2 has
+	// a cell centred on the shared ray: hit by the first, passed by the second.
+	std::vector<GridVector> map{GridVector({0.55, 2}, {-0.45, 2}, GridOptions{})};
+	const VectorIndex idx = indexOf(map);
+	ScanWipe w(0.05);
+	const std::vector<ScanWipe::Segment> scan{{{1, 2}, {0, 2}}, {{0, 2.5}, {-1, 2.5}}};
+	w.apply({0, 0}, scan, map, idx);
+	ASSERT_EQ(map[0].cols(), 10);
+	for (int c = 0; c < map[0].cols(); ++c)
+	{
+		const GridCell& cell = map[0].cell(1, c);
+		EXPECT_FLOAT_EQ(cell.n_visit, 2.f) << c;
+		EXPECT_FLOAT_EQ(cell.n_occupy, c <= 5 ? 1.5f : 0.5f) << c;  // col 5 centred on x = 0
+	}
+}
+
+TEST(ScanWipe, SkippedVectorsAndFarVectorsUntouched)
+{
+	std::vector<GridVector> map{GridVector({1, 2}, {-1, 2}, GridOptions{}),
+								GridVector({1, 2}, {-1, 2}, GridOptions{}),
+								GridVector({101, 2}, {99, 2}, GridOptions{})};
+	const VectorIndex idx = indexOf(map);
+	ScanWipe w(0.05);
+	const auto st = w.apply({0, 0}, std::vector<ScanWipe::Segment>{{{1, 2}, {-1, 2}}}, map, idx,
+							[](uint32_t s) { return s == 1; });
+	EXPECT_EQ(st.candidates, 2u);  // the far vector never comes out of the index
+	EXPECT_GT(map[0].totalVisit(), GridVector({1, 2}, {-1, 2}, GridOptions{}).totalVisit());
+	EXPECT_FLOAT_EQ(map[1].totalVisit(), float(map[1].cells().size()));
+	EXPECT_FLOAT_EQ(map[2].totalVisit(), float(map[2].cells().size()));
+	EXPECT_EQ(st.cellsHit, size_t(map[0].cols()));
+	EXPECT_EQ(st.cellsVisited, size_t(map[0].cols()));
+}

@@ -1,0 +1,76 @@
+// Spatial hash over vector boxes: queries equal brute force through inserts, moves and removals.
+#include <gridvector/VectorIndex.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+
+using namespace gridvector;
+
+TEST(VectorIndex, BoxOfCoversTheWholeGridBand)
+{
+	GridOptions g;
+	g.resolution = 0.1;
+	g.halfWidth = 1;
+	const GridVector v({0, 0}, {2, 0}, g);
+	const Box2D b = Box2D::of(v);
+	EXPECT_NEAR(b.minX, 0, 1e-12);
+	EXPECT_NEAR(b.maxX, 2.0, 1e-12);
+	EXPECT_NEAR(b.minY, -0.15, 1e-12);
+	EXPECT_NEAR(b.maxY, 0.15, 1e-12);
+}
+
+TEST(VectorIndex, QueryMatchesBruteForce)
+{
+	std::mt19937 rng(3);
+	std::uniform_real_distribution<double> U(-50, 50), L(0, 6);
+	VectorIndex idx(2.0);
+	std::vector<Box2D> boxes(500);
+	std::vector<bool> live(500, false);
+	auto randomBox = [&] {
+		const double x = U(rng), y = U(rng);
+		return Box2D{x, y, x + L(rng), y + L(rng)};
+	};
+	for (uint32_t i = 0; i < 500; ++i)
+	{
+		boxes[i] = randomBox();
+		idx.insert(i, boxes[i]);
+		live[i] = true;
+	}
+	for (uint32_t i = 0; i < 500; i += 3)  // remove a third, move a third
+	{
+		idx.remove(i);
+		live[i] = false;
+		if (i + 1 < 500)
+		{
+			boxes[i + 1] = randomBox();
+			idx.insert(i + 1, boxes[i + 1]);
+		}
+	}
+	EXPECT_EQ(idx.size(), size_t(std::count(live.begin(), live.end(), true)));
+	for (int q = 0; q < 300; ++q)
+	{
+		Box2D qb = randomBox();
+		if (q % 50 == 0) qb = {-1e4, -1e4, 1e4, 1e4};  // wider than the map
+		std::vector<uint32_t> got;
+		idx.query(qb, got);
+		std::sort(got.begin(), got.end());
+		std::vector<uint32_t> want;
+		for (uint32_t i = 0; i < 500; ++i)
+			if (live[i] && boxes[i].intersects(qb)) want.push_back(i);
+		EXPECT_EQ(got, want) << q;
+	}
+}
+
+TEST(VectorIndex, NegativeAndLargeCoordinates)
+{
+	VectorIndex idx(1.0);
+	idx.insert(0, {-1e5, -1e5, -1e5 + 1, -1e5 + 1});
+	idx.insert(1, {1e5, 1e5, 1e5 + 1, 1e5 + 1});
+	std::vector<uint32_t> out;
+	idx.query({-1e5 - 0.5, -1e5 - 0.5, -1e5 + 0.5, -1e5 + 0.5}, out);
+	ASSERT_EQ(out.size(), 1u);
+	EXPECT_EQ(out[0], 0u);
+	EXPECT_THROW(VectorIndex(0.0), std::invalid_argument);
+}

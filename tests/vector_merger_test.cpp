@@ -1,0 +1,230 @@
+// Algorithm 2: merging keeps the Eq. 6 posterior and the totals; weighted refit; union extent.
+#include <gridvector/VectorMerger.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/math/wrap2pi.h>
+
+#include <cmath>
+#include <random>
+
+using namespace gridvector;
+using mrpt::math::TPoint2D;
+
+namespace
+{
+/** Eq. 6 at p over a set of vectors: (sum n_occupy, sum n_visit) of the cells containing p. */
+std::pair<double, double> eq6(const std::vector<const GridVector*>& vs, const TPoint2D& p)
+{
+	double o = 0, v = 0;
+	for (const GridVector* g : vs)
+	{
+		int r, c;
+		if (!g->cellOf(p, r, c)) continue;
+		o += g->cell(r, c).n_occupy;
+		v += g->cell(r, c).n_visit;
+	}
+	return {o, v};
+}
+
+/** A wall vector from s to e with beam endpoints on the line (optional noise)
+ * and varied counts, as if wiped by other scans. */
+GridVector wall(TPoint2D s, TPoint2D e, double noise, unsigned seed)
+{
+	GridVector v(s, e, GridOptions{});
+	std::mt19937 rng(seed);
+	std::normal_distribution<double> N(0, noise > 0 ? noise : 1e-12);
+	std::uniform_int_distribution<int> K(0, 6);
+	const TPoint2D d = v.direction(), n = v.leftNormal();
+	for (double u = 0.01; u < v.length(); u += 0.02)
+	{
+		const double w = noise > 0 ? N(rng) : 0.0;
+		v.addEndpoint({s.x + u * d.x + w * n.x, s.y + u * d.y + w * n.y});
+	}
+	for (auto& c : v.cells())
+	{
+		const int k = K(rng);  // wipes: some hits, some passes
+		c.n_visit += float(k);
+		c.n_occupy += float(k % 3);
+	}
+	return v;
+}
+
+void expectTotalsConserved(const std::vector<const GridVector*>& parts, const GridVector& m)
+{
+	double o = 0, v = 0, n = 0;
+	for (const GridVector* p : parts) o += p->totalOccupy(), v += p->totalVisit(), n += p->totalPoints();
+	EXPECT_NEAR(m.totalOccupy(), o, 1e-4 * o);
+	EXPECT_NEAR(m.totalVisit(), v, 1e-4 * v);
+	EXPECT_NEAR(m.totalPoints(), n, 1e-6);
+}
+
+double pointsMeanOffset(const GridVector& m)  // mean |distance| of the cells' gravity centres to y = 0
+{
+	double s = 0, w = 0;
+	for (int r = 0; r < m.rows(); ++r)
+		for (int c = 0; c < m.cols(); ++c)
+			if (m.cell(r, c).n_acc > 0)
+			{
+				s += m.cell(r, c).n_acc * m.cellMeanPoint(r, c).y;
+				w += m.cell(r, c).n_acc;
+			}
+	return s / w;
+}
+}  // namespace
+
+TEST(VectorMerger, CollinearOverlapGivesUnionExtent)
+{
+	const GridVector a = wall({0, 0}, {2, 0}, 0, 1), b = wall({1, 0}, {3, 0}, 0, 2);
+	const GridVector m = VectorMerger().merge(a, b);
+	EXPECT_NEAR(m.start().x, 0, 1e-9);
+	EXPECT_NEAR(m.start().y, 0, 1e-9);
+	EXPECT_NEAR(m.end().x, 3, 1e-9);
+	EXPECT_NEAR(m.end().y, 0, 1e-9);
+	EXPECT_EQ(m.cols(), 30);
+	EXPECT_EQ(m.scanIndex, -1);
+	EXPECT_EQ(m.mergedCount, 2u);
+	expectTotalsConserved({&a, &b}, m);
+}
+
+TEST(VectorMerger, AlignedGridsKeepEq6AtEveryPoint)
+{
+	const GridVector a = wall({0, 0}, {2, 0}, 0, 1), b = wall({1, 0}, {3.3, 0}, 0, 2);
+	const GridVector m = VectorMerger().merge(a, b);
+	std::mt19937 rng(5);
+	std::uniform_real_distribution<double> X(-0.2, 3.5), Y(-0.2, 0.2);
+	int compared = 0;
+	for (int i = 0; i < 5000; ++i)
+	{
+		const TPoint2D p(X(rng), Y(rng));
+		const auto before = eq6({&a, &b}, p), after = eq6({&m}, p);
+		if (before.second == 0)
+		{
+			EXPECT_EQ(after.second, 0) << p.x << " " << p.y;  // no new knowledge appears
+			continue;
+		}
+		ASSERT_GT(after.second, 0) << p.x << " " << p.y;
+		EXPECT_NEAR(after.first / after.second, before.first / before.second, 1e-5) << p.x << " " << p.y;
+		EXPECT_NEAR(after.second, before.second, 1e-4);
+		++compared;
+	}
+	EXPECT_GT(compared, 3000);
+}
+
+TEST(VectorMerger, OffsetGridsKeepEq6AveragedOverEachCell)
+{
+	// b's columns are shifted by half a cell: its counts are split evenly along
+	// the vector. Eq. 6 with the counts averaged over each new cell agrees.
+	const GridVector a = wall({0, 0}, {2, 0}, 0, 1), b = wall({1.05, 0}, {3.05, 0}, 0, 2);
+	const GridVector m = VectorMerger().merge(a, b);
+	ASSERT_NEAR(m.start().y, 0, 1e-9);
+	ASSERT_NEAR(m.end().y, 0, 1e-9);
+	for (int r = 0; r < m.rows(); ++r)
+		for (int c = 0; c < m.cols(); ++c)
+		{
+			const TPoint2D ctr = m.cellCentre(r, c);
+			double o = 0, v = 0;
+			for (int k = 0; k < 10; ++k)  // sub-samples across the cell's length
+			{
+				const auto ov = eq6({&a, &b}, {ctr.x - 0.045 + 0.01 * k, ctr.y});
+				o += ov.first, v += ov.second;
+			}
+			const GridCell& cell = m.cell(r, c);
+			EXPECT_NEAR(cell.n_visit, v / 10, 1e-4) << r << " " << c;
+			EXPECT_NEAR(cell.n_occupy, o / 10, 1e-4) << r << " " << c;
+		}
+	expectTotalsConserved({&a, &b}, m);
+}
+
+TEST(VectorMerger, NoisyWallsKeepDecisionsAndTotals)
+{
+	// Real parts: noisy points, so the refitted line differs slightly from both.
+	const GridVector a = wall({0, 0}, {4, 0.01}, 0.01, 11), b = wall({1.0, 0.005}, {5.2, 0.0}, 0.01, 12);
+	const GridVector m = VectorMerger().merge(a, b);
+	expectTotalsConserved({&a, &b}, m);
+	double sumErr = 0;
+	int n = 0;
+	for (int r = 0; r < m.rows(); ++r)
+		for (int c = 0; c < m.cols(); ++c)
+		{
+			const TPoint2D p = m.cellCentre(r, c);
+			const auto before = eq6({&a, &b}, p);
+			if (before.second == 0) continue;
+			const double pb = before.first / before.second, pa = m.cell(r, c).occupancy();
+			EXPECT_NEAR(pa, pb, 0.06) << r << " " << c;
+			if (std::abs(pb - 0.5) > 0.06)
+			{
+				EXPECT_EQ(pa > 0.5, pb > 0.5) << r << " " << c;
+			}
+			sumErr += std::abs(pa - pb);
+			++n;
+		}
+	EXPECT_GT(n, 100);
+	EXPECT_LT(sumErr / n, 0.01);
+}
+
+TEST(VectorMerger, RotatedPartsConserveTotals)
+{
+	const GridVector a = wall({0, 0}, {3, 0}, 0.01, 1);
+	const double t = 6 * M_PI / 180;
+	const GridVector b = wall({0.5, 0.02}, {0.5 + 2.5 * std::cos(t), 0.02 + 2.5 * std::sin(t)}, 0.01, 2);
+	const GridVector c = wall({2, -0.03}, {4, -0.02}, 0.01, 3);
+	const GridVector m = VectorMerger().merge({&a, &b, &c});
+	expectTotalsConserved({&a, &b, &c}, m);
+	EXPECT_EQ(m.mergedCount, 3u);
+	EXPECT_GT(m.length(), 3.9);
+	EXPECT_LT(std::abs(m.psi()), 4 * M_PI / 180);
+	// every point keeps its exact position: the mean of all points is unchanged
+	double sx = 0, n = 0;
+	for (const GridVector* p : {&a, &b, &c})
+		for (int r = 0; r < p->rows(); ++r)
+			for (int k = 0; k < p->cols(); ++k)
+				if (p->cell(r, k).n_acc > 0)
+				{
+					sx += p->cell(r, k).n_acc * p->cellMeanPoint(r, k).x;
+					n += p->cell(r, k).n_acc;
+				}
+	double mx = 0, mn = 0;
+	for (int r = 0; r < m.rows(); ++r)
+		for (int k = 0; k < m.cols(); ++k)
+			if (m.cell(r, k).n_acc > 0)
+			{
+				mx += m.cell(r, k).n_acc * m.cellMeanPoint(r, k).x;
+				mn += m.cell(r, k).n_acc;
+			}
+	EXPECT_NEAR(mx / mn, sx / n, 1e-4);
+}
+
+TEST(VectorMerger, DynamicBlobDoesNotPullTheLine)
+{
+	// Two views of the wall y = 0. In b's scan someone stood 10 cm in front of
+	// the wall over x in [1, 2.5]; 50 later scans saw through those cells, so
+	// they hold many points but a low n_occupy / n_visit.
+	GridVector a = wall({0, 0}, {4, 0}, 0.005, 1);
+	GridVector b(TPoint2D(0, 0), TPoint2D(4, 0), GridOptions{});
+	for (double x = 0.01; x < 4; x += 0.02) b.addEndpoint({x, 0.0});
+	for (double x = 1.01; x < 2.5; x += 0.02) b.addEndpoint({x, 0.1});
+	for (int c = 10; c < 25; ++c) b.cell(2, c).n_visit += 50;
+	const VectorMerger mg;
+	const Line2D weighted = mg.fitLine({&a, &b}, true), plain = mg.fitLine({&a, &b}, false);
+	// the line y = 0 with the normal to the right of +x: theta = -pi/2, rho = 0
+	EXPECT_NEAR(std::abs(mrpt::math::wrapToPi(weighted.theta + M_PI / 2)), 0.0, 0.002);
+	// Weights are the paper's n_occupy/n_visit (~0.1 here against ~0.9 on the
+	// wall): the blob's pull is cut by about that factor, not removed.
+	EXPECT_GT(std::abs(plain.rho), 0.02);  // the plain fit is pulled 2+ cm towards the blob
+	EXPECT_LT(std::abs(weighted.rho), 0.008);
+	EXPECT_LT(std::abs(weighted.rho), 0.3 * std::abs(plain.rho));
+	const GridVector m = mg.merge(a, b);
+	EXPECT_LT(std::abs(m.start().y), 0.008);
+	EXPECT_LT(std::abs(m.end().y), 0.008);
+	expectTotalsConserved({&a, &b}, m);
+	EXPECT_GT(pointsMeanOffset(m), 0.0);  // the blob's points are still there, at their place
+}
+
+TEST(VectorMerger, RejectsMixedResolutions)
+{
+	GridOptions g;
+	g.resolution = 0.05;
+	const GridVector a({0, 0}, {1, 0}, GridOptions{}), b({0, 0}, {1, 0}, g);
+	EXPECT_THROW(VectorMerger().merge(a, b), std::invalid_argument);
+	EXPECT_THROW(VectorMerger().merge(std::vector<const GridVector*>{}), std::invalid_argument);
+}

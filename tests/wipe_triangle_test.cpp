@@ -1,0 +1,138 @@
+// Eq. 8, Fig. 2: wipe triangle parts a/b/c and its region-by-region rasterisation.
+#include <gridvector/WipeTriangle.h>
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace gridvector;
+using mrpt::math::TPoint2D;
+
+namespace
+{
+// A wall at y = 2 seen from the origin: open space (the sensor) on its left.
+const TPoint2D O(0, 0), S(1, 2), E(-1, 2);
+
+GridOptions grid01()
+{
+	GridOptions g;
+	g.resolution = 0.1;
+	g.halfWidth = 1;
+	return g;
+}
+}  // namespace
+
+TEST(WipeTriangle, ClassifiesPartsABC)
+{
+	const WipeTriangle t(O, S, E, 0.05);
+	ASSERT_FALSE(t.degenerate());
+	EXPECT_EQ(t.classify({0, 1.0}), WipePart::Visited);  // between sensor and wall: b
+	EXPECT_EQ(t.classify({0, 1.9}), WipePart::Visited);
+	EXPECT_EQ(t.classify({0, 2.0}), WipePart::Hit);  // on the wall: c
+	EXPECT_EQ(t.classify({0, 1.96}), WipePart::Hit);
+	EXPECT_EQ(t.classify({0, 2.04}), WipePart::Hit);  // just behind, within the band: c
+	EXPECT_EQ(t.classify({0, 2.1}), WipePart::Outside);  // behind the wall: a
+	EXPECT_EQ(t.classify({0, -0.5}), WipePart::Outside);  // behind the sensor
+	EXPECT_EQ(t.classify({1.5, 1.0}), WipePart::Outside);  // beside the fan
+	EXPECT_EQ(t.classify({0.5, 1.0}), WipePart::Visited);  // on the fan's edge ray
+	EXPECT_EQ(t.classify({0, 0}), WipePart::Visited);  // the apex itself
+}
+
+TEST(WipeTriangle, DegenerateWhenSensorOnTheLine)
+{
+	EXPECT_TRUE(WipeTriangle({3, 2}, S, E, 0.05).degenerate());
+	EXPECT_TRUE(WipeTriangle(O, S, S, 0.05).degenerate());
+	const WipeTriangle t({3, 2}, S, E, 0.05);
+	EXPECT_EQ(t.classify({0, 2}), WipePart::Outside);
+}
+
+TEST(WipeTriangle, CoincidentWallRowsGetHitVisitUntouched)
+{
+	// The same wall already in the map: row h on it, row h+1 in front (left,
+	// towards the sensor), row h-1 behind.
+	GridVector m(S, E, grid01());
+	const std::vector<GridCell> before = m.cells();
+	const WipeTriangle t(O, S, E, 0.05);
+	const size_t n = t.apply(m);
+	EXPECT_EQ(n, size_t(2 * m.cols()));
+	for (int c = 0; c < m.cols(); ++c)
+	{
+		const auto& hit = m.cell(1, c);
+		EXPECT_FLOAT_EQ(hit.n_occupy, before[size_t(m.cols() + c)].n_occupy + 1) << c;
+		EXPECT_FLOAT_EQ(hit.n_visit, 2.f);
+		EXPECT_FLOAT_EQ(m.cell(2, c).n_occupy, 0.5f);  // in front: b
+		EXPECT_FLOAT_EQ(m.cell(2, c).n_visit, 2.f);
+		EXPECT_FLOAT_EQ(m.cell(0, c).n_visit, 1.f);  // behind: a
+		EXPECT_FLOAT_EQ(m.cell(0, c).n_occupy, 0.5f);
+	}
+}
+
+TEST(WipeTriangle, ObjectInsideTheFanIsOnlyVisited)
+{
+	// A vector crossing the fan between sensor and wall (someone who left).
+	GridVector person({-0.3, 1.0}, {0.3, 1.0}, grid01());
+	const WipeTriangle t(O, S, E, 0.05);
+	t.apply(person);
+	for (const auto& c : person.cells())
+	{
+		EXPECT_FLOAT_EQ(c.n_occupy, 0.5f);
+		EXPECT_FLOAT_EQ(c.n_visit, 2.f);
+	}
+}
+
+TEST(WipeTriangle, PartialOverlapOnlyTouchesCellsInside)
+{
+	// A long vector at y = 1 from x = -3 to 3: only the part within |x| <= 0.5 is in the fan.
+	GridVector m({3, 1}, {-3, 1}, grid01());
+	const WipeTriangle t(O, S, E, 0.05);
+	t.apply(m);
+	for (int r = 0; r < m.rows(); ++r)
+		for (int c = 0; c < m.cols(); ++c)
+		{
+			const TPoint2D p = m.cellCentre(r, c);
+			const bool inside = std::abs(p.x) <= p.y / 2 + 1e-9;
+			EXPECT_FLOAT_EQ(m.cell(r, c).n_visit, inside ? 2.f : 1.f) << p.x << " " << p.y;
+		}
+}
+
+// The closed-form row intervals must give exactly the brute-force per-cell classification.
+TEST(WipeTriangle, RasterisationEqualsBruteForce)
+{
+	std::mt19937 rng(7);
+	std::uniform_real_distribution<double> U(-4, 4);
+	size_t checked = 0, nonEmpty = 0;
+	for (int trial = 0; trial < 400; ++trial)
+	{
+		const TPoint2D o(U(rng), U(rng)), s(U(rng), U(rng)), e(U(rng), U(rng));
+		const WipeTriangle t(o, s, e, 0.05 + 0.1 * (trial % 3));
+		if (t.degenerate()) continue;
+		GridOptions g = grid01();
+		g.halfWidth = trial % 3;
+		const GridVector m({U(rng), U(rng)}, {U(rng), U(rng)}, g);
+		std::vector<int> seen(m.cells().size(), 0);
+		t.forEachCell(m, [&](int r, int c, WipePart p) {
+			EXPECT_EQ(seen[size_t(r) * m.cols() + c], 0) << "cell reported twice";
+			seen[size_t(r) * m.cols() + c] = int(p);
+		});
+		for (int r = 0; r < m.rows(); ++r)
+			for (int c = 0; c < m.cols(); ++c)
+			{
+				const WipePart want = t.classify(m.cellCentre(r, c));
+				EXPECT_EQ(seen[size_t(r) * m.cols() + c], int(want)) << trial << " r" << r << " c" << c;
+				nonEmpty += want != WipePart::Outside;
+				++checked;
+			}
+	}
+	EXPECT_GT(checked, 10000u);
+	EXPECT_GT(nonEmpty, 500u);
+}
+
+TEST(WipeTriangle, BoundingBoxContainsTheFanAndBand)
+{
+	const WipeTriangle t(O, S, E, 0.1);
+	EXPECT_LE(t.minX(), -1.0);
+	EXPECT_GE(t.maxX(), 1.0);
+	EXPECT_LE(t.minY(), 0.0);
+	EXPECT_GE(t.maxY(), 2.1 - 1e-9);
+	EXPECT_LT(t.maxY(), 2.2);
+}

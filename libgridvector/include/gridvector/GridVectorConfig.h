@@ -62,7 +62,7 @@ struct GridOptions
 /** Sec. 3.2: global map update (Eq. 8 wipe triangles) and correspondence/merging. */
 struct MapOptions
 {
-	double hitBand = 0.10;  //!< part c: cells within this of the new vector count as hits [m]
+	double hitBand = 0.05;  //!< part c: cells whose centre is within this of the new vector count as hits [m]
 	double maxDirectionDiffDeg = 10.0;  //!< criterion 1: |psi_a - psi_b| [deg]
 	double maxThetaDiffDeg = 10.0;  //!< criterion 2: |theta_a - theta_b| [deg]
 	double maxRhoDiff = 0.15;  //!< criterion 2: |rho_a - rho_b| [m]
@@ -72,7 +72,7 @@ struct MapOptions
 	template <class V>
 	void visit(V&& v)
 	{
-		v("hit_band", hitBand, "Eq. 8 part c: cells within this distance of the new vector get n_occupy and n_visit [m]");
+		v("hit_band", hitBand, "Eq. 8 part c: cells whose centre lies within this distance of the new vector (and in its beams' cone) get n_occupy and n_visit; half a cell = the cells the vector passes through [m]");
 		v("max_direction_diff_deg", maxDirectionDiffDeg, "Correspondence criterion 1: max difference of directions psi [deg]");
 		v("max_theta_diff_deg", maxThetaDiffDeg, "Correspondence criterion 2: max difference of line normals theta [deg]");
 		v("max_rho_diff", maxRhoDiff, "Correspondence criterion 2: max difference of line distances rho [m]");
@@ -105,7 +105,7 @@ struct MatcherOptions
 	double gateRhoFinal = 0.12;  //!< criterion 2 gate once tightened [m]
 	double gateShrink = 0.7;  //!< factor applied to the gates per iteration
 	double minOverlap = 0.10;  //!< matched segments must overlap along the line by this [m]
-	int minMatches = 3;  //!< fewest matched vector pairs
+	int minMatches = 2;  //!< fewest matched vector pairs
 	double minMatchedLength = 1.5;  //!< fewest metres of overlapping matched vectors [m]
 	double maxRms = 0.06;  //!< largest RMS point-to-line residual of an accepted match [m]
 	double sigmaFloor = 0.03;  //!< smallest residual std. dev. per metre of line used in the information [m]

@@ -1,0 +1,60 @@
+// Sec. 4.1, Eq. 14-15, Fig. 4: the expectation step — static/dynamic vectors.
+#pragma once
+
+#include <gridvector/GridVector.h>
+#include <gridvector/GridVectorConfig.h>
+
+#include <cstdint>
+#include <vector>
+
+namespace gridvector
+{
+/** A run of grid columns [first, last) with one state (Fig. 4). */
+struct ProfilePiece
+{
+	int first = 0, last = 0;
+	bool isStatic = true;
+	int columns() const { return last - first; }
+};
+
+/** Output of one E-step over the per-scan vectors m_{i,t}. */
+struct EStepResult
+{
+	/** The children, parent by parent (p(c|m) of Eq. 14 is their state). */
+	std::vector<GridVector> children;
+	/** M_chd of Eq. 25: children[childrenOf[k][..]] came from parents[k]. */
+	std::vector<std::vector<uint32_t>> childrenOf;
+	size_t staticCount = 0, dynamicCount = 0;
+	double staticLength = 0, dynamicLength = 0;
+};
+
+/** Classifies each grid vector from its occupancy profile (Fig. 4): every
+ * column at or above estep.static_threshold -> static, every column below ->
+ * dynamic, mixed -> split at the threshold crossings and merged until no piece
+ * is shorter than estep.min_piece_length. Children are sub-grids of the parent:
+ * their cells (and so the posterior, Eq. 5) are the parent's, unchanged; they
+ * keep the parent's scanIndex and timestamp and get id parent.id * 256 + k. */
+class EStep
+{
+   public:
+	explicit EStep(const EStepOptions& opts = {}, const GridOptions& grid = {});
+
+	/** Split-and-merge of a profile (Fig. 4). */
+	static std::vector<ProfilePiece> pieces(const std::vector<double>& profile, double threshold,
+											int minColumns);
+	/** The children of one vector. */
+	std::vector<GridVector> split(const GridVector& parent) const;
+	/** The E-step over all vectors. */
+	EStepResult run(const std::vector<GridVector>& parents) const;
+
+	static uint64_t childId(uint64_t parentId, size_t k) { return parentId * 256 + k; }
+	static uint64_t parentIdOf(uint64_t childId) { return childId / 256; }
+
+   private:
+	GridVector subVector(const GridVector& parent, const ProfilePiece& p) const;
+
+	EStepOptions opts_;
+	GridOptions grid_;
+};
+
+}  // namespace gridvector

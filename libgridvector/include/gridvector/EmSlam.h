@@ -1,0 +1,62 @@
+// Sec. 4: the modified EM-SLAM — E-step (static/dynamic) and M-step (pose graph) alternated.
+#pragma once
+
+#include <gridvector/EStep.h>
+#include <gridvector/GlobalMap.h>
+#include <gridvector/GridVectorConfig.h>
+#include <gridvector/MStep.h>
+#include <gridvector/VectorExtractor.h>
+
+#include <mrpt/math/TPose2D.h>
+
+#include <functional>
+#include <vector>
+
+namespace gridvector
+{
+/** Figures of one EM iteration (Fig. 11: share of constraints changed). */
+struct EmIteration
+{
+	int index = 0;  //!< 1-based
+	double changedShare = 0;  //!< constraints added, removed or recomputed / constraints
+	size_t changedVectors = 0;  //!< parents whose children (M_chd) changed in the E-step
+	size_t staticVectors = 0, dynamicVectors = 0;
+	double staticLength = 0, dynamicLength = 0;
+	MStepReport mstep;
+	double eSeconds = 0, mSeconds = 0;
+};
+
+struct EmResult
+{
+	std::vector<mrpt::math::TPose2D> poses;  //!< x_t of every scan
+	std::vector<EmIteration> iterations;
+	bool converged = false;
+	std::vector<GridVector> perScan;  //!< last E-step's children m_{i,t} (global, state set)
+	MergeResult staticMap, dynamicMap;  //!< merged static / dynamic vectors (Eq. 4)
+	std::vector<GridVector> finalVectors;  //!< staticMap then dynamicMap vectors, state set
+	double finalMapSeconds = 0;
+};
+
+/** Runs EM: M-step (all vectors static at first, from raw odometry), then
+ * E-step on the map built with the new trajectory, until an M-step changes no
+ * constraint and the E-step no vector (or mstep.max_iterations). */
+class EmSlam
+{
+   public:
+	explicit EmSlam(const GridVectorConfig& cfg = {});
+
+	/** Called after each iteration with its figures and the trajectory. */
+	using IterationCallback =
+		std::function<void(const EmIteration&, const std::vector<mrpt::math::TPose2D>&)>;
+	EmResult run(const std::vector<LocalScan>& scans, const std::vector<mrpt::math::TPose2D>& odometry,
+				 const IterationCallback& onIteration = {}) const;
+
+	/** Static children of the E-step as registration segments, in their scan's frame. */
+	static std::vector<std::vector<MatchSegment>> staticSegments(
+		const std::vector<GridVector>& children, const std::vector<mrpt::math::TPose2D>& poses);
+
+   private:
+	GridVectorConfig cfg_;
+};
+
+}  // namespace gridvector

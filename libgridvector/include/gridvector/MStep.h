@@ -1,0 +1,105 @@
+// Sec. 4.2-4.3, Eq. 16-25: the maximisation step — pose-graph SLAM over static vectors.
+#pragma once
+
+#include <gridvector/GridVectorConfig.h>
+#include <gridvector/PoseGraph.h>
+#include <gridvector/VectorMatcher.h>
+
+#include <mrpt/math/TPose2D.h>
+
+#include <map>
+#include <utility>
+#include <vector>
+
+namespace gridvector
+{
+/** An edge of the pose graph with its data association (Eq. 25's M_cor). */
+struct Constraint
+{
+	uint32_t from = 0, to = 0;  //!< from < to
+	EdgeKind kind = EdgeKind::Sequential;
+	mrpt::math::TPose2D z;  //!< pose of `to` in `from`'s frame
+	Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
+	std::vector<VectorPair> correspondences;  //!< (vector of `from`, vector of `to`), sorted
+	double rms = 0, matchedLength = 0, matchedShare = 0;
+	bool rejected = false;  //!< deactivated by the pose graph's residual test
+};
+
+using EdgeKey = std::pair<uint32_t, uint32_t>;
+
+/** What one M-step did (Fig. 11 uses changedShare). */
+struct MStepReport
+{
+	size_t constraints = 0;  //!< registration edges after the step (active or not)
+	size_t active = 0;  //!< ... of which used by the optimiser
+	size_t sequential = 0, overlap = 0, loop = 0;  //!< active edges by kind
+	size_t added = 0, removed = 0, recomputed = 0;  //!< Eq. 24: the changed constraints
+	size_t registrations = 0, failedRegistrations = 0;
+	double changedShare = 0;  //!< (added + removed + recomputed) / constraints
+	OptimizeStats optimisation;
+	double registrationSeconds = 0, seconds = 0;
+};
+
+/** Builds and maintains the registration edges between scans and optimises
+ * the pose graph (odometry edges + registrations, Eq. 21-22).
+ *
+ * First call (from raw odometry): each scan is registered against its
+ * `sequential_window` predecessors and its pose chained from the fused
+ * registrations, removing local drift. Every call: overlap edges between
+ * poses whose static vectors correspond under the current trajectory
+ * (one per earlier pass through the place), the loop search, and the
+ * constraint selection of Eq. 24-25 — an edge is re-registered only when
+ * its correspondences changed (new pairs or pairs lost through an E-step
+ * state change or a moved pose); edges whose poses no longer overlap are
+ * dropped. */
+class MStep
+{
+   public:
+	explicit MStep(const GridVectorConfig& cfg = {});
+
+	/** Dead-reckoning pose of every scan (the odometry edges). */
+	void setOdometry(std::vector<mrpt::math::TPose2D> odometry);
+
+	/** One M-step. `scans[t]`: static vectors of scan t in its own frame
+	 * (ids stable across iterations); `poses`: in: current estimate (ignored
+	 * on the first call, which chains from odometry), out: optimised. */
+	MStepReport run(const std::vector<std::vector<MatchSegment>>& scans,
+					std::vector<mrpt::math::TPose2D>& poses);
+
+	const std::map<EdgeKey, Constraint>& constraints() const { return constraints_; }
+	const PoseGraph& graph() const { return graph_; }
+	bool started() const { return started_; }
+
+   private:
+	using Scans = std::vector<std::vector<MatchSegment>>;
+	using Poses = std::vector<mrpt::math::TPose2D>;
+
+	void chainSequential(const Scans& scans, Poses& poses, MStepReport& rep);
+	void updateExisting(const Scans& scans, const Poses& poses, MStepReport& rep);
+	void addSequential(const Scans& scans, const Poses& poses, MStepReport& rep);
+	void addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep);
+	void loopSearch(const Scans& scans, const Poses& poses, MStepReport& rep);
+	void optimise(Poses& poses, MStepReport& rep);
+
+	/** Eq. 24-25: did this edge's vector correspondences change? */
+	bool correspondencesChanged(const Constraint& c, const Scans& scans, const Poses& poses) const;
+	/** Registers scan `to` against scan `from` from `guess`; true if accepted. */
+	bool registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans& scans,
+					  const mrpt::math::TPose2D& guess, Constraint& out, MStepReport& rep) const;
+	double overlapLength(uint32_t from, uint32_t to, const Scans& scans, const Poses& poses) const;
+	/** Is there an edge (j, i) with j in [jlo, jhi]? */
+	bool hasEdgeNear(uint32_t i, uint32_t jlo, uint32_t jhi) const;
+	/** Has a relative pose moved enough since a failed attempt to retry it? */
+	bool movedSince(const mrpt::math::TPose2D& before, const mrpt::math::TPose2D& now) const;
+
+	GridVectorConfig cfg_;
+	VectorMatcher matcher_;
+	PoseGraph graph_;
+	Poses odometry_;
+	std::map<EdgeKey, Constraint> constraints_;
+	std::map<EdgeKey, mrpt::math::TPose2D> failed_;  //!< relative pose at a failed registration
+	std::vector<double> scanLength_;  //!< total static length per scan
+	bool started_ = false;
+};
+
+}  // namespace gridvector

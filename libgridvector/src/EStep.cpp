@@ -1,0 +1,97 @@
+#include <gridvector/EStep.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridvector
+{
+using mrpt::math::TPoint2D;
+
+EStep::EStep(const EStepOptions& opts, const GridOptions& grid) : opts_(opts), grid_(grid) {}
+
+// Fig. 4: split where the profile meets the threshold, then merge the shortest
+// piece into its neighbours until every piece has at least minColumns.
+std::vector<ProfilePiece> EStep::pieces(const std::vector<double>& profile, double threshold,
+										int minColumns)
+{
+	std::vector<ProfilePiece> out;
+	for (int c = 0; c < int(profile.size()); ++c)
+	{
+		const bool st = profile[size_t(c)] >= threshold;
+		if (out.empty() || out.back().isStatic != st) out.push_back({c, c + 1, st});
+		else out.back().last = c + 1;
+	}
+	while (out.size() > 1)
+	{
+		auto shortest = std::min_element(out.begin(), out.end(), [](const auto& a, const auto& b) {
+			return a.columns() < b.columns();
+		});
+		if (shortest->columns() >= minColumns) break;
+		// the short piece takes its neighbours' state and joins them
+		const size_t k = size_t(shortest - out.begin());
+		const size_t lo = k > 0 ? k - 1 : k, hi = k + 1 < out.size() ? k + 1 : k;
+		ProfilePiece m{out[lo].first, out[hi].last, !out[k].isStatic};
+		out.erase(out.begin() + long(lo), out.begin() + long(hi) + 1);
+		out.insert(out.begin() + long(lo), m);
+	}
+	return out;
+}
+
+GridVector EStep::subVector(const GridVector& parent, const ProfilePiece& p) const
+{
+	const double res = parent.resolution(), len = parent.length();
+	const TPoint2D d = parent.direction(), s0 = parent.start();
+	const double u0 = p.first * res, u1 = std::min(len, p.last * res);
+	const TPoint2D s(s0.x + u0 * d.x, s0.y + u0 * d.y), e(s0.x + u1 * d.x, s0.y + u1 * d.y);
+	std::vector<GridCell> cells;
+	cells.reserve(size_t(parent.rows()) * size_t(p.columns()));
+	for (int r = 0; r < parent.rows(); ++r)
+		for (int c = p.first; c < p.last; ++c) cells.push_back(parent.cell(r, c));
+	GridOptions g = grid_;
+	g.resolution = res;
+	g.halfWidth = parent.halfWidth();
+	GridVector child = GridVector::fromParts(s, e, g, p.columns(), std::move(cells));
+	child.scanIndex = parent.scanIndex;
+	child.timestamp = parent.timestamp;
+	child.mergedCount = parent.mergedCount;
+	child.state = p.isStatic ? VectorState::Static : VectorState::Dynamic;  // Eq. 14
+	return child;
+}
+
+std::vector<GridVector> EStep::split(const GridVector& parent) const
+{
+	const int minCols =
+		std::max(1, int(std::ceil(opts_.minPieceLength / parent.resolution() - 1e-9)));
+	std::vector<GridVector> out;
+	const auto ps = pieces(parent.occupancyProfile(), opts_.staticThreshold, minCols);
+	for (size_t k = 0; k < ps.size(); ++k)
+	{
+		if (ps.size() == 1)
+		{
+			out.push_back(parent);  // the whole vector: geometry and grid unchanged
+			out.back().state = ps[0].isStatic ? VectorState::Static : VectorState::Dynamic;
+		}
+		else
+			out.push_back(subVector(parent, ps[k]));
+		out.back().id = childId(parent.id, k);
+	}
+	return out;
+}
+
+EStepResult EStep::run(const std::vector<GridVector>& parents) const
+{
+	EStepResult r;
+	r.childrenOf.resize(parents.size());
+	for (size_t k = 0; k < parents.size(); ++k)
+		for (auto& c : split(parents[k]))
+		{
+			const bool st = c.state == VectorState::Static;
+			(st ? r.staticCount : r.dynamicCount)++;
+			(st ? r.staticLength : r.dynamicLength) += c.length();
+			r.childrenOf[k].push_back(uint32_t(r.children.size()));
+			r.children.push_back(std::move(c));
+		}
+	return r;
+}
+
+}  // namespace gridvector

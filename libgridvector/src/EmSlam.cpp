@@ -1,0 +1,125 @@
+#include <gridvector/EmSlam.h>
+#include <gridvector/SE2.h>
+
+#include <chrono>
+#include <tuple>
+
+namespace gridvector
+{
+using mrpt::math::TPose2D;
+
+namespace
+{
+double since(std::chrono::steady_clock::time_point t0)
+{
+	return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Before the first E-step every vector is its own single static child.
+std::vector<std::vector<MatchSegment>> initialSegments(const std::vector<LocalScan>& scans)
+{
+	std::vector<std::vector<MatchSegment>> out(scans.size());
+	uint64_t id = 1;  // the id buildPerScan gives: position + 1
+	for (size_t t = 0; t < scans.size(); ++t)
+		for (const auto& v : scans[t].vectors)
+		{
+			MatchSegment m = MatchSegment::from(v);
+			m.id = EStep::childId(id++, 0);
+			out[t].push_back(m);
+		}
+	return out;
+}
+
+// M_chd signature of one parent: states and column ranges of its children.
+using ChildSig = std::vector<std::tuple<uint64_t, int, double>>;
+std::vector<ChildSig> signatures(const EStepResult& r)
+{
+	std::vector<ChildSig> sig(r.childrenOf.size());
+	for (size_t k = 0; k < r.childrenOf.size(); ++k)
+		for (uint32_t c : r.childrenOf[k])
+		{
+			const GridVector& v = r.children[c];
+			sig[k].emplace_back(v.id, int(v.state), std::round(v.length() * 100));
+		}
+	return sig;
+}
+}  // namespace
+
+EmSlam::EmSlam(const GridVectorConfig& cfg) : cfg_(cfg) {}
+
+std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<GridVector>& children,
+															  const std::vector<TPose2D>& poses)
+{
+	std::vector<std::vector<MatchSegment>> out(poses.size());
+	for (const auto& c : children)
+	{
+		if (c.state != VectorState::Static || c.scanIndex < 0 || size_t(c.scanIndex) >= poses.size())
+			continue;
+		const TPose2D inv = se2::relative(poses[size_t(c.scanIndex)], TPose2D(0, 0, 0));
+		MatchSegment m = MatchSegment::from(c.compose(inv));  // back to the scan's frame
+		out[size_t(c.scanIndex)].push_back(m);
+	}
+	return out;
+}
+
+EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPose2D>& odometry,
+					 const IterationCallback& onIteration) const
+{
+	EmResult res;
+	MStep mstep(cfg_);
+	mstep.setOdometry(odometry);
+	const EStep estep(cfg_.estep, cfg_.grid);
+	auto segs = initialSegments(scans);
+	std::vector<ChildSig> prevSig;
+	res.poses = odometry;
+	for (int k = 1; k <= cfg_.mstep.maxIterations; ++k)
+	{
+		EmIteration it;
+		it.index = k;
+		auto t0 = std::chrono::steady_clock::now();
+		it.mstep = mstep.run(segs, res.poses);  // M-step (Eq. 16-25)
+		it.mSeconds = since(t0);
+		it.changedShare = it.mstep.changedShare;
+		t0 = std::chrono::steady_clock::now();
+		// E-step (Eq. 14-15) on the map of the new trajectory (Eq. 8)
+		const auto perScan = GlobalMap::buildPerScan(res.poses, scans, cfg_);
+		EStepResult e = estep.run(perScan);
+		auto sig = signatures(e);
+		for (size_t p = 0; p < sig.size(); ++p)
+			if (prevSig.empty() ? e.childrenOf[p].size() != 1 ||
+									  e.children[e.childrenOf[p][0]].state != VectorState::Static
+								: sig[p] != prevSig[p])
+				++it.changedVectors;
+		prevSig = std::move(sig);
+		segs = staticSegments(e.children, res.poses);
+		it.staticVectors = e.staticCount;
+		it.dynamicVectors = e.dynamicCount;
+		it.staticLength = e.staticLength;
+		it.dynamicLength = e.dynamicLength;
+		it.eSeconds = since(t0);
+		res.perScan = std::move(e.children);
+		res.iterations.push_back(it);
+		if (onIteration) onIteration(it, res.poses);
+		if (k > 1 && it.changedShare <= cfg_.mstep.minChangedShare && it.changedVectors == 0)
+		{
+			res.converged = true;
+			break;
+		}
+	}
+	// Final map: merge static and dynamic vectors separately (Eq. 4, Algorithm 2).
+	const auto t0 = std::chrono::steady_clock::now();
+	std::vector<GridVector> st, dy;
+	for (const auto& v : res.perScan) (v.state == VectorState::Dynamic ? dy : st).push_back(v);
+	res.staticMap = GlobalMap::mergeAll(st, cfg_);
+	res.dynamicMap = GlobalMap::mergeAll(dy, cfg_);
+	for (auto* m : {&res.staticMap, &res.dynamicMap})
+		for (auto v : m->vectors)
+		{
+			v.state = m == &res.staticMap ? VectorState::Static : VectorState::Dynamic;
+			res.finalVectors.push_back(std::move(v));
+		}
+	res.finalMapSeconds = since(t0);
+	return res;
+}
+
+}  // namespace gridvector

@@ -1,0 +1,340 @@
+#include <gridvector/MStep.h>
+#include <gridvector/SE2.h>
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+#include <unordered_map>
+
+namespace gridvector
+{
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+using mrpt::math::TPose2D;
+
+namespace
+{
+double secondsSince(std::chrono::steady_clock::time_point t0)
+{
+	return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Information of a relative measurement expressed in the frame of `frame` (rotated to the world).
+Matrix3d toWorld(const Matrix3d& info, double framePhi)
+{
+	Matrix3d R = Matrix3d::Identity();
+	R.topLeftCorner<2, 2>() << std::cos(framePhi), -std::sin(framePhi), std::sin(framePhi),
+		std::cos(framePhi);
+	return R * info * R.transpose();
+}
+}  // namespace
+
+MStep::MStep(const GridVectorConfig& cfg)
+	: cfg_(cfg), matcher_(cfg.matcher), graph_(cfg.posegraph)
+{
+}
+
+void MStep::setOdometry(std::vector<TPose2D> odometry) { odometry_ = std::move(odometry); }
+
+bool MStep::registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans& scans,
+						 const TPose2D& guess, Constraint& out, MStepReport& rep) const
+{
+	++rep.registrations;
+	const MatchResult r = matcher_.match(scans[from], scans[to], guess);
+	bool ok = r.ok();
+	if (ok && kind != EdgeKind::Sequential) ok = r.matchedShare >= cfg_.mstep.overlapMinShare;
+	if (!ok)
+	{
+		++rep.failedRegistrations;
+		return false;
+	}
+	out.from = from;
+	out.to = to;
+	out.kind = kind;
+	out.z = r.pose;
+	out.information = r.information;
+	out.correspondences = r.pairs;
+	out.rms = r.rms;
+	out.matchedLength = r.matchedLength;
+	out.matchedShare = r.matchedShare;
+	out.rejected = false;
+	return true;
+}
+
+double MStep::overlapLength(uint32_t from, uint32_t to, const Scans& scans, const Poses& poses) const
+{
+	MatchGates g;
+	g.psi = cfg_.matcher.gatePsiInitialDeg * M_PI / 180;
+	g.rho = cfg_.matcher.gateRhoInitial;
+	g.minOverlap = cfg_.matcher.minOverlap;
+	return matcher_.correspondences(scans[from], scans[to], se2::relative(poses[from], poses[to]),
+									g, nullptr);
+}
+
+// Eq. 24-25 with hysteresis: a stored pair lost even under widened gates, or a
+// new pair inside the final gates, means the data association changed.
+bool MStep::correspondencesChanged(const Constraint& c, const Scans& scans, const Poses& poses) const
+{
+	const TPose2D rel = se2::relative(poses[c.from], poses[c.to]);
+	std::vector<VectorPair> wide, tight;
+	matcher_.correspondences(scans[c.from], scans[c.to], rel,
+							 matcher_.finalGates(cfg_.mstep.recheckGateFactor), &wide);
+	if (!std::includes(wide.begin(), wide.end(), c.correspondences.begin(), c.correspondences.end()))
+		return true;
+	matcher_.correspondences(scans[c.from], scans[c.to], rel, matcher_.finalGates(), &tight);
+	return !std::includes(c.correspondences.begin(), c.correspondences.end(), tight.begin(),
+						  tight.end());
+}
+
+// First M-step: register each scan against its predecessors, chaining the fused poses.
+void MStep::chainSequential(const Scans& scans, Poses& poses, MStepReport& rep)
+{
+	const size_t n = scans.size();
+	poses.assign(n, TPose2D(0, 0, 0));
+	if (n == 0) return;
+	poses[0] = odometry_[0];
+	for (size_t i = 1; i < n; ++i)
+	{
+		const TPose2D odo = se2::relative(odometry_[i - 1], odometry_[i]);
+		const TPose2D guess0 = se2::compose(poses[i - 1], odo);
+		// information-weighted fusion of the predictions, linearised at the odometry guess
+		Matrix3d sumI = toWorld(PoseGraph::odometryInformation(odo, cfg_.posegraph), poses[i - 1].phi);
+		Vector3d sumIx = Vector3d::Zero();
+		TPose2D guess = guess0;
+		const size_t lo = i > size_t(cfg_.mstep.sequentialWindow) ? i - cfg_.mstep.sequentialWindow : 0;
+		for (size_t j = i; j-- > lo;)
+		{
+			Constraint c;
+			if (!registerPair(uint32_t(j), uint32_t(i), EdgeKind::Sequential, scans,
+							  se2::relative(poses[j], guess), c, rep))
+				continue;
+			const TPose2D est = se2::compose(poses[j], c.z);
+			const Matrix3d Iw = toWorld(c.information, poses[j].phi);
+			const Vector3d d(est.x - guess0.x, est.y - guess0.y,
+							 mrpt::math::wrapToPi(est.phi - guess0.phi));
+			sumI += Iw;
+			sumIx += Iw * d;
+			const Vector3d x = sumI.ldlt().solve(sumIx);
+			guess = TPose2D(guess0.x + x.x(), guess0.y + x.y(), mrpt::math::wrapToPi(guess0.phi + x.z()));
+			constraints_[{uint32_t(j), uint32_t(i)}] = std::move(c);
+			++rep.added;
+		}
+		poses[i] = guess;
+	}
+}
+
+void MStep::updateExisting(const Scans& scans, const Poses& poses, MStepReport& rep)
+{
+	const double far = 1.5 * cfg_.mstep.overlapDistance;
+	for (auto it = constraints_.begin(); it != constraints_.end();)
+	{
+		Constraint& c = it->second;
+		const bool nonSeq = c.kind != EdgeKind::Sequential;
+		if (nonSeq && (se2::distance(poses[c.from], poses[c.to]) > far ||
+					   overlapLength(c.from, c.to, scans, poses) < 0.5 * cfg_.mstep.overlapMinLength))
+		{
+			it = constraints_.erase(it);  // no longer overlapping: drop (Sec. 4.3)
+			++rep.removed;
+			continue;
+		}
+		if (!correspondencesChanged(c, scans, poses))
+		{
+			++it;
+			continue;
+		}
+		Constraint fresh;
+		if (registerPair(c.from, c.to, c.kind, scans, se2::relative(poses[c.from], poses[c.to]),
+						 fresh, rep))
+		{
+			c = std::move(fresh);
+			++rep.recomputed;
+			++it;
+		}
+		else
+		{
+			it = constraints_.erase(it);
+			++rep.removed;
+		}
+	}
+}
+
+// Later M-steps: sequential pairs not (or no longer) in the graph are retried.
+void MStep::addSequential(const Scans& scans, const Poses& poses, MStepReport& rep)
+{
+	const size_t w = size_t(std::max(1, cfg_.mstep.sequentialWindow));
+	for (size_t i = 1; i < scans.size(); ++i)
+		for (size_t j = i > w ? i - w : 0; j < i; ++j)
+		{
+			const EdgeKey key{uint32_t(j), uint32_t(i)};
+			if (constraints_.count(key)) continue;
+			const TPose2D rel = se2::relative(poses[j], poses[i]);
+			auto f = failed_.find(key);
+			if (f != failed_.end() && !movedSince(f->second, rel)) continue;
+			Constraint c;
+			if (registerPair(key.first, key.second, EdgeKind::Sequential, scans, rel, c, rep))
+			{
+				constraints_[key] = std::move(c);
+				failed_.erase(key);
+				++rep.added;
+			}
+			else
+				failed_[key] = rel;
+		}
+}
+
+bool MStep::movedSince(const TPose2D& before, const TPose2D& now) const
+{
+	return se2::distance(before, now) > 0.5 * cfg_.matcher.gateRhoFinal ||
+		   std::abs(mrpt::math::wrapToPi(before.phi - now.phi)) >
+			   0.5 * cfg_.matcher.gatePsiFinalDeg * M_PI / 180;
+}
+
+bool MStep::hasEdgeNear(uint32_t i, uint32_t jlo, uint32_t jhi) const
+{
+	auto it = constraints_.lower_bound({jlo, 0});
+	for (; it != constraints_.end() && it->first.first <= jhi; ++it)
+		if (it->first.second == i) return true;
+	return false;
+}
+
+// Overlap edges: for each pose, one edge into every earlier pass through its place.
+void MStep::addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep)
+{
+	const double d = cfg_.mstep.overlapDistance;
+	if (d <= 0) return;
+	auto cellOf = [d](const TPose2D& p) {
+		return std::pair<long, long>(long(std::floor(p.x / d)), long(std::floor(p.y / d)));
+	};
+	struct Hash
+	{
+		size_t operator()(const std::pair<long, long>& k) const
+		{
+			return std::hash<long>()(k.first * 73856093L ^ k.second * 19349663L);
+		}
+	};
+	std::unordered_map<std::pair<long, long>, std::vector<uint32_t>, Hash> grid;
+	const uint32_t gap = uint32_t(std::max(1, cfg_.mstep.sequentialWindow));
+	std::vector<uint32_t> near;
+	for (uint32_t i = 0; i < scans.size(); ++i)
+	{
+		const auto [cx, cy] = cellOf(poses[i]);
+		near.clear();
+		for (long dx = -1; dx <= 1; ++dx)
+			for (long dy = -1; dy <= 1; ++dy)
+			{
+				auto g = grid.find({cx + dx, cy + dy});
+				if (g == grid.end()) continue;
+				for (uint32_t j : g->second)
+					if (j + gap < i && se2::distance(poses[i], poses[j]) < d) near.push_back(j);
+			}
+		grid[{cx, cy}].push_back(i);
+		if (scans[i].empty() || near.empty()) continue;
+		std::sort(near.begin(), near.end());
+		// split the candidates into passes; in each pass take the nearest pose
+		for (size_t a = 0; a < near.size();)
+		{
+			size_t b = a + 1;
+			while (b < near.size() && near[b] - near[b - 1] <= uint32_t(cfg_.mstep.overlapRunGap)) ++b;
+			const uint32_t lo = near[a], hi = near[b - 1];
+			uint32_t best = lo;
+			for (size_t k = a; k < b; ++k)
+				if (se2::distance(poses[i], poses[near[k]]) < se2::distance(poses[i], poses[best]))
+					best = near[k];
+			a = b;
+			if (hasEdgeNear(i, lo, hi)) continue;
+			const EdgeKey key{best, i};
+			const TPose2D rel = se2::relative(poses[best], poses[i]);
+			auto f = failed_.find(key);
+			if (f != failed_.end() && !movedSince(f->second, rel)) continue;
+			if (overlapLength(best, i, scans, poses) < cfg_.mstep.overlapMinLength) continue;
+			Constraint c;
+			if (registerPair(best, i, EdgeKind::Overlap, scans, rel, c, rep))
+			{
+				constraints_[key] = std::move(c);
+				failed_.erase(key);
+				++rep.added;
+			}
+			else
+				failed_[key] = rel;
+		}
+	}
+}
+
+void MStep::loopSearch(const Scans&, const Poses&, MStepReport&) {}
+
+void MStep::optimise(Poses& poses, MStepReport& rep)
+{
+	graph_.setNodes(poses);
+	graph_.clearEdges();
+	for (uint32_t i = 1; i < poses.size(); ++i)
+	{
+		PoseEdge e;
+		e.from = i - 1;
+		e.to = i;
+		e.z = se2::relative(odometry_[i - 1], odometry_[i]);
+		e.information = PoseGraph::odometryInformation(e.z, cfg_.posegraph);
+		e.kind = EdgeKind::Odometry;
+		graph_.addEdge(e);
+	}
+	std::vector<Constraint*> byEdge(graph_.edges().size(), nullptr);
+	for (auto& [key, c] : constraints_)
+	{
+		if (c.rejected) continue;
+		PoseEdge e;
+		e.from = c.from;
+		e.to = c.to;
+		e.z = c.z;
+		e.information = c.information;
+		e.kind = c.kind;
+		graph_.addEdge(e);
+		byEdge.push_back(&c);
+	}
+	rep.optimisation = graph_.optimize();
+	for (size_t k = 0; k < byEdge.size(); ++k)
+		if (byEdge[k] && !graph_.edges()[k].active) byEdge[k]->rejected = true;
+	poses = graph_.nodes();
+}
+
+MStepReport MStep::run(const Scans& scans, Poses& poses)
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	MStepReport rep;
+	if (odometry_.size() != scans.size())
+		throw std::invalid_argument("MStep: odometry and scans differ in length");
+	const size_t before = constraints_.size();
+	scanLength_.assign(scans.size(), 0);
+	for (size_t t = 0; t < scans.size(); ++t)
+		for (const auto& s : scans[t]) scanLength_[t] += s.length;
+	if (!started_)
+	{
+		chainSequential(scans, poses, rep);
+		started_ = true;
+	}
+	else
+	{
+		updateExisting(scans, poses, rep);
+		addSequential(scans, poses, rep);
+	}
+	addOverlaps(scans, poses, rep);
+	if (cfg_.mstep.loopSearch) loopSearch(scans, poses, rep);
+	rep.registrationSeconds = secondsSince(t0);
+	optimise(poses, rep);
+	rep.constraints = constraints_.size();
+	for (const auto& [key, c] : constraints_)
+	{
+		if (c.rejected) continue;
+		++rep.active;
+		if (c.kind == EdgeKind::Sequential) ++rep.sequential;
+		else if (c.kind == EdgeKind::Overlap) ++rep.overlap;
+		else if (c.kind == EdgeKind::Loop) ++rep.loop;
+	}
+	const size_t denom = std::max<size_t>(1, std::max(before, rep.constraints));
+	rep.changedShare = double(rep.added + rep.removed + rep.recomputed) / denom;
+	rep.seconds = secondsSince(t0);
+	return rep;
+}
+
+}  // namespace gridvector

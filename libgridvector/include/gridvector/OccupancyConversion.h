@@ -1,0 +1,68 @@
+// Eq. 6-7: the grid vector map as an occupancy grid, at any resolution.
+#pragma once
+
+#include <gridvector/GridVector.h>
+
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/math/TPoint2D.h>
+
+#include <vector>
+
+namespace gridvector
+{
+/** Sums of Eq. 6 over a regular raster: per output cell, the n_occupy and
+ * n_visit of every vector cell covering it (area-averaged over the output
+ * cell by sub-sampling). p = occ / visit; unknown where visit == 0. */
+struct OccupancyRaster
+{
+	double xMin = 0, yMin = 0, resolution = 0.1;  //!< lower-left corner of cell (0, 0)
+	int nx = 0, ny = 0;
+	std::vector<float> occ, visit;  //!< row-major, iy * nx + ix
+
+	bool known(int ix, int iy) const { return visit[size_t(iy) * nx + ix] > 0; }
+	/** Eq. 6; 0.5 where no vector covers the cell. */
+	double probability(int ix, int iy) const
+	{
+		const size_t i = size_t(iy) * nx + ix;
+		return visit[i] > 0 ? double(occ[i]) / visit[i] : 0.5;
+	}
+};
+
+struct OccupancyConversionOptions
+{
+	double resolution = 0.10;  //!< output cell size [m]
+	double margin = 0.5;  //!< border around the vectors' bounding box [m]
+	/** Sub-samples per axis and output cell for the area average; 0: enough
+	 * for every vector cell to be sampled (ceil(2 resolution / vector cell), >= 1). */
+	int samplesPerAxis = 0;
+};
+
+class OccupancyConversion
+{
+   public:
+	/** Eq. 6 at one point: (sum n_occupy, sum n_visit) of all cells containing p (Eq. 7). */
+	static std::pair<double, double> countsAt(const std::vector<GridVector>& vectors,
+											  const mrpt::math::TPoint2D& p);
+	/** Eq. 6 at one point; 0.5 where no vector covers it. */
+	static double occupancyAt(const std::vector<GridVector>& vectors, const mrpt::math::TPoint2D& p);
+
+	/** Raster over the vectors' bounding box (plus margin). */
+	static OccupancyRaster rasterise(const std::vector<GridVector>& vectors,
+									 const OccupancyConversionOptions& opt = {});
+	/** Raster with a given geometry (cells of side res from (xMin, yMin)). */
+	static OccupancyRaster rasterise(const std::vector<GridVector>& vectors, double xMin, double yMin,
+									 double res, int nx, int ny, int samplesPerAxis = 0);
+
+	/** Eq. 6 as an MRPT occupancy grid; unknown cells stay 0.5. */
+	static mrpt::maps::COccupancyGridMap2D toOccupancyGrid(const std::vector<GridVector>& vectors,
+														   const OccupancyConversionOptions& opt = {});
+	/** Fills an existing grid (its size and resolution are kept). */
+	static void fill(const std::vector<GridVector>& vectors, mrpt::maps::COccupancyGridMap2D& grid,
+					 int samplesPerAxis = 0);
+	static void fill(const OccupancyRaster& raster, mrpt::maps::COccupancyGridMap2D& grid);
+	/** Bounding box of all vectors' grid bands: {xmin, ymin, xmax, ymax}; false if none. */
+	static bool bounds(const std::vector<GridVector>& vectors, double& xmin, double& ymin, double& xmax,
+					   double& ymax);
+};
+
+}  // namespace gridvector

@@ -1,0 +1,293 @@
+// Sec. 3.2: global map building, sequential (insertScan) and batch (buildPerScan + mergeAll).
+#include <gridvector/GlobalMap.h>
+#include <gridvector/OccupancyConversion.h>
+#include <gridvector/VectorExtractor.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "test_scans.h"
+
+using namespace gridvector;
+using mrpt::math::TPoint2D;
+using mrpt::math::TPose2D;
+
+namespace
+{
+double totalPoints(const std::vector<GridVector>& vs)
+{
+	double s = 0;
+	for (const auto& v : vs) s += v.totalPoints();
+	return s;
+}
+
+struct Sequence
+{
+	std::vector<TPose2D> poses;
+	std::vector<LocalScan> scans;
+};
+
+Sequence extractAll(const std::vector<TPose2D>& poses,
+					const std::function<std::vector<gvtest::Seg>(size_t)>& world)
+{
+	Sequence s;
+	const VectorExtractor ex;
+	for (size_t t = 0; t < poses.size(); ++t)
+	{
+		LocalScan l = ex.extract(gvtest::castScan(poses[t], world(t)));
+		l.scanIndex = int64_t(t);
+		s.poses.push_back(poses[t]);
+		s.scans.push_back(std::move(l));
+	}
+	return s;
+}
+
+// The robot drives along y = 0 facing a wall at y = 3; in the first scans a
+// person (a 0.5 m wide flat body) walks past 1.5 m in front of the robot.
+const int kPersonScans = 6, kScans = 46;
+gvtest::Seg personAt(size_t t) { return {-0.85 + 0.3 * t, 1.5, -1.35 + 0.3 * t, 1.5}; }
+Sequence personSequence()
+{
+	std::vector<TPose2D> poses;
+	for (int t = 0; t < kScans; ++t) poses.emplace_back(-2.0 + 4.0 * t / (kScans - 1), 0.0, M_PI / 2);
+	return extractAll(poses, [](size_t t) {
+		std::vector<gvtest::Seg> w{{6, 3, -6, 3}};
+		if (t < size_t(kPersonScans)) w.push_back(personAt(t));
+		return w;
+	});
+}
+
+/** The person's footprint cells: points on its body, and how many scans saw each. */
+std::vector<std::pair<TPoint2D, int>> personFootprint()
+{
+	std::vector<std::pair<TPoint2D, int>> pts;
+	for (double x = -1.3; x <= 0.5; x += 0.05)
+	{
+		int seen = 0;
+		for (int t = 0; t < kPersonScans; ++t)
+		{
+			const auto s = personAt(size_t(t));
+			seen += x >= s.x2 && x <= s.x1;
+		}
+		if (seen > 0) pts.push_back({TPoint2D(x, 1.5), seen});
+	}
+	return pts;
+}
+
+void expectPersonFadedAndWallKept(const std::vector<GridVector>& map)
+{
+	int once = 0;
+	for (const auto& [p, seen] : personFootprint())
+	{
+		const double occ = OccupancyConversion::occupancyAt(map, p);
+		if (seen == 1)
+		{
+			EXPECT_LT(occ, 0.3) << "person cell at x=" << p.x;
+			++once;
+		}
+		EXPECT_LT(occ, 0.5) << "person cell at x=" << p.x << " seen " << seen;
+	}
+	EXPECT_GE(once, 4);
+	for (double x = -2; x <= 2; x += 0.1)
+		EXPECT_GT(OccupancyConversion::occupancyAt(map, {x, 3.0}), 0.8) << "wall at x=" << x;
+	// between robot and wall: free
+	for (double x = -1.5; x <= 1.5; x += 0.3)
+		EXPECT_LE(OccupancyConversion::occupancyAt(map, {x, 2.0}), 0.5) << x;
+}
+}  // namespace
+
+TEST(GlobalMap, PersonWalkingPastAWallFadesSequential)
+{
+	const Sequence seq = personSequence();
+	GlobalMap map;
+	for (size_t t = 0; t < seq.scans.size(); ++t) map.insertScan(seq.poses[t], seq.scans[t]);
+	// the person was extracted as vectors in its scans
+	bool personSeen = false;
+	for (const auto& v : seq.scans[2].vectors)
+		personSeen |= std::abs(v.compose(seq.poses[2]).centre().y - 1.5) < 0.05;
+	ASSERT_TRUE(personSeen);
+	expectPersonFadedAndWallKept(map.vectors());
+	// the wall merged into few vectors, the person's vectors are dynamic-looking
+	for (const auto& v : map.vectors())
+	{
+		if (std::abs(v.centre().y - 1.5) < 0.1)
+		{
+			EXPECT_LT(v.pStatic(), 0.35);
+		}
+		if (std::abs(v.centre().y - 3.0) < 0.1)
+		{
+			EXPECT_GT(v.pStatic(), 0.45);
+		}
+	}
+}
+
+TEST(GlobalMap, PersonWalkingPastAWallFadesBatch)
+{
+	const Sequence seq = personSequence();
+	const auto perScan = GlobalMap::buildPerScan(seq.poses, seq.scans, GridVectorConfig{});
+	expectPersonFadedAndWallKept(perScan);
+	const MergeResult merged = GlobalMap::mergeAll(perScan, GridVectorConfig{});
+	expectPersonFadedAndWallKept(merged.vectors);
+	EXPECT_LT(merged.vectors.size(), perScan.size() / 10);
+}
+
+TEST(GlobalMap, SequentialMergingConservesPointsAndFindsTheRoom)
+{
+	const auto walls = gvtest::room(-4, -3, 4, 3);
+	std::vector<TPose2D> poses;
+	for (int t = 0; t < 12; ++t) poses.emplace_back(-2 + 0.35 * t, 0.3 * std::sin(t), 0.25 * t);
+	const Sequence seq = extractAll(poses, [&](size_t) { return walls; });
+	GlobalMap map;
+	double pts = 0;
+	size_t inserted = 0;
+	for (size_t t = 0; t < seq.scans.size(); ++t)
+	{
+		for (const auto& v : seq.scans[t].vectors) pts += v.totalPoints();
+		inserted += seq.scans[t].vectors.size();
+		map.insertScan(seq.poses[t], seq.scans[t]);
+		EXPECT_EQ(map.lastInsertStats().inserted, seq.scans[t].vectors.size());
+	}
+	EXPECT_NEAR(totalPoints(map.vectors()), pts, 1e-3 * pts);
+	EXPECT_LE(map.size(), 8u) << "from " << inserted;
+	double len = 0;
+	for (const auto& v : map.vectors())
+	{
+		len += v.length();
+		EXPECT_GT(v.pStatic(), 0.5);
+		EXPECT_LT(v.scanIndex, 0);  // all merged
+	}
+	EXPECT_NEAR(len, 28.0, 1.5);  // the room's perimeter
+	// every id is unique
+	std::set<uint64_t> ids;
+	for (const auto& v : map.vectors()) ids.insert(v.id);
+	EXPECT_EQ(ids.size(), map.size());
+}
+
+TEST(GlobalMap, LaterScanWipesEarlierVectorsButNotItsOwn)
+{
+	const Sequence seq = extractAll({TPose2D(0, 0, M_PI / 2), TPose2D(0, 0, M_PI / 2)},
+									[](size_t) { return std::vector<gvtest::Seg>{{3, 2, -3, 2}}; });
+	GridVectorConfig cfg;
+	cfg.map.mergeOnInsert = false;
+	GlobalMap map(cfg);
+	map.insertScan(seq.poses[0], seq.scans[0]);
+	ASSERT_EQ(map.size(), 1u);
+	const double occ0 = map.vectors()[0].totalOccupy(), vis0 = map.vectors()[0].totalVisit();
+	EXPECT_DOUBLE_EQ(occ0, seq.scans[0].vectors[0].totalOccupy());  // own scan: Algorithm 1 only
+	map.insertScan(seq.poses[1], seq.scans[1]);
+	ASSERT_EQ(map.size(), 2u);
+	const GridVector& first = map.vectors()[0];
+	const int cols = first.cols();
+	// wall row hit, front row visited (but for a corner cell or two outside the cone)
+	EXPECT_LE(first.totalVisit() - vis0, 2 * cols);
+	EXPECT_GE(first.totalVisit() - vis0, 2 * cols - 6);
+	EXPECT_NEAR(first.totalOccupy() - occ0, cols, 1);
+	EXPECT_DOUBLE_EQ(map.vectors()[1].totalOccupy(), seq.scans[1].vectors[0].totalOccupy());
+	EXPECT_GT(map.lastInsertStats().wipe.cellsHit, 0u);
+	// batch: each per-scan vector is wiped by the other scan only
+	const auto all = GlobalMap::buildPerScan(seq.poses, seq.scans, cfg);
+	ASSERT_EQ(all.size(), 2u);
+	for (int i = 0; i < 2; ++i)
+	{
+		EXPECT_NEAR(all[i].totalOccupy() - seq.scans[i].vectors[0].totalOccupy(), all[i].cols(), 1);
+		EXPECT_EQ(all[i].scanIndex, i);
+		EXPECT_EQ(all[i].id, uint64_t(i + 1));
+	}
+	EXPECT_THROW(GlobalMap::buildPerScan({seq.poses[0]}, seq.scans, cfg), std::invalid_argument);
+}
+
+TEST(GlobalMap, UpdateCostDependsOnTheNeighbourhoodOnly)
+{
+	// Rooms far apart: inserting scans in the last room never reaches the others.
+	GridVectorConfig cfg;
+	GlobalMap map(cfg);
+	const VectorExtractor ex;
+	size_t maxCandidatesLast = 0, vectorsLastRoom = 0;
+	for (int room = 0; room < 6; ++room)
+	{
+		const double ox = 100.0 * room;
+		const auto walls = gvtest::room(ox - 4, -3, ox + 4, 3);
+		const size_t before = map.size();
+		for (int t = 0; t < 6; ++t)
+		{
+			const TPose2D pose(ox - 1 + 0.4 * t, 0.2, 0.5 * t);
+			LocalScan l = ex.extract(gvtest::castScan(pose, walls));
+			l.scanIndex = room * 6 + t;
+			map.insertScan(pose, l);
+			if (room == 5) maxCandidatesLast = std::max(maxCandidatesLast, map.lastInsertStats().wipe.candidates);
+		}
+		if (room == 5) vectorsLastRoom = map.size() - before;
+	}
+	EXPECT_GT(map.size(), 5 * vectorsLastRoom);
+	// each triangle meets at most the (few) vectors of its own room
+	EXPECT_LE(maxCandidatesLast, 12 * vectorsLastRoom);
+	for (const auto& v : map.vectors())
+		EXPECT_LT(std::abs(v.centre().x - 100.0 * std::round(v.centre().x / 100.0)), 5.0);
+}
+
+TEST(GlobalMap, MergeAllReportsSourcesAndConserves)
+{
+	const auto walls = gvtest::room(-4, -3, 4, 3);
+	std::vector<TPose2D> poses;
+	for (int t = 0; t < 10; ++t) poses.emplace_back(-2 + 0.4 * t, 0.1 * t - 0.5, 0.3 * t);
+	const Sequence seq = extractAll(poses, [&](size_t) { return walls; });
+	const GridVectorConfig cfg;
+	const auto all = GlobalMap::buildPerScan(seq.poses, seq.scans, cfg);
+	const MergeResult r = GlobalMap::mergeAll(all, cfg);
+	ASSERT_EQ(r.vectors.size(), r.sources.size());
+	EXPECT_LE(r.vectors.size(), 8u);
+	std::multiset<uint64_t> seen;
+	double occIn = 0, occOut = 0, visIn = 0, visOut = 0;
+	for (const auto& v : all) occIn += v.totalOccupy(), visIn += v.totalVisit();
+	for (size_t k = 0; k < r.vectors.size(); ++k)
+	{
+		occOut += r.vectors[k].totalOccupy(), visOut += r.vectors[k].totalVisit();
+		EXPECT_TRUE(std::is_sorted(r.sources[k].begin(), r.sources[k].end()));
+		seen.insert(r.sources[k].begin(), r.sources[k].end());
+		if (r.sources[k].size() == 1) EXPECT_EQ(r.vectors[k].id, r.sources[k][0]);
+		else
+		{
+			EXPECT_GT(r.vectors[k].id, all.size());
+			EXPECT_EQ(r.vectors[k].mergedCount, r.sources[k].size());
+		}
+	}
+	EXPECT_EQ(seen.size(), all.size());
+	for (const auto& v : all) EXPECT_EQ(seen.count(v.id), 1u);
+	EXPECT_NEAR(occOut, occIn, 1e-4 * occIn);
+	EXPECT_NEAR(visOut, visIn, 1e-4 * visIn);
+	EXPECT_NEAR(totalPoints(r.vectors), totalPoints(all), 1e-3);
+	// Eq. 6 on the walls agrees before and after the merge
+	for (double x = -3.5; x <= 3.5; x += 0.25)
+		for (const TPoint2D p : {TPoint2D(x, 3.0), TPoint2D(x, -3.0), TPoint2D(x, 2.9)})
+		{
+			const double before = OccupancyConversion::occupancyAt(all, p);
+			const double after = OccupancyConversion::occupancyAt(r.vectors, p);
+			EXPECT_NEAR(after, before, 0.1) << p.x << " " << p.y;
+			if (std::abs(before - 0.5) > 0.15)
+			{
+				EXPECT_EQ(after > 0.5, before > 0.5) << p.x << " " << p.y;
+			}
+		}
+}
+
+TEST(GlobalMap, SetVectorsRebuildsTheIndex)
+{
+	GlobalMap map;
+	map.setVectors({GridVector({0, 0}, {2, 0}, GridOptions{}), GridVector({50, 0}, {52, 0}, GridOptions{})});
+	const auto c = map.correspondents(GridVector({1, 0.05}, {3, 0.05}, GridOptions{}));
+	ASSERT_EQ(c.size(), 1u);
+	EXPECT_EQ(c[0], 0u);
+	map.insertVector(GridVector({1, 0.0}, {3, 0.0}, GridOptions{}));
+	EXPECT_EQ(map.size(), 2u);  // merged into the first
+	EXPECT_EQ(map.index().size(), 2u);
+	GridVectorConfig cfg;
+	cfg.map.indexCellSize = 0.5;
+	map.setConfig(cfg);
+	EXPECT_EQ(map.index().cellSize(), 0.5);
+	EXPECT_EQ(map.correspondents(GridVector({50.5, 0}, {51, 0}, GridOptions{})).size(), 1u);
+	map.clear();
+	EXPECT_TRUE(map.empty());
+	EXPECT_EQ(map.index().size(), 0u);
+}

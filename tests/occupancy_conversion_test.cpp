@@ -46,11 +46,12 @@ TEST(OccupancyConversion, GridAtTheVectorResolution)
 	// MRPT snaps the grid to multiples of the resolution: output cells [-0.1, 0]
 	// and [0, 0.1] each straddle the wall row [-0.05, 0.05] (area average).
 	ASSERT_NEAR(g.getYMin(), -0.4, 1e-6);
+	auto occ = [&](double x, double y) { return 1.0 - g.getPos(x, y); };  // MRPT stores p(free)
 	for (double x = 0.25; x < 1.8; x += 0.1)
 	{
-		EXPECT_NEAR(g.getPos(x, -0.05), 10.0 / 11.0, 0.02) << x;  // behind (prior) + wall
-		EXPECT_NEAR(g.getPos(x, 0.05), 0.5, 0.02) << x;  // wall + free row in front
-		EXPECT_NEAR(g.getPos(x, 0.15), 0.05, 0.02) << x;  // free row only
+		EXPECT_NEAR(occ(x, -0.05), 10.0 / 11.0, 0.02) << x;  // behind (prior) + wall
+		EXPECT_NEAR(occ(x, 0.05), 0.5, 0.02) << x;  // wall + free row in front
+		EXPECT_NEAR(occ(x, 0.15), 0.05, 0.02) << x;  // free row only
 		EXPECT_EQ(g.getPos(x, 0.5), 0.5f) << x;  // nothing there
 	}
 	EXPECT_EQ(g.getPos(-0.2, 0.0), 0.5f);

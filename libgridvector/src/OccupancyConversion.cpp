@@ -133,7 +133,7 @@ void OccupancyConversion::fill(const OccupancyRaster& R, mrpt::maps::COccupancyG
 {
 	for (int iy = 0; iy < R.ny; ++iy)
 		for (int ix = 0; ix < R.nx; ++ix)
-			if (R.known(ix, iy)) grid.setCell(ix, iy, float(R.probability(ix, iy)));
+			if (R.known(ix, iy)) grid.setCell(ix, iy, float(1.0 - R.probability(ix, iy)));  // MRPT stores p(free)
 }
 
 void OccupancyConversion::fill(const std::vector<GridVector>& vectors,

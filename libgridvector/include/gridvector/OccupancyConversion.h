@@ -53,7 +53,8 @@ class OccupancyConversion
 	static OccupancyRaster rasterise(const std::vector<GridVector>& vectors, double xMin, double yMin,
 									 double res, int nx, int ny, int samplesPerAxis = 0);
 
-	/** Eq. 6 as an MRPT occupancy grid; unknown cells stay 0.5. */
+	/** Eq. 6 as an MRPT occupancy grid; unknown cells stay 0.5. Note MRPT's
+	 * convention: a cell's value is p(free) = 1 - p(occupied). */
 	static mrpt::maps::COccupancyGridMap2D toOccupancyGrid(const std::vector<GridVector>& vectors,
 														   const OccupancyConversionOptions& opt = {});
 	/** Fills an existing grid (its size and resolution are kept). */

@@ -182,11 +182,11 @@ void CarmenParser::onFlaser(const Tokens& t, bool rear)
 	const std::string what = str(t[0]);
 	const size_t n = count(t, 1, what + " beam count");
 	if (n == 0) parseError(pos_, what + ": zero beams");
-	const double ts = timestampAfter(t, 2 + n + 6, what);
 	const CarmenLaserParams& lp = rear ? params_.rear() : params_.front();
 	ScanMessage m;
 	m.type = what;
 	m.ranges = ranges(t, 2, n, what);
+	const double ts = timestampAfter(t, 2 + n + 6, what);
 	m.layout = carmenBeamLayout(n, lp);
 	m.flipped = lp.flipped;
 	m.maxRange = lp.maxRange;

@@ -1,9 +1,11 @@
+#include <gridvector/ErrorText.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/OdometryTrack.h>
 #include <gridvector/io/Progress.h>
 #include <gridvector/io/RawlogReader.h>
 
 #include <mrpt/io/CMemoryStream.h>
+#include <mrpt/maps/registerAllClasses.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -19,13 +21,6 @@ namespace gridvector::io
 namespace
 {
 using namespace mrpt::obs;
-
-std::string firstLine(const std::string& s)
-{
-	const auto nl = s.find('\n');
-	std::string l = s.substr(0, nl);
-	return l.size() > 200 ? l.substr(0, 200) + "..." : l;
-}
 
 class RawlogParser
 {
@@ -70,7 +65,7 @@ LogData RawlogParser::parse(const std::vector<char>& bytes)
 		}
 		catch (const std::exception& e)
 		{
-			fail("corrupt rawlog object (" + firstLine(e.what()) + ")");
+			fail("corrupt rawlog object (" + gridvector::oneLineError(e) + ")");
 		}
 		onObject(obj);
 		progress.update(double(mem.getPosition()) / double(bytes.size()), out_.scans.size());
@@ -131,6 +126,8 @@ void RawlogParser::onObservation(const CObservation::Ptr& obs, bool inFrame)
 
 void RawlogParser::finish()
 {
+	if (hasMotion_)  // scans before the first action: the robot has not moved yet
+		for (auto& r : out_.scans) r.hasOdometry = true;
 	if (!odomObs_.empty())
 		for (auto& r : out_.scans)
 		{
@@ -153,6 +150,7 @@ void RawlogParser::finish()
 
 LogData parseRawlog(const std::vector<char>& bytes, const std::string& source, const ReadOptions& opt)
 {
+	mrpt::maps::registerAllClasses_mrpt_maps();  // observation classes that live in mrpt-maps
 	RawlogParser p(source, opt);
 	return p.parse(bytes);
 }

@@ -1,0 +1,96 @@
+// gv-eval: trajectory accuracy (as ../shared/bench/evaltraj.py) and map quality
+// against gv-sim's truth.
+#include <gridvector/eval/MapEval.h>
+#include <gridvector/eval/TrajectoryEval.h>
+#include <gridvector/io/ArgParser.h>
+#include <gridvector/io/LogReader.h>
+
+#include <iostream>
+
+using namespace gridvector;
+
+namespace
+{
+bool isLog(std::string p)
+{
+	if (p.size() > 3 && p.compare(p.size() - 3, 3, ".gz") == 0) p.resize(p.size() - 3);
+	for (const char* ext : {".log", ".clf", ".rawlog"})
+	{
+		const std::string e(ext);
+		if (p.size() > e.size() && p.compare(p.size() - e.size(), e.size(), e) == 0) return true;
+	}
+	return false;
+}
+
+/** A trajectory file, or the odometry (--log-pose: the log's own poses) of a log. */
+io::Trajectory loadTrajectory(const std::string& path, bool logPose)
+{
+	if (!isLog(path)) return io::readTrajectory(path);
+	const io::Trajectory t = io::trajectoryOf(io::readLog(path), logPose);
+	if (t.empty()) throw std::runtime_error(path + ": no " + (logPose ? "log poses" : "odometry") + " in this log");
+	return t;
+}
+
+int trajectoryCommand(const io::ArgParser& a)
+{
+	a.requirePositional(3, 3);
+	eval::TrajectoryEvalOptions o;
+	o.maxTimeDiff = a.getDouble("max-dt", o.maxTimeDiff);
+	if (o.maxTimeDiff <= 0) a.fail("--max-dt must be > 0");
+	const bool logPose = a.has("log-pose");
+	const auto est = loadTrajectory(a.positional()[1], logPose);
+	const auto ref = loadTrajectory(a.positional()[2], logPose);
+	const auto m = eval::evaluateTrajectory(est, ref, o);
+	std::cout << (a.has("json") ? eval::formatJson(m) : eval::formatText(m)) << "\n";
+	return 0;
+}
+
+int mapCommand(const io::ArgParser& a)
+{
+	a.requirePositional(3, 3);
+	eval::MapEvalOptions o;
+	o.wallTolerance = o.dynamicTolerance = a.getDouble("tolerance", o.wallTolerance);
+	o.doorTolerance = a.getDouble("door-tolerance", o.doorTolerance);
+	if (o.wallTolerance <= 0 || o.doorTolerance <= 0) a.fail("tolerances must be > 0");
+	const auto vectors = eval::readVectors(a.positional()[1]);
+	const auto truth = sim::readTruth(a.positional()[2]);
+	std::vector<sim::DoorTruth> doors;
+	if (a.has("doors")) doors = sim::readDoors(a.get("doors"));
+	const auto m = eval::evaluateMap(vectors, truth, a.has("doors") ? &doors : nullptr, o);
+	if (a.has("json")) std::cout << eval::formatJson(m) << "\n";
+	else std::cout << a.positional()[1] << ": " << vectors.size() << " vectors\n" << eval::formatText(m);
+	return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	io::ArgParser args("gv-eval",
+					   "traj EST REF [options]      (EST, REF: 't x y theta' files or logs: their odometry)\n"
+					   "       gv-eval map VECTORS.txt TRUTHDIR [options]  (TRUTHDIR: a gv-sim output directory)");
+	args.flag("json", "print JSON instead of text");
+	args.option("max-dt", "S", "traj: match poses within this time difference (default 0.05 s)");
+	args.flag("log-pose", "traj: for logs, use the poses the log attaches to scans instead of odometry");
+	args.option("doors", "FILE", "map: detected doors 'hinge_x hinge_y length ...' to score door recall");
+	args.option("tolerance", "M", "map: distance for 'on a wall' / 'on a dynamic object' (default 0.1 m)");
+	args.option("door-tolerance", "M", "map: hinge match distance (default 0.3 m)");
+	try
+	{
+		if (!args.parse(argc, argv)) return std::cout << args.usage(), 0;
+		if (args.positional().empty()) args.fail("missing command (traj or map)");
+		const std::string cmd = args.positional()[0];
+		if (cmd == "traj") return trajectoryCommand(args);
+		if (cmd == "map") return mapCommand(args);
+		args.fail("unknown command '" + cmd + "' (expected traj or map)");
+	}
+	catch (const io::UsageError& e)
+	{
+		std::cerr << e.what() << "\n";
+		return 2;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << e.what() << "\n";
+		return 1;
+	}
+}

@@ -1,0 +1,165 @@
+// gv-sim: simulate a robot with a 2D laser in a dynamic built-in world; writes a
+// CARMEN log (noisy odometry) and the truth files gv-eval scores against.
+#include <gridvector/eval/TrajectoryEval.h>
+#include <gridvector/io/ArgParser.h>
+#include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/Progress.h>
+#include <gridvector/sim/BuiltinWorlds.h>
+#include <gridvector/sim/SimOptions.h>
+#include <gridvector/sim/Simulator.h>
+#include <gridvector/sim/TruthFiles.h>
+
+#include <mrpt/config/CConfigFile.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+#include <set>
+
+using namespace gridvector;
+
+namespace
+{
+std::string dashed(std::string k)
+{
+	for (char& c : k)
+		if (c == '_') c = '-';
+	return k;
+}
+
+/** Sets v from text; returns false if the text does not fit v's type. */
+bool assign(std::string& v, const std::string& s) { return v = s, true; }
+bool assign(bool& v, const std::string& s)
+{
+	if (s == "1" || s == "on" || s == "true" || s == "yes") return v = true, true;
+	if (s == "0" || s == "off" || s == "false" || s == "no") return v = false, true;
+	return false;
+}
+template <class T>
+bool assign(T& v, const std::string& s)
+{
+	char* end = nullptr;
+	errno = 0;
+	if constexpr (std::is_integral_v<T>)
+	{
+		const long long x = std::strtoll(s.c_str(), &end, 10);
+		v = T(x);
+	}
+	else
+		v = T(std::strtod(s.c_str(), &end));
+	return !s.empty() && *end == 0 && errno != ERANGE;
+}
+
+template <class T>
+const char* typeName(const T&)
+{
+	if constexpr (std::is_same_v<T, bool>) return "on|off";
+	else if constexpr (std::is_integral_v<T>) return "N";
+	else if constexpr (std::is_floating_point_v<T>) return "X";
+	else return "NAME";
+}
+
+/** [gv_sim] keys from an .ini file; unknown keys and bad values are errors. */
+void loadIni(sim::SimOptions& o, const std::string& path)
+{
+	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(path + ": cannot read (no such file)");
+	mrpt::config::CConfigFile ini(path);
+	std::vector<std::string> keys;
+	ini.getAllKeys("gv_sim", keys);
+	std::set<std::string> known;
+	o.visit([&](const char* k, auto&, const char*) { known.insert(k); });
+	for (const auto& k : keys)
+		if (!known.count(k)) throw std::runtime_error(path + ": [gv_sim] unknown key '" + k + "'");
+	o.visit([&](const char* k, auto& v, const char*) {
+		if (!ini.keyExists("gv_sim", k)) return;
+		const std::string s = ini.read_string("gv_sim", k, "");
+		if (!assign(v, s)) throw std::runtime_error(path + ": [gv_sim] " + k + ": '" + s + "' is not a valid " + typeName(v));
+	});
+}
+
+std::string pct(double part, double whole)
+{
+	char b[32];
+	std::snprintf(b, sizeof b, "%.2f%%", whole > 0 ? 100.0 * part / whole : 0.0);
+	return b;
+}
+
+void printSummary(const sim::SimResult& r, const std::string& dir, double seconds)
+{
+	const sim::SimStats& s = r.stats;
+	io::Trajectory truth, odo;
+	for (const auto& k : r.scans) truth.emplace_back(k.t, k.truth), odo.emplace_back(k.t, k.odometry);
+	char b[512];
+	std::snprintf(b, sizeof b, "gv-sim: world %s, seed %lld: %zu scans, %.1f m path, %.0f s, %zu people, %zu doors (%zu swings), %zu moved object(s)",
+				  r.world.name.c_str(), (long long)r.options.seed, s.scans, s.pathLength, s.duration, s.people,
+				  r.world.doors.size(), s.doorSwings, r.world.objects.size());
+	std::cout << b << "\n  beams " << s.beams << ": static " << pct(double(s.staticHits), double(s.beams)) << ", dynamic "
+			  << pct(double(s.dynamicHits), double(s.beams)) << " (people " << pct(double(s.personHits), double(s.beams))
+			  << ", doors " << pct(double(s.doorHits), double(s.beams)) << ", moved object "
+			  << pct(double(s.objectHits), double(s.beams)) << "), no return " << pct(double(s.noHits), double(s.beams)) << "\n";
+	if (r.scans.size() >= 3)
+		std::cout << "  odometry vs truth: " << eval::formatText(eval::evaluateTrajectory(odo, truth)) << "\n";
+	std::snprintf(b, sizeof b, "%.2f", seconds);
+	std::cout << "wrote " << (std::filesystem::path(dir) / sim::SimFiles::log).string() << " and the truth files in "
+			  << dir << "/ (" << b << " s)\n";
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	io::ArgParser args("gv-sim", "[--out DIR] [options]");
+	args.option("out", "DIR", "output directory (default: gv-sim-WORLD-seedN)");
+	args.option("config", "FILE", "read options from the [gv_sim] section of an .ini file (flags override)");
+	args.flag("list-worlds", "list the built-in worlds and exit");
+	args.flag("quiet", "no progress and no summary");
+	sim::SimOptions opt;
+	opt.visit([&](const char* k, auto& v, const char* help) { args.option(dashed(k), typeName(v), help); });
+	try
+	{
+		if (!args.parse(argc, argv)) return std::cout << args.usage(), 0;
+		args.requirePositional(0, 0);
+		if (args.has("list-worlds"))
+		{
+			for (const auto& n : sim::builtinWorldNames()) std::cout << n << ": " << sim::makeWorld(n).description << "\n";
+			return 0;
+		}
+		if (args.has("config")) loadIni(opt, args.get("config"));
+		opt.visit([&](const char* k, auto& v, const char*) {
+			const std::string flag = dashed(k);
+			if (args.has(flag) && !assign(v, args.get(flag)))
+				args.fail("--" + flag + " needs a " + typeName(v) + " value, got '" + args.get(flag) + "'");
+		});
+		try
+		{
+			opt.validate();
+		}
+		catch (const std::invalid_argument& e)
+		{
+			args.fail(std::string("--") + dashed(e.what()));
+		}
+		const std::string dir = args.get("out", "gv-sim-" + opt.world + "-seed" + std::to_string(opt.seed));
+		io::ensureWritableDirectory(dir);  // fail before simulating
+		const bool quiet = args.has("quiet");
+		const auto t0 = std::chrono::steady_clock::now();
+		io::Progress progress("simulating " + opt.world, quiet);
+		const sim::SimResult r = sim::simulate(opt, [&](double f) { progress.update(f, size_t(f * 100)); });
+		progress.done();
+		sim::writeSimulation(r, dir);
+		const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+		if (!quiet) printSummary(r, dir, secs);
+		return 0;
+	}
+	catch (const io::UsageError& e)
+	{
+		std::cerr << e.what() << "\n";
+		return 2;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << e.what() << "\n";
+		return 1;
+	}
+}

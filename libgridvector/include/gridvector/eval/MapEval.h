@@ -1,0 +1,60 @@
+// Map quality against gv-sim's truth: static precision and recall, ghost
+// length, dynamic detection and door recall (Sec. 4.1 static/dynamic vectors,
+// Sec. 5.4 door detection).
+#pragma once
+
+#include <gridvector/sim/TruthFiles.h>
+
+#include <string>
+#include <vector>
+
+namespace gridvector::eval
+{
+/** One line of a vectors file: "x1 y1 x2 y2 p_static [static|dynamic]". */
+struct MapVector
+{
+	sim::Segment seg;
+	double pStatic = 1;
+	bool isStatic = true;  //!< the label column, else p_static >= 0.5
+};
+
+/** Reads a vectors file; malformed lines throw "file:line: what is wrong". */
+std::vector<MapVector> readVectors(const std::string& path);
+
+struct MapEvalOptions
+{
+	double wallTolerance = 0.10;  //!< a vector point "on a wall" is within this of it [m]
+	double dynamicTolerance = 0.10;  //!< ... on a dynamic hit / object / door sweep [m]
+	double doorTolerance = 0.30;  //!< a detected hinge matches a true one within this [m]
+	double sampleStep = 0.01;  //!< length integrals are sampled this finely [m]
+};
+
+struct MapMetrics
+{
+	double staticLength = 0, dynamicLength = 0;  //!< total vector length per class [m]
+	double staticOnWalls = 0;  //!< static length within tolerance of a true static wall [m]
+	double staticPrecision = 0;  //!< staticOnWalls / staticLength
+	double seenWallLength = 0;  //!< true wall length seen by static beams [m]
+	double seenCovered = 0;  //!< ... of it within tolerance of a static vector [m]
+	double staticRecall = 0;  //!< seenCovered / seenWallLength
+	double ghostLength = 0;  //!< static length off the walls, on dynamic objects / moved object / door sweeps [m]
+	double ghostShare = 0;  //!< ghostLength / staticLength
+	double dynamicHitLength = 0;  //!< total length of runs of dynamic hits (truth_dynamic.txt) [m]
+	double dynamicHitDetected = 0;  //!< ... of it within tolerance of a dynamic vector [m]
+	double dynamicDetection = 0;  //!< dynamicHitDetected / dynamicHitLength
+	double dynamicOnWalls = 0;  //!< dynamic vector length lying on true static walls [m]
+	bool doorsEvaluated = false;
+	size_t movingDoors = 0;  //!< true doors that swung during the run
+	size_t doorsFound = 0;  //!< ... with a detected hinge within doorTolerance
+	size_t detectedDoors = 0, detectedCorrect = 0;
+	double doorRecall = 0, doorPrecision = 0;
+};
+
+/** detectedDoors may be null (door recall not evaluated). */
+MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& truth,
+					   const std::vector<sim::DoorTruth>* detectedDoors, const MapEvalOptions& opt = {});
+
+std::string formatText(const MapMetrics& m);
+std::string formatJson(const MapMetrics& m);
+
+}  // namespace gridvector::eval

@@ -1,0 +1,44 @@
+// Trajectory accuracy: ATE-RMSE after the best SE(2) alignment and Kuemmerle et
+// al. (2009) relation errors, computed exactly as ../shared/bench/evaltraj.py.
+#pragma once
+
+#include <gridvector/io/LogReader.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace gridvector::eval
+{
+struct TrajectoryEvalOptions
+{
+	double maxTimeDiff = 0.05;  //!< estimate matched to a reference pose within this [s]
+	double loopDistance = 3.0;  //!< loop pairs: closer than this in the reference [m]
+	size_t loopMinSeparation = 20;  //!< ... and at least this many matched poses apart
+	size_t maxLoopPairs = 2000;  //!< loop pairs are thinned to every (count / this)-th
+};
+
+struct TrajectoryMetrics
+{
+	size_t matched = 0;
+	double ateRmse = 0;  //!< [m]
+	double localT = 0, localRDeg = 0;  //!< consecutive pairs: mean |dt| [m], mean |dr| [deg]
+	size_t localPairs = 0;
+	double loopT = 0, loopRDeg = 0;  //!< loop pairs (NaN if none)
+	size_t loopPairs = 0;
+};
+
+/** (estimate, reference) pose pairs: for every reference pose, the estimate
+ * nearest in time within maxTimeDiff, if any. */
+std::vector<std::pair<mrpt::math::TPose2D, mrpt::math::TPose2D>> matchByTimestamp(
+	const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff);
+
+/** Throws std::runtime_error("too few matched poses (n)") when fewer than 3 poses match. */
+TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajectory& ref,
+									 const TrajectoryEvalOptions& opt = {});
+
+/** evaltraj.py's output line: "n=... ate_rmse_m=... rel_local_t_m=... ...". */
+std::string formatText(const TrajectoryMetrics& m);
+std::string formatJson(const TrajectoryMetrics& m);
+
+}  // namespace gridvector::eval

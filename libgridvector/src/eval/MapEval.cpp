@@ -1,0 +1,179 @@
+#include <gridvector/eval/MapEval.h>
+#include <gridvector/eval/SegmentIndex.h>
+#include <gridvector/io/FileBytes.h>
+#include <gridvector/io/TextParsing.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <sstream>
+
+namespace gridvector::eval
+{
+namespace
+{
+using sim::Segment;
+using sim::Vec2;
+
+/** Integrates over a segment's length: sum of (length share) for sample points where pred holds. */
+double lengthWhere(const Segment& s, double step, const std::function<bool(const Vec2&)>& pred)
+{
+	const double len = s.length();
+	if (len <= 0) return 0;
+	const int n = std::max(1, int(std::ceil(len / step)));
+	int hits = 0;
+	for (int i = 0; i < n; i++) hits += pred(s.at((i + 0.5) / n));
+	return len * hits / n;
+}
+
+/** Door leaves every 3 deg between closed and open: together they cover the swept sector. */
+std::vector<Segment> doorSweeps(const std::vector<sim::DoorTruth>& doors)
+{
+	std::vector<Segment> out;
+	for (const auto& d : doors)
+	{
+		const double span = std::remainder(d.openAngle - d.closedAngle, 2 * M_PI);
+		const int n = std::max(1, int(std::ceil(std::abs(span) / (3 * M_PI / 180))));
+		for (int k = 0; k <= n; k++)
+			out.emplace_back(d.hinge, d.hinge + Vec2::polar(d.length, d.closedAngle + span * k / n));
+	}
+	return out;
+}
+
+double ratio(double a, double b) { return b > 0 ? a / b : 0.0; }
+
+std::string f(double v, const char* fmt = "%.4f")
+{
+	char b[64];
+	std::snprintf(b, sizeof b, fmt, v);
+	return b;
+}
+
+void evaluateDoors(MapMetrics& m, const sim::Truth& truth, const std::vector<sim::DoorTruth>& detected, double tol)
+{
+	m.doorsEvaluated = true;
+	m.detectedDoors = detected.size();
+	const auto near = [&](const Vec2& a, const Vec2& b) { return (a - b).norm() <= tol; };
+	for (const auto& d : truth.doors)
+	{
+		if (d.swings == 0) continue;
+		m.movingDoors++;
+		for (const auto& q : detected)
+			if (near(q.hinge, d.hinge)) { m.doorsFound++; break; }
+	}
+	for (const auto& q : detected)
+		for (const auto& d : truth.doors)
+			if (near(q.hinge, d.hinge)) { m.detectedCorrect++; break; }
+	m.doorRecall = ratio(double(m.doorsFound), double(m.movingDoors));
+	m.doorPrecision = ratio(double(m.detectedCorrect), double(m.detectedDoors));
+}
+}  // namespace
+
+std::vector<MapVector> readVectors(const std::string& path)
+{
+	const std::vector<char> text = io::readFileBytes(path);
+	io::LineCursor cur(text);
+	std::string_view line;
+	io::TextPos pos{path, 0};
+	std::vector<MapVector> out;
+	while (cur.next(line))
+	{
+		pos.line = cur.lineNumber();
+		const auto t = io::splitTokens(line);
+		if (t.empty() || t[0][0] == '#') continue;
+		if (t.size() != 5 && t.size() != 6)
+			io::parseError(pos, "expected 'x1 y1 x2 y2 p_static [static|dynamic]', found " + std::to_string(t.size()) + " fields");
+		MapVector v;
+		v.seg = {io::parseDouble(t[0], pos, "x1"), io::parseDouble(t[1], pos, "y1"), io::parseDouble(t[2], pos, "x2"),
+				 io::parseDouble(t[3], pos, "y2")};
+		v.pStatic = io::parseDouble(t[4], pos, "p_static");
+		if (v.pStatic < 0 || v.pStatic > 1) io::parseError(pos, "p_static is " + std::string(t[4]) + " (must be in [0, 1])");
+		v.isStatic = v.pStatic >= 0.5;
+		if (t.size() == 6)
+		{
+			if (t[5] != "static" && t[5] != "dynamic")
+				io::parseError(pos, "label is '" + std::string(t[5]) + "' (expected static or dynamic)");
+			v.isStatic = t[5] == "static";
+		}
+		out.push_back(v);
+	}
+	return out;
+}
+
+MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& truth,
+					   const std::vector<sim::DoorTruth>* detectedDoors, const MapEvalOptions& opt)
+{
+	std::vector<Segment> staticVecs, dynamicVecs, dynamicPlaces = doorSweeps(truth.doors), hitSegs;
+	for (const auto& v : vectors) (v.isStatic ? staticVecs : dynamicVecs).push_back(v.seg);
+	for (const auto& e : truth.objectEdges) dynamicPlaces.push_back(e.edge);
+	for (const auto& h : truth.hits) dynamicPlaces.push_back(h.seg), hitSegs.push_back(h.seg);
+	const SegmentIndex walls(truth.walls), statics(staticVecs), dynamics(dynamicVecs), places(dynamicPlaces);
+	const double tw = opt.wallTolerance, td = opt.dynamicTolerance, step = opt.sampleStep;
+
+	MapMetrics m;
+	for (const auto& s : staticVecs)
+	{
+		m.staticLength += s.length();
+		m.staticOnWalls += lengthWhere(s, step, [&](const Vec2& p) { return walls.within(p, tw); });
+		m.ghostLength += lengthWhere(s, step, [&](const Vec2& p) { return !walls.within(p, tw) && places.within(p, td); });
+	}
+	for (const auto& s : dynamicVecs)
+	{
+		m.dynamicLength += s.length();
+		m.dynamicOnWalls += lengthWhere(s, step, [&](const Vec2& p) { return walls.within(p, tw); });
+	}
+	for (const auto& s : truth.seenWalls)
+	{
+		m.seenWallLength += s.length();
+		m.seenCovered += lengthWhere(s, step, [&](const Vec2& p) { return statics.within(p, tw); });
+	}
+	for (const auto& s : hitSegs)
+	{
+		m.dynamicHitLength += s.length();
+		m.dynamicHitDetected += lengthWhere(s, step, [&](const Vec2& p) { return dynamics.within(p, td); });
+	}
+	m.staticPrecision = ratio(m.staticOnWalls, m.staticLength);
+	m.staticRecall = ratio(m.seenCovered, m.seenWallLength);
+	m.ghostShare = ratio(m.ghostLength, m.staticLength);
+	m.dynamicDetection = ratio(m.dynamicHitDetected, m.dynamicHitLength);
+	if (detectedDoors) evaluateDoors(m, truth, *detectedDoors, opt.doorTolerance);
+	return m;
+}
+
+std::string formatText(const MapMetrics& m)
+{
+	std::ostringstream os;
+	os << "static vectors:    " << f(m.staticLength, "%.2f") << " m, precision " << f(m.staticPrecision)
+	   << " (" << f(m.staticOnWalls, "%.2f") << " m on true walls)\n"
+	   << "static recall:     " << f(m.staticRecall) << " (" << f(m.seenCovered, "%.2f") << " of "
+	   << f(m.seenWallLength, "%.2f") << " m of seen wall covered)\n"
+	   << "ghost length:      " << f(m.ghostLength, "%.2f") << " m (" << f(m.ghostShare) << " of static length)\n"
+	   << "dynamic vectors:   " << f(m.dynamicLength, "%.2f") << " m (" << f(m.dynamicOnWalls, "%.2f")
+	   << " m of it on true walls)\n"
+	   << "dynamic detection: " << f(m.dynamicDetection) << " (" << f(m.dynamicHitDetected, "%.2f") << " of "
+	   << f(m.dynamicHitLength, "%.2f") << " m of dynamic hits)\n";
+	if (m.doorsEvaluated)
+		os << "door recall:       " << f(m.doorRecall) << " (" << m.doorsFound << " of " << m.movingDoors
+		   << " swinging doors), precision " << f(m.doorPrecision) << " (" << m.detectedCorrect << " of "
+		   << m.detectedDoors << " detected)\n";
+	return os.str();
+}
+
+std::string formatJson(const MapMetrics& m)
+{
+	std::ostringstream os;
+	os << "{\"static_length_m\": " << f(m.staticLength, "%.6f") << ", \"static_precision\": " << f(m.staticPrecision, "%.6f")
+	   << ", \"seen_wall_length_m\": " << f(m.seenWallLength, "%.6f") << ", \"static_recall\": " << f(m.staticRecall, "%.6f")
+	   << ", \"ghost_length_m\": " << f(m.ghostLength, "%.6f") << ", \"ghost_share\": " << f(m.ghostShare, "%.6f")
+	   << ", \"dynamic_length_m\": " << f(m.dynamicLength, "%.6f") << ", \"dynamic_on_walls_m\": " << f(m.dynamicOnWalls, "%.6f")
+	   << ", \"dynamic_hit_length_m\": " << f(m.dynamicHitLength, "%.6f")
+	   << ", \"dynamic_detection\": " << f(m.dynamicDetection, "%.6f");
+	if (m.doorsEvaluated)
+		os << ", \"moving_doors\": " << m.movingDoors << ", \"doors_found\": " << m.doorsFound
+		   << ", \"door_recall\": " << f(m.doorRecall, "%.6f") << ", \"detected_doors\": " << m.detectedDoors
+		   << ", \"door_precision\": " << f(m.doorPrecision, "%.6f");
+	os << "}";
+	return os.str();
+}
+
+}  // namespace gridvector::eval

@@ -1,0 +1,131 @@
+#include <gridvector/eval/TrajectoryEval.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+
+namespace gridvector::eval
+{
+namespace
+{
+using mrpt::math::TPose2D;
+using Pairs = std::vector<std::pair<TPose2D, TPose2D>>;
+
+double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
+
+/** b relative to a, in a's frame. */
+TPose2D relative(const TPose2D& a, const TPose2D& b)
+{
+	const double c = std::cos(a.phi), s = std::sin(a.phi), dx = b.x - a.x, dy = b.y - a.y;
+	return {c * dx + s * dy, -s * dx + c * dy, wrap(b.phi - a.phi)};
+}
+
+/** Umeyama without scale: rotate and translate the estimate onto the reference; returns the RMSE. */
+double alignedRmse(const Pairs& p)
+{
+	const double n = double(p.size());
+	double mx = 0, my = 0, gx = 0, gy = 0;
+	for (const auto& [e, g] : p) mx += e.x, my += e.y, gx += g.x, gy += g.y;
+	mx /= n, my /= n, gx /= n, gy /= n;
+	double sxx = 0, sxy = 0;
+	for (const auto& [e, g] : p)
+	{
+		sxx += (e.x - mx) * (g.x - gx) + (e.y - my) * (g.y - gy);
+		sxy += (e.x - mx) * (g.y - gy) - (e.y - my) * (g.x - gx);
+	}
+	const double th = std::atan2(sxy, sxx), c = std::cos(th), s = std::sin(th);
+	double se = 0;
+	for (const auto& [e, g] : p)
+	{
+		const double x = c * (e.x - mx) - s * (e.y - my) + gx, y = s * (e.x - mx) + c * (e.y - my) + gy;
+		se += (x - g.x) * (x - g.x) + (y - g.y) * (y - g.y);
+	}
+	return std::sqrt(se / n);
+}
+
+/** Mean translational [m] and rotational [deg] relation errors over index pairs. */
+std::pair<double, double> relationErrors(const Pairs& p, const std::vector<std::pair<size_t, size_t>>& idx)
+{
+	if (idx.empty()) return {std::nan(""), std::nan("")};
+	double st = 0, sr = 0;
+	for (const auto& [i, j] : idx)
+	{
+		const TPose2D re = relative(p[i].first, p[j].first), rg = relative(p[i].second, p[j].second);
+		st += std::hypot(re.x - rg.x, re.y - rg.y);
+		sr += std::abs(wrap(re.phi - rg.phi) * 180.0 / M_PI);
+	}
+	return {st / double(idx.size()), sr / double(idx.size())};
+}
+
+std::string num(const char* fmt, double v)
+{
+	if (std::isnan(v)) return "nan";
+	char b[64];
+	std::snprintf(b, sizeof b, fmt, v);
+	return b;
+}
+
+std::string jsonNum(double v) { return std::isfinite(v) ? num("%.6f", v) : "null"; }
+}  // namespace
+
+Pairs matchByTimestamp(const io::Trajectory& estIn, const io::Trajectory& ref, double maxTimeDiff)
+{
+	io::Trajectory est = estIn;
+	std::stable_sort(est.begin(), est.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+	Pairs out;
+	for (const auto& [t, g] : ref)
+	{
+		const auto it = std::lower_bound(est.begin(), est.end(), t, [](const auto& e, double v) { return e.first < v; });
+		const long i = long(it - est.begin());
+		long best = -1;
+		for (long j : {i - 1, i})
+			if (j >= 0 && j < long(est.size()) && std::abs(est[size_t(j)].first - t) < maxTimeDiff)
+				if (best < 0 || std::abs(est[size_t(j)].first - t) < std::abs(est[size_t(best)].first - t)) best = j;
+		if (best >= 0) out.emplace_back(est[size_t(best)].second, g);
+	}
+	return out;
+}
+
+TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajectory& ref, const TrajectoryEvalOptions& opt)
+{
+	const Pairs p = matchByTimestamp(est, ref, opt.maxTimeDiff);
+	const size_t n = p.size();
+	if (n < 3) throw std::runtime_error("too few matched poses (" + std::to_string(n) + ")");
+	TrajectoryMetrics m;
+	m.matched = n;
+	m.ateRmse = alignedRmse(p);
+	std::vector<std::pair<size_t, size_t>> cons, loops;
+	for (size_t i = 0; i + 1 < n; i++) cons.emplace_back(i, i + 1);
+	for (size_t i = 0; i < n; i++)
+		for (size_t j = i + opt.loopMinSeparation; j < n; j++)
+			if (std::hypot(p[i].second.x - p[j].second.x, p[i].second.y - p[j].second.y) < opt.loopDistance)
+				loops.emplace_back(i, j);
+	const size_t stride = std::max<size_t>(1, loops.size() / opt.maxLoopPairs);
+	std::vector<std::pair<size_t, size_t>> thinned;
+	for (size_t k = 0; k < loops.size(); k += stride) thinned.push_back(loops[k]);
+	std::tie(m.localT, m.localRDeg) = relationErrors(p, cons);
+	std::tie(m.loopT, m.loopRDeg) = relationErrors(p, thinned);
+	m.localPairs = cons.size();
+	m.loopPairs = thinned.size();
+	return m;
+}
+
+std::string formatText(const TrajectoryMetrics& m)
+{
+	return "n=" + std::to_string(m.matched) + " ate_rmse_m=" + num("%.4f", m.ateRmse) +
+		   " rel_local_t_m=" + num("%.4f", m.localT) + " rel_local_r_deg=" + num("%.3f", m.localRDeg) +
+		   " rel_loop_t_m=" + num("%.4f", m.loopT) + " rel_loop_r_deg=" + num("%.3f", m.loopRDeg) +
+		   " loop_pairs=" + std::to_string(m.loopPairs);
+}
+
+std::string formatJson(const TrajectoryMetrics& m)
+{
+	return "{\"n\": " + std::to_string(m.matched) + ", \"ate_rmse_m\": " + jsonNum(m.ateRmse) +
+		   ", \"rel_local_t_m\": " + jsonNum(m.localT) + ", \"rel_local_r_deg\": " + jsonNum(m.localRDeg) +
+		   ", \"local_pairs\": " + std::to_string(m.localPairs) + ", \"rel_loop_t_m\": " + jsonNum(m.loopT) +
+		   ", \"rel_loop_r_deg\": " + jsonNum(m.loopRDeg) + ", \"loop_pairs\": " + std::to_string(m.loopPairs) + "}";
+}
+
+}  // namespace gridvector::eval

@@ -1,0 +1,308 @@
+// CARMEN reader: real logs, gzip, PARAM handling, beam layout and malformed input.
+#include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/CarmenReader.h>
+#include <gridvector/io/FileBytes.h>
+#include <gridvector/io/LogReader.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+using namespace gridvector::io;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kIntel = std::string(GV_SHARED_DIR) + "/data/intel-corrected.log.gz";
+const std::string kCsail = std::string(GV_SHARED_DIR) + "/data/csail-corrected.log.gz";
+const std::string kFreiburg = std::string(GV_SHARED_DIR) + "/data/freiburg-101-corrected.log.gz";
+constexpr double kDeg = M_PI / 180.0;
+
+LogData parse(const std::string& text) { return parseCarmenLog(std::vector<char>(text.begin(), text.end()), "mem.log"); }
+
+std::string flaser(int n, double range, const std::string& tail = "1 2 0.5 3 4 0.25 10.5 host 10.5")
+{
+	std::string s = "PARAM robot_front_laser_max 80 h 0\nFLASER " + std::to_string(n);
+	for (int i = 0; i < n; i++) s += " " + std::to_string(range);
+	return s + " " + tail + "\n";
+}
+
+std::string errorOf(const std::string& text)
+{
+	try
+	{
+		parse(text);
+	}
+	catch (const std::runtime_error& e)
+	{
+		return e.what();
+	}
+	return "no error";
+}
+
+/** World angle of beam i of a scan taken at the origin, as MRPT computes it. */
+double beamAngle(const mrpt::obs::CObservation2DRangeScan& s, size_t i)
+{
+	mrpt::maps::CSimplePointsMap m;
+	m.insertionOptions.minDistBetweenLaserPoints = 0;
+	m.insertObservation(s);
+	size_t k = 0;  // index among valid beams
+	for (size_t j = 0; j < i; j++) k += s.getScanRangeValidity(j);
+	mrpt::math::TPoint2D p;
+	m.getPoint(k, p.x, p.y);
+	return std::atan2(p.y, p.x);
+}
+
+std::string tempPath(const std::string& name) { return (fs::temp_directory_path() / ("gv_carmen_test_" + name)).string(); }
+}  // namespace
+
+TEST(CarmenReader, IntelHeadMatchesTheFile)
+{
+	const LogData d = readLog(kIntel);
+	ASSERT_EQ(d.scans.size(), 910u);
+	const ScanRecord& r = d.scans.front();
+	// FLASER 180 1.23 ... 0.600266 -0.0320327 -0.354665 0.600266 -0.0320327 -0.354665 32.9068 pippo 32.9068
+	EXPECT_DOUBLE_EQ(r.timestamp, 32.9068);
+	EXPECT_DOUBLE_EQ(d.scans[1].timestamp, 35.1051);
+	ASSERT_TRUE(r.hasLogPose && r.hasOdometry);
+	EXPECT_NEAR(r.logPose.x, 0.600266, 1e-9);
+	EXPECT_NEAR(r.logPose.y, -0.0320327, 1e-9);
+	EXPECT_NEAR(r.logPose.phi, -0.354665, 1e-9);
+	ASSERT_EQ(r.scan->getScanSize(), 180u);
+	EXPECT_FLOAT_EQ(r.scan->getScanRange(0), 1.09f);
+	EXPECT_FLOAT_EQ(r.scan->getScanRange(179), 1.23f);
+	EXPECT_NEAR(r.scan->aperture, 179 * kDeg, 1e-6);  // 180 beams at 1 deg
+	EXPECT_NEAR(r.scan->sensorPose.yaw(), -0.5 * kDeg, 1e-9);  // first beam at -90 deg
+	EXPECT_TRUE(r.scan->rightToLeft);
+	EXPECT_NEAR(r.scan->maxRange, 81.83, 1e-4);  // no PARAM: the log's "no return" value
+	EXPECT_NEAR(mrpt::Clock::toDouble(r.scan->timestamp), r.timestamp, 1e-6);
+	// the 81.83 readings are "no return", the others valid
+	size_t noReturn = 0, valid = 0;
+	for (const auto& s : d.scans)
+		for (size_t i = 0; i < s.scan->getScanSize(); i++)
+		{
+			const bool isMax = s.scan->getScanRange(i) >= 81.8f;
+			noReturn += isMax;
+			valid += s.scan->getScanRangeValidity(i);
+			EXPECT_NE(isMax, s.scan->getScanRangeValidity(i));
+		}
+	EXPECT_EQ(noReturn, 4172u);
+	EXPECT_EQ(valid, 910u * 180u - 4172u);
+	EXPECT_NE(d.summary.find("910 FLASER"), std::string::npos);
+	EXPECT_NE(d.summary.find("14541 ODOM"), std::string::npos);
+	EXPECT_NE(d.summary.find("910 NEFF ignored"), std::string::npos);
+}
+
+TEST(CarmenReader, ParamLinesSetResolutionFovAndMaxRange)
+{
+	const LogData c = readLog(kCsail);  // PARAM resolution 0.5, fov 3.14159 (rad), front_laser_max 50
+	ASSERT_EQ(c.scans.size(), 406u);
+	EXPECT_EQ(c.scans[0].scan->getScanSize(), 361u);
+	EXPECT_NEAR(c.scans[0].scan->aperture, M_PI, 1e-5);
+	EXPECT_NEAR(c.scans[0].scan->sensorPose.yaw(), 0.0, 1e-5);
+	EXPECT_FLOAT_EQ(c.scans[0].scan->maxRange, 50.f);
+	EXPECT_NE(c.summary.find("warning"), std::string::npos);  // its timestamps have 6 digits only
+
+	const LogData f = readLog(kFreiburg);  // resolution 0.5, 360 beams, offset -0.04, max 80.99
+	ASSERT_EQ(f.scans.size(), 292u);
+	EXPECT_NEAR(f.scans[0].scan->aperture, 179.5 * kDeg, 1e-6);
+	EXPECT_NEAR(f.scans[0].scan->sensorPose.x(), -0.04, 1e-9);
+	EXPECT_FLOAT_EQ(f.scans[0].scan->maxRange, 80.99f);
+	EXPECT_DOUBLE_EQ(f.scans[0].timestamp, 158.415);
+}
+
+TEST(CarmenReader, BeamLayoutFollowsCarmen)
+{
+	// 180 beams, no PARAM: 1 deg from -90 to +89
+	LogData d = parse(flaser(180, 5.0));
+	ASSERT_EQ(d.scans.size(), 1u);
+	auto& s180 = *d.scans[0].scan;
+	EXPECT_NEAR(beamAngle(s180, 0), -90 * kDeg, 1e-5);
+	EXPECT_NEAR(beamAngle(s180, 179), 89 * kDeg, 1e-5);
+	// 181 beams: -90..+90; 361: 0.5 deg; 360: -90..+89.5
+	EXPECT_NEAR(parse(flaser(181, 5.0)).scans[0].scan->aperture, M_PI, 1e-6);
+	auto s361 = parse(flaser(361, 5.0)).scans[0].scan;
+	EXPECT_NEAR(beamAngle(*s361, 1), -89.5 * kDeg, 1e-5);
+	EXPECT_NEAR(beamAngle(*s361, 360), 90 * kDeg, 1e-5);
+	auto s360 = parse(flaser(360, 5.0)).scans[0].scan;
+	EXPECT_NEAR(beamAngle(*s360, 0), -90 * kDeg, 1e-5);
+	EXPECT_NEAR(beamAngle(*s360, 359), 89.5 * kDeg, 1e-5);
+	// PARAM resolution + fov in degrees (as mkbench writes it) + offsets + flipped
+	const std::string params =
+		"PARAM laser_front_laser_resolution 0.5 h 0\nPARAM laser_front_laser_fov 90 h 0\n"
+		"PARAM robot_front_laser_max 20 h 0\nPARAM robot_frontlaser_offset 0.3 h 0\n"
+		"PARAM laser_front_laser_flipped 1 h 0\n";
+	auto p = parse(params + flaser(181, 5.0)).scans[0].scan;
+	EXPECT_NEAR(p->aperture, 90 * kDeg, 1e-6);
+	EXPECT_FLOAT_EQ(p->maxRange, 20.f);
+	EXPECT_NEAR(p->sensorPose.x(), 0.3, 1e-12);
+	EXPECT_FALSE(p->rightToLeft);
+	// flipped: beam 0 looks to the left (+45 deg), seen from the laser
+	mrpt::obs::CObservation2DRangeScan centred = *p;
+	centred.sensorPose = mrpt::poses::CPose3D(0, 0, 0, p->sensorPose.yaw(), 0, 0);
+	EXPECT_NEAR(beamAngle(centred, 0), 45 * kDeg, 1e-5);
+	EXPECT_NEAR(beamAngle(centred, 180), -45 * kDeg, 1e-5);
+}
+
+TEST(CarmenReader, PosesTimestampsAndValidity)
+{
+	const std::string text = "# comment\n\nPARAM robot_front_laser_max 8.0 h 0\n"
+							 "FLASER 5 1.0 0 8.0 9.5 2.5 1 2 0.5 3 4 0.25 10.5 host 10.75\n";
+	const LogData d = parse(text);
+	ASSERT_EQ(d.scans.size(), 1u);
+	const ScanRecord& r = d.scans[0];
+	EXPECT_DOUBLE_EQ(r.timestamp, 10.5);
+	EXPECT_DOUBLE_EQ(r.logPose.x, 1);
+	EXPECT_DOUBLE_EQ(r.logPose.phi, 0.5);
+	EXPECT_DOUBLE_EQ(r.odometry.x, 3);
+	EXPECT_DOUBLE_EQ(r.odometry.y, 4);
+	EXPECT_DOUBLE_EQ(r.odometry.phi, 0.25);
+	const bool expect[5] = {true, false, false, false, true};  // 0 and >= max are no return
+	for (int i = 0; i < 5; i++) EXPECT_EQ(r.scan->getScanRangeValidity(i), expect[i]) << i;
+}
+
+TEST(CarmenReader, RobotLaserAndRawLaser)
+{
+	// ROBOTLASER1 type start fov res max acc mode n r.. m laser(3) robot(3) tv rv fs ss ta ts host lts
+	const std::string robotLaser =
+		"ROBOTLASER1 0 -1.5707963 3.1415926 0.0174533 30 0.01 0 181" + std::string(181 * 4, ' ') + " 0 "
+		"1.2 2 0 1 2 0 0 0 0 0 0 20.25 h 20.25\n";
+	std::string rl = robotLaser;
+	for (size_t i = 0, k = rl.find(" 181") + 4; i < 181; i++) rl.replace(k + 4 * i, 4, " 2.5");
+	LogData d = parse(rl);
+	ASSERT_EQ(d.scans.size(), 1u);
+	EXPECT_NEAR(d.scans[0].scan->aperture, M_PI, 1e-5);
+	EXPECT_FLOAT_EQ(d.scans[0].scan->maxRange, 30.f);
+	EXPECT_NEAR(d.scans[0].scan->sensorPose.x(), 0.2, 1e-9);  // laser 0.2 m ahead of the robot
+	EXPECT_DOUBLE_EQ(d.scans[0].odometry.x, 1);
+	EXPECT_DOUBLE_EQ(d.scans[0].timestamp, 20.25);
+
+	// RAWLASER1 has no pose: odometry comes from ODOM, interpolated at its time
+	std::string raw = "ODOM 0 0 0 0 0 0 1.0 h 1.0\nODOM 2 0 1.0 0 0 0 3.0 h 3.0\n"
+					  "RAWLASER1 0 -1.5707963 3.1415926 0.0174533 30 0.01 0 3 1 2 3 0 2.0 h 2.0\n";
+	d = parse(raw);
+	ASSERT_EQ(d.scans.size(), 1u);
+	ASSERT_TRUE(d.scans[0].hasOdometry);
+	EXPECT_FALSE(d.scans[0].hasLogPose);
+	EXPECT_NEAR(d.scans[0].odometry.x, 1.0, 1e-12);
+	EXPECT_NEAR(d.scans[0].odometry.phi, 0.5, 1e-12);
+}
+
+TEST(CarmenReader, MalformedLinesNameFileAndLine)
+{
+	const std::string ok = flaser(5, 1.0);
+	EXPECT_EQ(errorOf(ok + "FLASER 5 1 1 1 1 1 0 0 0 0 0 0\n"), "mem.log:3: FLASER: expected 16 fields, found 13");
+	EXPECT_EQ(errorOf("FLASER 5 1 nan 1 1 1 0 0 0 0 0 0 1 h 1\n"),
+			  "mem.log:1: FLASER range 1 is 'nan' (not a finite number)");
+	EXPECT_EQ(errorOf("\n\nFLASER 5 1 1 -2 1 1 0 0 0 0 0 0 1 h 1\n"),
+			  "mem.log:3: FLASER range 2 is -2 (negative)");
+	EXPECT_EQ(errorOf("FLASER 3 1 inf 1 0 0 0 0 0 0 1 h 1\n"),
+			  "mem.log:1: FLASER range 1 is 'inf' (not a finite number)");
+	EXPECT_EQ(errorOf("FLASER x 1\n"), "mem.log:1: FLASER beam count is 'x' (not an integer)");
+	EXPECT_EQ(errorOf("FLASER 400 1 2 3\n"), "mem.log:1: FLASER: 400 ranges announced, line has only 3 more fields");
+	EXPECT_EQ(errorOf("ODOM 1 2 3\n"), "mem.log:1: ODOM: expected 10 fields, found 4");
+	EXPECT_EQ(errorOf("ODOM 1 2 3 0 0 0 1e999 h 1\n"), "mem.log:1: ODOM timestamp is '1e999' (not a finite number)");
+	EXPECT_EQ(errorOf("PARAM laser_front_laser_resolution fast h 0\n"),
+			  "mem.log:1: PARAM laser_front_laser_resolution is 'fast' (not a finite number)");
+	EXPECT_EQ(errorOf("PARAM robot_front_laser_max -3 h 0\n"),
+			  "mem.log:1: PARAM robot_front_laser_max is -3 (must be > 0)");
+	EXPECT_EQ(errorOf(ok + ok + "1.5 2.5 garbage\n"),
+			  "mem.log:5: unrecognised line starting with '1.5' (not a CARMEN message)");
+	EXPECT_EQ(errorOf("PARAM x\n"), "mem.log:1: PARAM: expected 'PARAM name value ...', found 2 fields");
+	// unknown message types are not errors: they are counted
+	const LogData d = parse("GPSNMEA 1 2 3\n" + ok);
+	EXPECT_NE(d.summary.find("1 GPSNMEA ignored"), std::string::npos);
+}
+
+TEST(CarmenReader, GzipAndPlainGiveTheSameScansAndTruncationIsAnError)
+{
+	const std::vector<char> text = readFileBytes(kIntel);
+	const std::string plain = tempPath("intel.log");
+	writeFileAtomically(plain, [&](std::ostream& os) { os.write(text.data(), std::streamsize(text.size())); });
+	const LogData a = readLog(kIntel), b = readLog(plain);
+	ASSERT_EQ(a.scans.size(), b.scans.size());
+	for (size_t i = 0; i < a.scans.size(); i += 97)
+	{
+		EXPECT_EQ(a.scans[i].timestamp, b.scans[i].timestamp);
+		EXPECT_EQ(a.scans[i].scan->getScanRange(7), b.scans[i].scan->getScanRange(7));
+	}
+	// a gzip file cut short is reported, not silently read in part
+	std::ifstream in(kIntel, std::ios::binary);
+	std::vector<char> gz((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+	const std::string cut = tempPath("cut.log.gz");
+	writeFileAtomically(cut, [&](std::ostream& os) { os.write(gz.data(), std::streamsize(gz.size() / 2)); });
+	try
+	{
+		readLog(cut);
+		ADD_FAILURE() << "truncated gzip accepted";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), cut + ": truncated or corrupt gzip data (CRC/length trailer mismatch)");
+	}
+	// a plain log cut inside a line: the last line has too few fields
+	const std::string cutPlain = tempPath("cut.log");
+	writeFileAtomically(cutPlain, [&](std::ostream& os) { os.write(text.data(), std::streamsize(text.size() / 3)); });
+	EXPECT_THROW(readLog(cutPlain), std::runtime_error);
+	EXPECT_THROW(readLog(tempPath("does-not-exist.log")), std::runtime_error);
+	fs::remove(plain);
+	fs::remove(cut);
+	fs::remove(cutPlain);
+}
+
+TEST(TrajectoryFile, RoundTripAndErrors)
+{
+	const std::string p = tempPath("traj.txt");
+	Trajectory t = {{1.5, {1, 2, 0.5}}, {2.0, {-1, 0.25, -3.0}}};
+	writeTrajectory(p, t);
+	const Trajectory r = readTrajectory(p);
+	ASSERT_EQ(r.size(), 2u);
+	EXPECT_DOUBLE_EQ(r[1].first, 2.0);
+	EXPECT_DOUBLE_EQ(r[1].second.y, 0.25);
+	EXPECT_DOUBLE_EQ(r[1].second.phi, -3.0);
+	writeFileAtomically(p, [](std::ostream& os) { os << "# t x y th\n1 2 3 4\n5 6 7\n"; });
+	try
+	{
+		readTrajectory(p);
+		ADD_FAILURE();
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), p + ":3: expected 't x y theta', found 3 fields");
+	}
+	EXPECT_THROW(writeTrajectory("/nonexistent-dir/x.txt", t), std::runtime_error);
+	fs::remove(p);
+}
+
+TEST(AtomicFile, NothingAppearsUntilCommit)
+{
+	const std::string p = tempPath("atomic.txt");
+	fs::remove(p);
+	{
+		AtomicFile f(p);
+		f.stream() << "hello";
+		EXPECT_FALSE(fs::exists(p));
+	}  // not committed: nothing written, temporary removed
+	EXPECT_FALSE(fs::exists(p));
+	for (const auto& e : fs::directory_iterator(fs::temp_directory_path()))
+		EXPECT_EQ(e.path().filename().string().find(".gv_carmen_test_atomic.txt.tmp"), std::string::npos);
+	writeFileAtomically(p, [](std::ostream& os) { os << "done"; });
+	std::ifstream in(p);
+	std::string s;
+	in >> s;
+	EXPECT_EQ(s, "done");
+	try
+	{
+		AtomicFile bad("/proc/gv-no-such-dir/x.txt");
+		ADD_FAILURE();
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()).rfind("/proc/gv-no-such-dir/x.txt: cannot write (", 0), 0u);
+	}
+	fs::remove(p);
+}

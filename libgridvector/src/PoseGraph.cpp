@@ -98,7 +98,9 @@ OptimizeStats PoseGraph::optimize()
 		const size_t rej = rejectOutliers();
 		if (!rej) break;
 		st.rejected += rej;
-		const OptimizeStats again = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
+		phi_ = opts_.robustKernelWidth;
+		const OptimizeStats again =
+			opts_.useMrptOptimizer ? optimizeMrpt() : levenbergMarquardt(opts_.maxIterations, 1e-6);
 		st.iterations += again.iterations;
 		st.finalError = again.finalError;
 	}
@@ -114,19 +116,21 @@ OptimizeStats PoseGraph::optimizeGaussNewton()
 {
 	OptimizeStats st;
 	bool first = true;
-	for (double phi = std::max(opts_.robustKernelWidth, 1e4);; phi = std::max(opts_.robustKernelWidth, phi * 0.1))
+	const double target = opts_.robustKernelWidth;
+	for (double phi = std::max(target, 1e4);; phi = std::max(target, phi * 0.01))
 	{
 		phi_ = phi;
-		const OptimizeStats s = levenbergMarquardt();
+		const bool last = phi <= target;
+		const OptimizeStats s = levenbergMarquardt(last ? opts_.maxIterations : 8, last ? 1e-6 : 1e-3);
 		if (first) st.initialError = s.initialError, first = false;
 		st.iterations += s.iterations;
 		st.finalError = s.finalError;
-		if (phi <= opts_.robustKernelWidth) break;
+		if (last) break;
 	}
 	return st;
 }
 
-OptimizeStats PoseGraph::levenbergMarquardt()
+OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativeDecrease)
 {
 	OptimizeStats st;
 	const size_t n = nodes_.size();
@@ -140,7 +144,7 @@ OptimizeStats PoseGraph::levenbergMarquardt()
 	double lambda = 1e-4;
 	double err = updateResiduals(nodes_, true);
 	st.initialError = err;
-	for (int it = 0; it < opts_.maxIterations; ++it)
+	for (int it = 0; it < maxIterations; ++it)
 	{
 		trip.clear();
 		b.setZero();
@@ -212,7 +216,7 @@ OptimizeStats PoseGraph::levenbergMarquardt()
 			nodes_.swap(cand);
 			err = cerr;
 			lambda = std::max(1e-9, lambda / 3);
-			if (rel < 1e-7 || dx.cwiseAbs().maxCoeff() < 1e-7) break;
+			if (rel < minRelativeDecrease || dx.cwiseAbs().maxCoeff() < 1e-7) break;
 		}
 		else
 		{

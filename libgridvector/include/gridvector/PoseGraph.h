@@ -73,7 +73,7 @@ class PoseGraph
 
    private:
 	OptimizeStats optimizeGaussNewton();
-	OptimizeStats levenbergMarquardt();
+	OptimizeStats levenbergMarquardt(int maxIterations, double minRelativeDecrease);
 	OptimizeStats optimizeMrpt();
 	double updateResiduals(const std::vector<mrpt::math::TPose2D>& x, bool robust);
 	size_t rejectOutliers();

@@ -1,0 +1,298 @@
+// gv-graphslam: MRPT's graphslam-engine (2D) with the grid-vector deciders
+// registered next to MRPT's own; also writes a CGridVectorMap of the result.
+//
+//   gv-graphslam --2d -i INI -r RAWLOG [-g GT] -n CGridVectorNRD -e CGridVectorERD -o CLevMarqGSO
+//   gv-graphslam --list-regs
+#include <gridvector/ErrorText.h>
+#include <gridvector/graphslam/DeciderRegistry.h>
+#include <gridvector/graphslam/RunRecorder.h>
+#include <gridvector/io/ArgParser.h>
+#include <gridvector/io/AtomicFile.h>
+
+#include <mrpt/config/CConfigFile.h>
+#include <mrpt/containers/yaml.h>
+#include <mrpt/graphslam/CGraphSlamEngine.h>
+#include <mrpt/graphslam/levmarq.h>
+#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
+#include <mrpt/obs/CRawlog.h>
+#include <mrpt/serialization/CArchive.h>
+#include <mrpt/system/filesystem.h>
+
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <map>
+#include <memory>
+
+using namespace gridvector;
+using namespace gridvector::graphslam;
+using graph_t = mrpt::graphs::CNetworkOfPoses2DInf;
+
+namespace
+{
+struct Settings
+{
+	std::string ini, rawlog, groundTruth, nodeReg, edgeReg, optimizer, outDir;
+	bool finalOptimization = true, quiet = false;
+};
+
+/** [GeneralConfiguration] keys that MRPT's app reads for its outputs. */
+struct GeneralConfig
+{
+	std::string outputDir = "graphslam_results";
+	bool saveGraph = true, saveMap = true;
+	std::string graphName = "output_graph.graph", mapName = "output_map";
+
+	explicit GeneralConfig(const mrpt::config::CConfigFileBase& c)
+	{
+		const char* s = "GeneralConfiguration";
+		outputDir = c.read_string(s, "output_dir_fname", outputDir);
+		saveGraph = c.read_bool(s, "save_graph", saveGraph);
+		saveMap = c.read_bool(s, "save_map", saveMap);
+		graphName = c.read_string(s, "save_graph_fname", graphName);
+		mapName = c.read_string(s, "save_map_fname", mapName);
+	}
+};
+
+// MRPT's graphslam-engine spells its value options with one dash.
+std::vector<std::string> longOptions(int argc, char** argv)
+{
+	static const std::map<std::string, std::string> shortToLong = {
+		{"-i", "--ini-file"}, {"-r", "--rawlog"},	 {"-g", "--ground-truth"},
+		{"-n", "--node-reg"}, {"-e", "--edge-reg"}, {"-o", "--optimizer"}, {"-h", "--help"}};
+	std::vector<std::string> out;
+	for (int i = 0; i < argc; ++i)
+	{
+		const auto it = shortToLong.find(argv[i]);
+		out.push_back(i > 0 && it != shortToLong.end() ? it->second : argv[i]);
+	}
+	return out;
+}
+
+void declare(io::ArgParser& a)
+{
+	a.option("ini-file", "INI", "graphslam-engine .ini (-i)");
+	a.option("rawlog", "RAWLOG", "rawlog, either format, plain or gzip (-r)");
+	a.option("ground-truth", "GT.txt", "ground truth for the engine's SLAM metric (-g)");
+	a.option("node-reg", "NRD", "node registration decider (-n, default CGridVectorNRD)");
+	a.option("edge-reg", "ERD", "edge registration decider (-e, default CGridVectorERD)");
+	a.option("optimizer", "GSO", "graph optimizer (-o, default CLevMarqGSO)");
+	a.option("output-dir", "DIR", "results directory (default: output_dir_fname of the .ini)");
+	a.flag("2d", "2D graph of CPosePDFGaussianInf constraints (the only kind supported)");
+	a.flag("3d", "not supported: rejected");
+	a.flag("disable-visuals", "accepted for compatibility: gv-graphslam always runs headless");
+	a.flag("list-regs", "list all registration deciders");
+	a.flag("list-node-regs", "list node registration deciders");
+	a.flag("list-edge-regs", "list edge registration deciders");
+	a.flag("list-optimizers", "list graph optimizers");
+	a.flag("no-final-optimization",
+		   "trajectory/map from the engine's last node estimates instead of a final full "
+		   "Levenberg-Marquardt pass over the whole graph");
+	a.flag("quiet", "only errors and the summary line");
+}
+
+/** Returns true if a listing was asked for (and printed). */
+bool listings(const io::ArgParser& a, const DeciderRegistry& reg)
+{
+	bool any = false;
+	if (a.has("list-regs")) reg.dumpRegistrarsToConsole("all"), any = true;
+	if (a.has("list-node-regs")) reg.dumpRegistrarsToConsole("node"), any = true;
+	if (a.has("list-edge-regs")) reg.dumpRegistrarsToConsole("edge"), any = true;
+	if (a.has("list-optimizers")) reg.dumpOptimizersToConsole(), any = true;
+	return any;
+}
+
+Settings settingsFrom(const io::ArgParser& a, const DeciderRegistry& reg)
+{
+	if (a.has("3d")) a.fail("only 2D graph SLAM (--2d) is supported");
+	if (!a.positional().empty()) a.fail("unexpected argument '" + a.positional()[0] + "'");
+	Settings s;
+	s.ini = a.get("ini-file");
+	s.rawlog = a.get("rawlog");
+	if (s.ini.empty()) a.fail("missing -i INI");
+	if (s.rawlog.empty()) a.fail("missing -r RAWLOG");
+	s.groundTruth = a.get("ground-truth");
+	s.nodeReg = a.get("node-reg", "CGridVectorNRD");
+	s.edgeReg = a.get("edge-reg", "CGridVectorERD");
+	s.optimizer = a.get("optimizer", "CLevMarqGSO");
+	if (!reg.checkRegistrationDeciderExists(s.nodeReg, "node") || !reg.node_regs_map.count(s.nodeReg))
+		a.fail("unknown node registration decider '" + s.nodeReg + "'; --list-node-regs lists them");
+	if (!reg.checkRegistrationDeciderExists(s.edgeReg, "edge") || !reg.edge_regs_map.count(s.edgeReg))
+		a.fail("unknown edge registration decider '" + s.edgeReg + "'; --list-edge-regs lists them");
+	if (!reg.checkOptimizerExists(s.optimizer) || !reg.optimizers_map.count(s.optimizer))
+		a.fail("unknown optimizer '" + s.optimizer + "'; --list-optimizers lists them");
+	s.outDir = a.get("output-dir");
+	s.finalOptimization = !a.has("no-final-optimization");
+	s.quiet = a.has("quiet");
+	return s;
+}
+
+void requireFile(const std::string& path, const char* what)
+{
+	if (!mrpt::system::fileExists(path)) throw std::runtime_error(path + ": no such " + std::string(what));
+}
+
+/** Feeds every rawlog entry to the engine; returns the number of entries. */
+size_t feed(const std::string& rawlog, mrpt::graphslam::CGraphSlamEngine<graph_t>& engine,
+			RunRecorder& rec)
+{
+	mrpt::io::CFileGZInputStream in;
+	if (!in.open(rawlog)) throw std::runtime_error(rawlog + ": cannot open");
+	auto arch = mrpt::serialization::archiveFrom(in);
+	mrpt::obs::CActionCollection::Ptr action;
+	mrpt::obs::CSensoryFrame::Ptr sf;
+	mrpt::obs::CObservation::Ptr obs;
+	size_t entry = 0, steps = 0;
+	for (;;)
+	{
+		try
+		{
+			if (!mrpt::obs::CRawlog::getActionObservationPairOrObservation(arch, action, sf, obs, entry))
+				break;
+		}
+		catch (const std::exception& e)
+		{
+			throw std::runtime_error(rawlog + ": entry " + std::to_string(entry) +
+									 ": unreadable (" + oneLineError(e) + ")");
+		}
+		if (!action && !sf && !obs) continue;
+		if (!obs && (!action || !sf)) continue;  // the engine needs both halves of a pair
+		engine._execGraphSlamStep(action, sf, obs, entry);
+		rec.record(action, sf, obs, engine.getGraph().nodeCount());
+		++steps;
+	}
+	if (steps == 0) throw std::runtime_error(rawlog + ": no rawlog entries");
+	return steps;
+}
+
+size_t loopClosures(const graph_t& g, int minDiff)
+{
+	size_t n = 0;
+	for (const auto& e : g.edges)
+		if (std::abs(long(e.first.first) - long(e.first.second)) > minDiff) ++n;
+	return n;
+}
+
+void writeGridVectorMap(const std::string& dir, const mrpt::maps::CGridVectorMap& map)
+{
+	io::AtomicFile gv(dir + "/map.gvmap", io::AtomicFile::Mode::External);
+	{
+		mrpt::io::CFileGZOutputStream f;
+		if (!f.open(gv.tempPath())) throw std::runtime_error(gv.path() + ": cannot write");
+		auto a = mrpt::serialization::archiveFrom(f);
+		a << map;
+	}
+	gv.commit();
+	const std::string tmp = dir + "/.gv-graphslam-tmp";
+	map.saveMetricMapRepresentationToFile(tmp);  // writes <tmp>_vectors.txt
+	if (std::rename((tmp + "_vectors.txt").c_str(), (dir + "/vectors.txt").c_str()) != 0)
+		throw std::runtime_error(dir + "/vectors.txt: cannot write");
+}
+
+/** The engine's own outputs, as MRPT's graphslam-engine app writes them. */
+void writeEngineOutputs(mrpt::graphslam::CGraphSlamEngine<graph_t>& engine, const GeneralConfig& gc,
+						const std::string& dir)
+{
+	engine.generateReportFiles(dir);
+	if (gc.saveGraph)
+	{
+		const std::string path = dir + "/" + gc.graphName;
+		engine.saveGraph(&path);
+	}
+	if (gc.saveMap)
+	{
+		auto grid = mrpt::maps::COccupancyGridMap2D::Create();
+		engine.getMap(grid);
+		grid->saveMetricMapRepresentationToFile(dir + "/" + gc.mapName);
+	}
+}
+
+int run(const Settings& s, DeciderRegistry& reg)
+{
+	requireFile(s.ini, "config file");
+	requireFile(s.rawlog, "rawlog");
+	if (!s.groundTruth.empty()) requireFile(s.groundTruth, "ground-truth file");
+	mrpt::config::CConfigFile ini(s.ini);
+	const GeneralConfig gc(ini);
+	const std::string dir = s.outDir.empty() ? gc.outputDir : s.outDir;
+	io::ensureWritableDirectory(dir);
+
+	// the engine does not own its deciders: they must outlive it
+	std::unique_ptr<mrpt::graphslam::deciders::CNodeRegistrationDecider<graph_t>> nrd(
+		reg.node_regs_map[s.nodeReg]());
+	std::unique_ptr<mrpt::graphslam::deciders::CEdgeRegistrationDecider<graph_t>> erd(
+		reg.edge_regs_map[s.edgeReg]());
+	std::unique_ptr<mrpt::graphslam::optimizers::CGraphSlamOptimizer<graph_t>> gso(
+		reg.optimizers_map[s.optimizer]());
+	mrpt::graphslam::CGraphSlamEngine<graph_t> engine(s.ini, s.rawlog, s.groundTruth, nullptr,
+													   nrd.get(), erd.get(), gso.get());
+	if (s.quiet)
+		for (mrpt::system::COutputLogger* l :
+			 {static_cast<mrpt::system::COutputLogger*>(&engine),
+			  static_cast<mrpt::system::COutputLogger*>(nrd.get()),
+			  static_cast<mrpt::system::COutputLogger*>(erd.get()),
+			  static_cast<mrpt::system::COutputLogger*>(gso.get())})
+			l->setMinLoggingLevel(mrpt::system::LVL_ERROR);
+
+	RunRecorder rec;
+	const auto t0 = std::chrono::steady_clock::now();
+	const size_t steps = feed(s.rawlog, engine, rec);
+	const double slamSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+	writeEngineOutputs(engine, gc, dir);
+
+	graph_t graph = engine.getGraph();
+	if (s.finalOptimization && graph.edgeCount() > 0)
+	{
+		mrpt::graphslam::TResultInfoSpaLevMarq info;
+		mrpt::containers::yaml params;
+		params["max_iterations"] = 100;
+		mrpt::graphslam::optimize_graph_spa_levmarq(graph, info, nullptr, params);
+	}
+	io::writeTrajectory(dir + "/trajectory.txt", rec.scanTrajectory(graph.nodes));
+	io::writeTrajectory(dir + "/nodes.txt", rec.nodeTrajectory(graph.nodes));
+	mrpt::maps::CGridVectorMap map;
+	map.setConfig([&] {
+		GridVectorConfig c;
+		c.loadFromConfigFile(ini, "gridvector", s.ini);
+		return c;
+	}());
+	rec.buildMap(graph.nodes, map);
+	writeGridVectorMap(dir, map);
+
+	std::printf("gv-graphslam: %s + %s + %s: %zu entries, %zu scans, %zu nodes, %zu edges (%zu loop "
+				"closures), %zu map vectors; SLAM %.2f s -> %s/\n",
+				s.nodeReg.c_str(), s.edgeReg.c_str(), s.optimizer.c_str(), steps, rec.scanCount(),
+				graph.nodeCount(), graph.edgeCount(),
+				loopClosures(graph, ini.read_int("EdgeRegistrationDeciderParameters", "LC_min_nodeid_diff", 30)),
+				map.vectors().size(), slamSeconds, dir.c_str());
+	return 0;
+}
+}  // namespace
+
+int main(int argc, char** argv)
+{
+	io::ArgParser args("gv-graphslam", "--2d -i INI -r RAWLOG [-g GT] [-n NRD] [-e ERD] [-o GSO] [options]");
+	declare(args);
+	try
+	{
+		const auto argvLong = longOptions(argc, argv);
+		std::vector<const char*> cargv;
+		for (const auto& a : argvLong) cargv.push_back(a.c_str());
+		if (!args.parse(int(cargv.size()), cargv.data())) return std::cout << args.usage(), 0;
+		DeciderRegistry reg;
+		if (listings(args, reg)) return 0;
+		return run(settingsFrom(args, reg), reg);
+	}
+	catch (const io::UsageError& e)
+	{
+		std::cerr << e.what() << "\n";
+		return 2;
+	}
+	catch (const std::exception& e)
+	{
+		std::cerr << "gv-graphslam: " << oneLineError(e) << "\n";
+		return 1;
+	}
+}

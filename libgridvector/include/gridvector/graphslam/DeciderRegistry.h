@@ -1,0 +1,28 @@
+// graphslam-engine's decider/optimizer registry, with the grid-vector deciders added.
+#pragma once
+
+#include <gridvector/graphslam/CGridVectorERD.h>
+#include <gridvector/graphslam/CGridVectorNRD.h>
+
+#include <mrpt/config/CConfigFile.h>  // MRPT 2.5's decider headers use it without including it
+#include <mrpt/graphslam/apps_related/TUserOptionsChecker.h>
+
+namespace gridvector::graphslam
+{
+/** MRPT's TUserOptionsChecker for 2D graphs (CFixedIntervalsNRD,
+ * CICPCriteriaNRD, CEmptyNRD, CICPCriteriaERD, CLoopCloserERD, CEmptyERD,
+ * CLevMarqGSO, CEmptyGSO) plus CGridVectorNRD and CGridVectorERD, listed by
+ * dumpRegistrarsToConsole() and created by name like MRPT's own.
+ * The constructor fills both tables. */
+struct DeciderRegistry
+	: public mrpt::graphslam::apps::TUserOptionsChecker<mrpt::graphs::CNetworkOfPoses2DInf>
+{
+	using graph_t = mrpt::graphs::CNetworkOfPoses2DInf;
+	using base_t = mrpt::graphslam::apps::TUserOptionsChecker<graph_t>;
+
+	DeciderRegistry();
+	void createDeciderOptimizerMappings() override;
+	void populateDeciderOptimizerProperties() override;
+};
+
+}  // namespace gridvector::graphslam

@@ -2,6 +2,7 @@
 #include <gridvector/SE2.h>
 
 #include <Eigen/Cholesky>
+#include <Eigen/LU>
 
 #include <algorithm>
 #include <chrono>
@@ -60,6 +61,7 @@ bool MStep::registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans&
 	out.rms = r.rms;
 	out.matchedLength = r.matchedLength;
 	out.matchedShare = r.matchedShare;
+	out.degeneracy = r.translationDegeneracy;
 	out.rejected = false;
 	return true;
 }
@@ -201,10 +203,11 @@ bool MStep::hasEdgeNear(uint32_t i, uint32_t jlo, uint32_t jhi) const
 }
 
 // Overlap edges: for each pose, one edge into every earlier pass through its place.
-void MStep::addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep)
+std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep)
 {
+	std::vector<EdgeKey> fresh;
 	const double d = cfg_.mstep.overlapDistance;
-	if (d <= 0) return;
+	if (d <= 0) return fresh;
 	auto cellOf = [d](const TPose2D& p) {
 		return std::pair<long, long>(long(std::floor(p.x / d)), long(std::floor(p.y / d)));
 	};
@@ -255,11 +258,56 @@ void MStep::addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep
 			{
 				constraints_[key] = std::move(c);
 				failed_.erase(key);
+				fresh.push_back(key);
 				++rep.added;
 			}
 			else
 				failed_[key] = rel;
 		}
+	}
+	return fresh;
+}
+
+// Pairwise consistency of loop closures: a new overlap edge (j, i) is supported by
+// another edge (j', i') near both of its ends when the cycle j -> i -> i' -> j' -> j
+// closes within the edges' and the local chains' uncertainty (Mahalanobis gate).
+void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh, MStepReport& rep)
+{
+	const uint32_t K = uint32_t(std::max(1, cfg_.mstep.overlapRunGap));
+	const Matrix3d reg = Vector3d(1.0, 1.0, 10.0).asDiagonal();  // caps sigma at 1 m / 0.3 rad
+	std::vector<EdgeKey> drop;
+	for (const EdgeKey& key : fresh)
+	{
+		const Constraint& c = constraints_.at(key);
+		const Matrix3d covC = (c.information + reg).inverse();
+		int support = 0, against = 0;
+		auto it = constraints_.lower_bound({c.from > K ? c.from - K : 0, 0});
+		for (; it != constraints_.end() && it->first.first <= c.from + K; ++it)
+		{
+			const Constraint& o = it->second;
+			if (&o == &c || o.kind == EdgeKind::Sequential || o.rejected) continue;
+			if (o.to + K < c.to || o.to > c.to + K) continue;
+			// z' predicted from z through the local chains of the current trajectory
+			const TPose2D pred = se2::compose(
+				se2::compose(se2::relative(poses[o.from], poses[c.from]), c.z),
+				se2::relative(poses[c.to], poses[o.to]));
+			const Vector3d d = PoseGraph::error(TPose2D(0, 0, 0), pred, o.z);
+			const double steps = std::abs(double(o.from) - c.from) + std::abs(double(o.to) - c.to);
+			const Matrix3d chain = Vector3d(1e-3, 1e-3, 1e-4).asDiagonal() * (1.0 + steps);
+			const Matrix3d cov = covC + (o.information + reg).inverse() + chain;
+			(d.dot(cov.ldlt().solve(d)) < cfg_.mstep.consistencyChi2 ? support : against)++;
+		}
+		const bool strong = c.correspondences.size() >= 4 && c.matchedShare >= 0.4 &&
+							c.degeneracy >= 0.05;
+		if (support > against || (support == 0 && against == 0 && strong)) continue;
+		drop.push_back(key);
+	}
+	for (const EdgeKey& k : drop)
+	{
+		failed_[k] = se2::relative(poses[k.first], poses[k.second]);
+		constraints_.erase(k);
+		--rep.added;
+		++rep.unverified;
 	}
 }
 
@@ -318,7 +366,7 @@ MStepReport MStep::run(const Scans& scans, Poses& poses)
 		updateExisting(scans, poses, rep);
 		addSequential(scans, poses, rep);
 	}
-	addOverlaps(scans, poses, rep);
+	verifyOverlaps(poses, addOverlaps(scans, poses, rep), rep);
 	if (cfg_.mstep.loopSearch) loopSearch(scans, poses, rep);
 	rep.registrationSeconds = secondsSince(t0);
 	optimise(poses, rep);

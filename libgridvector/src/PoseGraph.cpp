@@ -90,17 +90,18 @@ OptimizeStats PoseGraph::optimize()
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	phi_ = opts_.robustKernelWidth;
+	const std::vector<TPose2D> start = nodes_;
 	OptimizeStats st = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
-	// Iterative edge rejection by chi2, then re-optimisation.
+	// Iterative edge rejection by chi2, then the same optimisation from the same
+	// start without the rejected edges (they must not bias the restart).
 	for (int round = 0; round < 3; ++round)
 	{
 		updateResiduals(nodes_, false);
 		const size_t rej = rejectOutliers();
 		if (!rej) break;
 		st.rejected += rej;
-		phi_ = opts_.robustKernelWidth;
-		const OptimizeStats again =
-			opts_.useMrptOptimizer ? optimizeMrpt() : levenbergMarquardt(opts_.maxIterations, 1e-6);
+		nodes_ = start;
+		const OptimizeStats again = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
 		st.iterations += again.iterations;
 		st.finalError = again.finalError;
 	}

@@ -166,6 +166,7 @@ struct MStepOptions
 	double overlapMinLength = 2.0;  //!< corresponding static length that makes two scans overlap [m]
 	double overlapMinShare = 0.25;  //!< matched share of the shorter scan's static length for an overlap edge
 	int overlapRunGap = 10;  //!< candidate poses further apart than this in time belong to different passes
+	double consistencyChi2 = 16.0;  //!< gate of the pairwise loop-closure consistency test
 	double recheckGateFactor = 1.5;  //!< gates x this when testing whether an edge's correspondences changed
 	bool loopSearch = true;  //!< search loop closures in a window growing with pose uncertainty
 	double loopSearchSigmas = 3.0;  //!< window half-size in standard deviations of the relative pose
@@ -181,6 +182,7 @@ struct MStepOptions
 		v("overlap_min_length", overlapMinLength, "Corresponding static vector length that makes two scans overlap [m]");
 		v("overlap_min_share", overlapMinShare, "Matched share of the shorter scan's static length needed to accept an overlap edge");
 		v("overlap_run_gap", overlapRunGap, "Candidate poses further apart than this many scans belong to different passes");
+		v("consistency_chi2", consistencyChi2, "Two overlap edges near each other support each other when their cycle closes within this chi2");
 		v("recheck_gate_factor", recheckGateFactor, "Gates are widened by this when testing whether an edge's correspondences changed (Eq. 24-25)");
 		v("loop_search", loopSearch, "Search loop closures within a window growing with the pose uncertainty");
 		v("loop_search_sigmas", loopSearchSigmas, "Loop-search window half-size in standard deviations");

@@ -22,6 +22,7 @@ struct Constraint
 	Eigen::Matrix3d information = Eigen::Matrix3d::Zero();
 	std::vector<VectorPair> correspondences;  //!< (vector of `from`, vector of `to`), sorted
 	double rms = 0, matchedLength = 0, matchedShare = 0;
+	double degeneracy = 1;  //!< smallest / largest translation information eigenvalue
 	bool rejected = false;  //!< deactivated by the pose graph's residual test
 };
 
@@ -35,6 +36,7 @@ struct MStepReport
 	size_t sequential = 0, overlap = 0, loop = 0;  //!< active edges by kind
 	size_t added = 0, removed = 0, recomputed = 0;  //!< Eq. 24: the changed constraints
 	size_t registrations = 0, failedRegistrations = 0;
+	size_t unverified = 0;  //!< overlap edges dropped by the pairwise consistency check
 	double changedShare = 0;  //!< (added + removed + recomputed) / constraints
 	OptimizeStats optimisation;
 	double registrationSeconds = 0, seconds = 0;
@@ -77,7 +79,9 @@ class MStep
 	void chainSequential(const Scans& scans, Poses& poses, MStepReport& rep);
 	void updateExisting(const Scans& scans, const Poses& poses, MStepReport& rep);
 	void addSequential(const Scans& scans, const Poses& poses, MStepReport& rep);
-	void addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep);
+	/** Returns the keys of the edges it added. */
+	std::vector<EdgeKey> addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep);
+	void verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh, MStepReport& rep);
 	void loopSearch(const Scans& scans, const Poses& poses, MStepReport& rep);
 	void optimise(Poses& poses, MStepReport& rep);
 

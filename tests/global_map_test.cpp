@@ -169,33 +169,49 @@ TEST(GlobalMap, LaterScanWipesEarlierVectorsButNotItsOwn)
 {
 	const Sequence seq = extractAll({TPose2D(0, 0, M_PI / 2), TPose2D(0, 0, M_PI / 2)},
 									[](size_t) { return std::vector<gvtest::Seg>{{3, 2, -3, 2}}; });
-	GridVectorConfig cfg;
-	cfg.map.mergeOnInsert = false;
-	GlobalMap map(cfg);
-	map.insertScan(seq.poses[0], seq.scans[0]);
-	ASSERT_EQ(map.size(), 1u);
-	const double occ0 = map.vectors()[0].totalOccupy(), vis0 = map.vectors()[0].totalVisit();
-	EXPECT_DOUBLE_EQ(occ0, seq.scans[0].vectors[0].totalOccupy());  // own scan: Algorithm 1 only
-	map.insertScan(seq.poses[1], seq.scans[1]);
-	ASSERT_EQ(map.size(), 2u);
-	const GridVector& first = map.vectors()[0];
-	const int cols = first.cols();
-	// wall row hit, front row visited (but for a corner cell or two outside the cone)
-	EXPECT_LE(first.totalVisit() - vis0, 2 * cols);
-	EXPECT_GE(first.totalVisit() - vis0, 2 * cols - 6);
-	EXPECT_NEAR(first.totalOccupy() - occ0, cols, 1);
-	EXPECT_DOUBLE_EQ(map.vectors()[1].totalOccupy(), seq.scans[1].vectors[0].totalOccupy());
-	EXPECT_GT(map.lastInsertStats().wipe.cellsHit, 0u);
-	// batch: each per-scan vector is wiped by the other scan only
-	const auto all = GlobalMap::buildPerScan(seq.poses, seq.scans, cfg);
-	ASSERT_EQ(all.size(), 2u);
-	for (int i = 0; i < 2; ++i)
+	for (const bool beams : {false, true})
 	{
-		EXPECT_NEAR(all[i].totalOccupy() - seq.scans[i].vectors[0].totalOccupy(), all[i].cols(), 1);
-		EXPECT_EQ(all[i].scanIndex, i);
-		EXPECT_EQ(all[i].id, uint64_t(i + 1));
+		GridVectorConfig cfg;
+		cfg.map.mergeOnInsert = false;
+		cfg.map.wipeCountsBeams = beams;
+		GlobalMap map(cfg);
+		map.insertScan(seq.poses[0], seq.scans[0]);
+		ASSERT_EQ(map.size(), 1u);
+		const double occ0 = map.vectors()[0].totalOccupy(), vis0 = map.vectors()[0].totalVisit();
+		EXPECT_DOUBLE_EQ(occ0, seq.scans[0].vectors[0].totalOccupy());  // own scan: Algorithm 1 only
+		map.insertScan(seq.poses[1], seq.scans[1]);
+		ASSERT_EQ(map.size(), 2u);
+		const GridVector& first = map.vectors()[0];
+		const int cols = first.cols();
+		const double points = seq.scans[1].vectors[0].totalPoints();
+		if (!beams)
+		{
+			// wall row hit, front row visited (but for a corner cell or two outside the cone)
+			EXPECT_LE(first.totalVisit() - vis0, 2 * cols);
+			EXPECT_GE(first.totalVisit() - vis0, 2 * cols - 6);
+			EXPECT_NEAR(first.totalOccupy() - occ0, cols, 1);
+		}
+		else
+		{
+			// the hits equal the beams that ended on the wall: the second scan's endpoints
+			EXPECT_NEAR(first.totalOccupy() - occ0, points, 0.05 * points);
+			EXPECT_GT(first.totalVisit() - vis0, 1.9 * points);  // + as many passing the front row
+		}
+		EXPECT_DOUBLE_EQ(map.vectors()[1].totalOccupy(), seq.scans[1].vectors[0].totalOccupy());
+		EXPECT_GT(map.lastInsertStats().wipe.cellsHit, 0u);
+		// batch: each per-scan vector is wiped by the other scan only
+		const auto all = GlobalMap::buildPerScan(seq.poses, seq.scans, cfg);
+		ASSERT_EQ(all.size(), 2u);
+		for (int i = 0; i < 2; ++i)
+		{
+			const double gain = all[i].totalOccupy() - seq.scans[size_t(i)].vectors[0].totalOccupy();
+			const double want = beams ? seq.scans[size_t(1 - i)].vectors[0].totalPoints() : all[i].cols();
+			EXPECT_NEAR(gain, want, 0.05 * want);
+			EXPECT_EQ(all[i].scanIndex, i);
+			EXPECT_EQ(all[i].id, uint64_t(i + 1));
+		}
+		EXPECT_THROW(GlobalMap::buildPerScan({seq.poses[0]}, seq.scans, cfg), std::invalid_argument);
 	}
-	EXPECT_THROW(GlobalMap::buildPerScan({seq.poses[0]}, seq.scans, cfg), std::invalid_argument);
 }
 
 TEST(GlobalMap, UpdateCostDependsOnTheNeighbourhoodOnly)

@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 using namespace gridvector;
 using mrpt::math::TPoint2D;
 
@@ -21,7 +23,7 @@ TEST(ScanWipe, CellOnSharedRayCountedOncePerScan)
 	// Two walls meeting at a corner (0, 2); a map vector along x = 0 lies on the shared ray.
 	std::vector<GridVector> map{GridVector({0, 0.5}, {0, 1.5}, GridOptions{})};
 	const VectorIndex idx = indexOf(map);
-	ScanWipe w(0.05);
+	ScanWipe w(0.05, false);  // the paper's per-cell weighting
 	const std::vector<ScanWipe::Segment> scan{{{1, 2}, {0, 2}}, {{0, 2}, {-1, 2}}};
 	const auto st = w.apply({0, 0}, scan, map, idx);
 	EXPECT_EQ(st.triangles, 2u);
@@ -37,7 +39,7 @@ TEST(ScanWipe, HitWinsOverVisit)
 	// a cell centred on the shared ray: hit by the first, passed by the second.
 	std::vector<GridVector> map{GridVector({0.55, 2}, {-0.45, 2}, GridOptions{})};
 	const VectorIndex idx = indexOf(map);
-	ScanWipe w(0.05);
+	ScanWipe w(0.05, false);  // the paper's per-cell weighting
 	const std::vector<ScanWipe::Segment> scan{{{1, 2}, {0, 2}}, {{0, 2.5}, {-1, 2.5}}};
 	w.apply({0, 0}, scan, map, idx);
 	ASSERT_EQ(map[0].cols(), 10);
@@ -55,7 +57,7 @@ TEST(ScanWipe, SkippedVectorsAndFarVectorsUntouched)
 								GridVector({1, 2}, {-1, 2}, GridOptions{}),
 								GridVector({101, 2}, {99, 2}, GridOptions{})};
 	const VectorIndex idx = indexOf(map);
-	ScanWipe w(0.05);
+	ScanWipe w(0.05, false);  // the paper's per-cell weighting
 	const auto st = w.apply({0, 0}, std::vector<ScanWipe::Segment>{{{1, 2}, {-1, 2}}}, map, idx,
 							[](uint32_t s) { return s == 1; });
 	EXPECT_EQ(st.candidates, 2u);  // the far vector never comes out of the index
@@ -64,4 +66,25 @@ TEST(ScanWipe, SkippedVectorsAndFarVectorsUntouched)
 	EXPECT_FLOAT_EQ(map[2].totalVisit(), float(map[2].cells().size()));
 	EXPECT_EQ(st.cellsHit, size_t(map[0].cols()));
 	EXPECT_EQ(st.cellsVisited, size_t(map[0].cols()));
+}
+
+TEST(ScanWipe, BeamWeightCountsTheFansBeams)
+{
+	// 201 endpoints spread over the wall y = 2, x in [-1, 1] (fan of ~53 deg):
+	// a cell of the coincident map vector straight ahead (range 2) is crossed
+	// by about density * 0.1 / 2 beams, as Algorithm 1 would count endpoints.
+	std::vector<GridVector> map{GridVector({1, 2}, {-1, 2}, GridOptions{})};
+	const VectorIndex idx = indexOf(map);
+	ScanWipe w(0.05, true);
+	const std::vector<ScanWipe::Segment> scan{{{1, 2}, {-1, 2}, 201}};
+	w.apply({0, 0}, scan, map, idx);
+	const double fan = 2 * std::atan2(1.0, 2.0), density = 200 / fan;
+	const GridCell& hit = map[0].cell(1, 10);  // centred at x = -0.05
+	EXPECT_NEAR(hit.n_visit - 1, density * 0.1 / 2.0, 0.05 * density * 0.1 / 2.0);
+	EXPECT_NEAR(hit.n_occupy - 0.5, hit.n_visit - 1, 1e-5);  // part c: every beam ends there
+	const GridCell& front = map[0].cell(2, 10);
+	EXPECT_NEAR(front.n_occupy, 0.5, 1e-6);  // part b: beams pass
+	EXPECT_GT(front.n_visit - 1, 0.9 * (hit.n_visit - 1));
+	// the endpoints of that fan within the cell: about 10 (one per cm)
+	EXPECT_NEAR(hit.n_visit - 1, 10.0, 1.5);
 }

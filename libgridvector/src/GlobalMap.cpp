@@ -9,7 +9,7 @@ namespace gridvector
 using mrpt::math::TPoint2D;
 
 GlobalMap::GlobalMap(const GridVectorConfig& cfg)
-	: cfg_(cfg), index_(cfg.map.indexCellSize), wiper_(cfg.map.hitBand), merger_(cfg)
+	: cfg_(cfg), index_(cfg.map.indexCellSize), wiper_(cfg.map.hitBand, cfg.map.wipeCountsBeams), merger_(cfg)
 {
 }
 
@@ -25,7 +25,7 @@ void GlobalMap::setConfig(const GridVectorConfig& cfg)
 {
 	const bool reindex = cfg.map.indexCellSize != cfg_.map.indexCellSize;
 	cfg_ = cfg;
-	wiper_ = ScanWipe(cfg.map.hitBand);
+	wiper_ = ScanWipe(cfg.map.hitBand, cfg.map.wipeCountsBeams);
 	merger_ = VectorMerger(cfg);
 	if (reindex)
 	{
@@ -99,7 +99,7 @@ ScanWipe::Stats GlobalMap::wipe(const mrpt::math::TPose2D& robotPose, const Loca
 	auto tf = [&](const TPoint2D& p) {
 		return TPoint2D(robotPose.x + c * p.x - s * p.y, robotPose.y + s * p.x + c * p.y);
 	};
-	for (const auto& v : scan.vectors) segs.push_back({tf(v.start()), tf(v.end())});
+	for (const auto& v : scan.vectors) segs.push_back({tf(v.start()), tf(v.end()), v.totalPoints()});
 	const int64_t own = scan.scanIndex;
 	auto skip = [&](uint32_t slot) { return own >= 0 && vectors_[slot].scanIndex == own; };
 	return wiper_.apply(sensorPosition(robotPose, scan), segs, vectors_, index_, skip);

@@ -36,12 +36,12 @@ std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TP
 
 	VectorIndex index(cfg.map.indexCellSize);
 	for (size_t i = 0; i < all.size(); ++i) index.insert(uint32_t(i), Box2D::of(all[i]));
-	ScanWipe wiper(cfg.map.hitBand);
+	ScanWipe wiper(cfg.map.hitBand, cfg.map.wipeCountsBeams);
 	std::vector<ScanWipe::Segment> segs;
 	for (size_t t = 0; t < scans.size(); ++t)
 	{
 		segs.clear();
-		for (size_t i = first[t]; i < first[t + 1]; ++i) segs.push_back({all[i].start(), all[i].end()});
+		for (size_t i = first[t]; i < first[t + 1]; ++i) segs.push_back(ScanWipe::segmentOf(all[i]));
 		const uint32_t lo = uint32_t(first[t]), hi = uint32_t(first[t + 1]);
 		wiper.apply(sensorPosition(poses[t], scans[t]), segs, all, index,
 					[&](uint32_t s) { return s >= lo && s < hi; });

@@ -4,20 +4,20 @@
 
 namespace gridvector
 {
-// Eq. 8 for one scan q: triangles of V_q over the map, at most one update per cell.
 ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor,
 								const std::vector<GridVector>& scanVectors, std::vector<GridVector>& map,
 								const VectorIndex& index, const std::function<bool(uint32_t)>& skip)
 {
 	std::vector<Segment> segs;
 	segs.reserve(scanVectors.size());
-	for (const GridVector& v : scanVectors) segs.push_back({v.start(), v.end()});
+	for (const GridVector& v : scanVectors) segs.push_back(segmentOf(v));
 	return apply(sensor, segs, map, index, skip);
 }
 
-ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor,
-								const std::vector<Segment>& scanVectors, std::vector<GridVector>& map,
-								const VectorIndex& index, const std::function<bool(uint32_t)>& skip)
+// Eq. 8 for one scan q: the triangles of V_q over the map vectors near them.
+ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::vector<Segment>& scanVectors,
+								std::vector<GridVector>& map, const VectorIndex& index,
+								const std::function<bool(uint32_t)>& skip)
 {
 	Stats st;
 	marks_.clear();
@@ -25,7 +25,8 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor,
 	touched_.clear();
 	for (const Segment& v : scanVectors)
 	{
-		const WipeTriangle tri(sensor, v.start, v.end, hitBand_);
+		const double density = beams_ ? WipeTriangle::beamDensity(sensor, v.start, v.end, v.points) : 0.0;
+		const WipeTriangle tri(sensor, v.start, v.end, hitBand_, density);
 		if (tri.degenerate()) continue;
 		++st.triangles;
 		candidates_.clear();
@@ -34,39 +35,46 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor,
 		for (uint32_t slot : candidates_)
 		{
 			if (skip && skip(slot)) continue;
-			GridVector& m = map[slot];
+			const GridVector& m = map[slot];
 			auto [it, fresh] = offset_.try_emplace(slot, marks_.size());
 			if (fresh)
 			{
-				marks_.resize(marks_.size() + m.cells().size(), 0);
+				marks_.resize(marks_.size() + m.cells().size());
 				touched_.push_back(slot);
 			}
-			uint8_t* mk = marks_.data() + it->second;
+			Mark* mk = marks_.data() + it->second;
 			const int cols = m.cols();
 			tri.forEachCell(m, [&](int r, int c, WipePart part) {
-				uint8_t& x = mk[size_t(r) * cols + c];
-				x = std::max(x, uint8_t(part));
+				Mark& x = mk[size_t(r) * cols + c];
+				const float w =
+					beams_ ? float(tri.weight(m.cellCentre(r, c), m.direction(), m.resolution(), part)) : 1.f;
+				float& slotW = part == WipePart::Hit ? x.hit : x.pass;
+				slotW = beams_ ? slotW + w : 1.f;  // per beam: add; per cell: once
 			});
 		}
 	}
 	for (uint32_t slot : touched_)
 	{
-		GridVector& m = map[slot];
-		const uint8_t* mk = marks_.data() + offset_[slot];
+		auto& cells = map[slot].cells();
+		const Mark* mk = marks_.data() + offset_[slot];
 		bool any = false;
-		auto& cells = m.cells();
 		for (size_t i = 0; i < cells.size(); ++i)
 		{
-			if (mk[i] == uint8_t(WipePart::Outside)) continue;
+			const Mark& x = mk[i];
+			if (x.hit == 0 && x.pass == 0) continue;
 			any = true;
-			if (mk[i] == uint8_t(WipePart::Hit))
+			if (x.hit > 0) ++st.cellsHit;
+			else ++st.cellsVisited;
+			if (beams_)
 			{
-				cells[i].n_occupy += 1.f;
-				++st.cellsHit;
+				cells[i].n_occupy += x.hit;  // Eq. 8, part c
+				cells[i].n_visit += x.hit + x.pass;  // parts b and c
 			}
 			else
-				++st.cellsVisited;
-			cells[i].n_visit += 1.f;
+			{
+				cells[i].n_occupy += x.hit > 0 ? 1.f : 0.f;  // c wins over b
+				cells[i].n_visit += 1.f;
+			}
 		}
 		st.vectorsTouched += any;
 	}

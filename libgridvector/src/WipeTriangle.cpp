@@ -8,8 +8,8 @@ namespace gridvector
 using mrpt::math::TPoint2D;
 
 WipeTriangle::WipeTriangle(const TPoint2D& sensor, const TPoint2D& start, const TPoint2D& end,
-						   double hitBand)
-	: o_(sensor)
+						   double hitBand, double beamsPerRadian)
+	: o_(sensor), beams_(beamsPerRadian)
 {
 	const double ax = start.x - sensor.x, ay = start.y - sensor.y;
 	const double bx = end.x - sensor.x, by = end.y - sensor.y;
@@ -19,6 +19,7 @@ WipeTriangle::WipeTriangle(const TPoint2D& sensor, const TPoint2D& start, const 
 	const double dO = len > 0 ? std::abs(det) / len : 0.0;
 	if (len < 1e-9 || dO < 1e-6) return;
 	degenerate_ = false;
+	edge_ = TPoint2D((end.x - start.x) / len, (end.y - start.y) / len);
 	i00_ = by / det, i01_ = -bx / det;
 	i10_ = -ay / det, i11_ = ax / det;
 	sHit_ = 1.0 - hitBand / dO;
@@ -27,6 +28,36 @@ WipeTriangle::WipeTriangle(const TPoint2D& sensor, const TPoint2D& start, const 
 	const double ys[3] = {sensor.y, sensor.y + sMax_ * ay, sensor.y + sMax_ * by};
 	minX_ = *std::min_element(xs, xs + 3), maxX_ = *std::max_element(xs, xs + 3);
 	minY_ = *std::min_element(ys, ys + 3), maxY_ = *std::max_element(ys, ys + 3);
+	// no cell is crossed by more beams than the fan holds
+	maxWeight_ = std::max(1.0, beams_ * std::abs(std::atan2(det, ax * bx + ay * by)) + 1.0);
+}
+
+double WipeTriangle::beamDensity(const TPoint2D& o, const TPoint2D& s, const TPoint2D& e, double points)
+{
+	const double ax = s.x - o.x, ay = s.y - o.y, bx = e.x - o.x, by = e.y - o.y;
+	const double fan = std::abs(std::atan2(ax * by - ay * bx, ax * bx + ay * by));
+	return fan > 1e-9 && points > 1 ? (points - 1) / fan : 0.0;
+}
+
+// Beams counted in a cell: angular density x (width across the ray, or chord of the new vector) / range.
+double WipeTriangle::weight(const TPoint2D& p, const TPoint2D& axis, double res, WipePart part) const
+{
+	if (beams_ <= 0) return 1.0;
+	const double rx = p.x - o_.x, ry = p.y - o_.y, r = std::hypot(rx, ry);
+	if (r < 1e-9) return maxWeight_;
+	const double ux = rx / r, uy = ry / r;
+	double across;
+	if (part == WipePart::Hit)
+	{
+		// chord of the new vector through the cell, seen under its incidence angle
+		const double along = std::abs(edge_.x * axis.x + edge_.y * axis.y);
+		const double side = std::abs(edge_.x * axis.y - edge_.y * axis.x);
+		const double chord = res / std::max({along, side, 1e-9});
+		across = chord * std::abs(ux * edge_.y - uy * edge_.x);
+	}
+	else  // the square's width perpendicular to the ray
+		across = res * (std::abs(ux * axis.x + uy * axis.y) + std::abs(ux * axis.y - uy * axis.x));
+	return std::min(maxWeight_, beams_ * across / r);
 }
 
 void WipeTriangle::coords(double x, double y, double& a, double& b) const
@@ -87,8 +118,9 @@ size_t WipeTriangle::apply(GridVector& m) const
 	size_t n = 0;
 	forEachCell(m, [&](int r, int c, WipePart part) {
 		GridCell& cell = m.cell(r, c);
-		if (part == WipePart::Hit) cell.n_occupy += 1.f;
-		cell.n_visit += 1.f;
+		const float w = float(weight(m.cellCentre(r, c), m.direction(), m.resolution(), part));
+		if (part == WipePart::Hit) cell.n_occupy += w;
+		cell.n_visit += w;
 		++n;
 	});
 	return n;

@@ -68,6 +68,7 @@ struct MapOptions
 	double maxRhoDiff = 0.15;  //!< criterion 2: |rho_a - rho_b| [m]
 	double indexCellSize = 2.0;  //!< spatial index bucket size [m]
 	bool mergeOnInsert = true;  //!< merge corresponding vectors (Algorithm 2) when inserting
+	bool wipeCountsBeams = true;  //!< Eq. 8 increments count the fan's beams through a cell (false: 1 per cell per triangle)
 
 	template <class V>
 	void visit(V&& v)
@@ -78,6 +79,7 @@ struct MapOptions
 		v("max_rho_diff", maxRhoDiff, "Correspondence criterion 2: max difference of line distances rho [m]");
 		v("index_cell_size", indexCellSize, "Bucket size of the spatial index over vectors [m]");
 		v("merge_on_insert", mergeOnInsert, "Merge corresponding vectors (Algorithm 2) as scans are inserted");
+		v("wipe_counts_beams", wipeCountsBeams, "Eq. 8: a wipe increment counts the beams of the triangle's fan crossing the cell, the unit of Algorithm 1 (false: 1 per cell per scan, the paper's Fig. 2)");
 	}
 };
 

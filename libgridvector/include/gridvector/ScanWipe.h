@@ -18,16 +18,21 @@ namespace gridvector
  * the triangles of every vector of V_q (sensor position and vectors in global
  * coordinates) update each map vector found through the spatial index.
  *
- * One scan observes a cell once: if two of the scan's triangles reach the same
- * cell (the shared ray of adjacent vectors at a corner), the cell is counted
- * once, as a hit if either triangle says hit (part c wins over part b). Each
- * increment weighs 1 (see WipeTriangle).
+ * Two weightings (WipeTriangle):
+ *  - per cell (countBeams = false, the paper's Fig. 2): one scan observes a
+ *    cell once; if two of its triangles reach the same cell (the shared ray of
+ *    adjacent vectors at a corner), the cell counts once, as a hit if either
+ *    triangle says hit;
+ *  - per beam (countBeams = true): each triangle adds the number of its beams
+ *    crossing the cell (Segment::points endpoints spread over the fan), so
+ *    that wipes and Algorithm 1 count in the same unit; contributions of
+ *    several triangles add up (they are different beams).
  *
  * Keeps scratch buffers between calls; one instance per thread. */
 class ScanWipe
 {
    public:
-	explicit ScanWipe(double hitBand) : hitBand_(hitBand) {}
+	explicit ScanWipe(double hitBand, bool countBeams = true) : hitBand_(hitBand), beams_(countBeams) {}
 
 	struct Stats
 	{
@@ -35,13 +40,15 @@ class ScanWipe
 		size_t candidates = 0;  //!< (triangle, map vector) pairs from the index
 		size_t vectorsTouched = 0;  //!< map vectors with at least one cell updated
 		size_t cellsHit = 0;  //!< cells of part c
-		size_t cellsVisited = 0;  //!< cells of part b
+		size_t cellsVisited = 0;  //!< cells of part b only
 	};
 
-	/** A new vector's endpoints in global coordinates. */
+	/** A new vector in global coordinates and the beam endpoints it was built
+	 * from (its n_acc total; used by the per-beam weighting). */
 	struct Segment
 	{
 		mrpt::math::TPoint2D start, end;
+		double points = 0;
 	};
 
 	/** skip(slot) true: the map vector is not updated by this scan (its own
@@ -53,10 +60,20 @@ class ScanWipe
 				std::vector<GridVector>& map, const VectorIndex& index,
 				const std::function<bool(uint32_t)>& skip = {});
 
+	static Segment segmentOf(const GridVector& globalVector)
+	{
+		return {globalVector.start(), globalVector.end(), globalVector.totalPoints()};
+	}
+
    private:
+	struct Mark
+	{
+		float hit = 0, pass = 0;
+	};
 	double hitBand_;
+	bool beams_;
 	std::vector<uint32_t> candidates_;
-	std::vector<uint8_t> marks_;  //!< WipePart per cell of the touched vectors, back to back
+	std::vector<Mark> marks_;  //!< per cell of the touched vectors, back to back
 	std::unordered_map<uint32_t, size_t> offset_;  //!< slot -> first mark
 	std::vector<uint32_t> touched_;
 };

@@ -27,16 +27,32 @@ enum class WipePart : uint8_t
  * it, where noisy endpoints land). Part b: in the cone with d > hitBand
  * (between the sensor and the vector). Everything else is part a.
  *
- * Weight: one triangle is one observation of each cell it reaches, so it adds
- * exactly 1 to the counts of each such cell (the paper's unit: one increment
- * per cell per triangle, regardless of how many beams of the fan cross the
- * cell). ScanWipe makes that one increment per cell per *scan* where two
- * triangles of a scan meet (a shared ray at a corner). */
+ * Weight of an increment (see weight()): the paper's Fig. 2 adds 1 per cell
+ * per triangle. Algorithm 1, however, counts one per beam endpoint, so a cell
+ * with k endpoints of one scan gets k; a wipe of weight 1 then cannot balance
+ * it and cells next to a wall that catch a few noisy endpoints stay
+ * "occupied" although every scan's beams pass through them. With
+ * beamsPerRadian > 0 an increment instead counts the beams of the fan that
+ * cross the cell: beamsPerRadian * (width of the cell across the ray) / range,
+ * the region-by-region equivalent of the per-beam counting model, in the same
+ * unit as Algorithm 1. */
 class WipeTriangle
 {
    public:
+	/** beamsPerRadian: angular density of the fan's beams (0: weight 1 per cell, the paper's unit). */
 	WipeTriangle(const mrpt::math::TPoint2D& sensor, const mrpt::math::TPoint2D& start,
-				 const mrpt::math::TPoint2D& end, double hitBand);
+				 const mrpt::math::TPoint2D& end, double hitBand, double beamsPerRadian = 0);
+
+	/** Beams of the fan counted in a cell of side `res` centred at p whose grid
+	 * runs along the unit vector `axis` (1 when beamsPerRadian is 0). Part b:
+	 * the beams crossing the cell (its width across the ray over the range).
+	 * Part c: the beams ending in it, i.e. hitting the new vector's chord
+	 * through the cell (chord length x sin(incidence) over the range). */
+	double weight(const mrpt::math::TPoint2D& p, const mrpt::math::TPoint2D& axis, double res,
+				  WipePart part) const;
+	/** Beams of the fan for a vector built from `points` endpoints seen from `sensor`. */
+	static double beamDensity(const mrpt::math::TPoint2D& sensor, const mrpt::math::TPoint2D& start,
+							  const mrpt::math::TPoint2D& end, double points);
 
 	/** No area: the sensor (nearly) on the vector's line, or a zero-length vector. */
 	bool degenerate() const { return degenerate_; }
@@ -55,7 +71,7 @@ class WipeTriangle
 	template <class F>
 	void forEachCell(const GridVector& m, F&& f) const;
 
-	/** Eq. 8 for this triangle on one map vector; returns cells updated. */
+	/** Eq. 8 for this triangle on one map vector (weights as weight()); returns cells updated. */
 	size_t apply(GridVector& m) const;
 
    private:
@@ -69,6 +85,8 @@ class WipeTriangle
 	double i00_ = 0, i01_ = 0, i10_ = 0, i11_ = 0;  //!< inverse of [S-O, E-O]
 	double sHit_ = 1, sMax_ = 1;  //!< a+b bounds of part c
 	double minX_ = 0, minY_ = 0, maxX_ = 0, maxY_ = 0;
+	double beams_ = 0, maxWeight_ = 1;
+	mrpt::math::TPoint2D edge_{1, 0};  //!< unit direction S -> E
 	bool degenerate_ = true;
 };
 

@@ -26,10 +26,13 @@ LogData parse(const std::string& text) { return parseCarmenLog(std::vector<char>
 
 std::string flaser(int n, double range, const std::string& tail = "1 2 0.5 3 4 0.25 10.5 host 10.5")
 {
-	std::string s = "PARAM robot_front_laser_max 80 h 0\nFLASER " + std::to_string(n);
+	std::string s = "FLASER " + std::to_string(n);
 	for (int i = 0; i < n; i++) s += " " + std::to_string(range);
 	return s + " " + tail + "\n";
 }
+
+/** Without a max-range PARAM equal readings would all be taken for "no return". */
+const std::string kMax = "PARAM robot_front_laser_max 80 h 0\n";
 
 std::string errorOf(const std::string& text)
 {
@@ -118,17 +121,17 @@ TEST(CarmenReader, ParamLinesSetResolutionFovAndMaxRange)
 TEST(CarmenReader, BeamLayoutFollowsCarmen)
 {
 	// 180 beams, no PARAM: 1 deg from -90 to +89
-	LogData d = parse(flaser(180, 5.0));
+	LogData d = parse(kMax + flaser(180, 5.0));
 	ASSERT_EQ(d.scans.size(), 1u);
 	auto& s180 = *d.scans[0].scan;
 	EXPECT_NEAR(beamAngle(s180, 0), -90 * kDeg, 1e-5);
 	EXPECT_NEAR(beamAngle(s180, 179), 89 * kDeg, 1e-5);
 	// 181 beams: -90..+90; 361: 0.5 deg; 360: -90..+89.5
-	EXPECT_NEAR(parse(flaser(181, 5.0)).scans[0].scan->aperture, M_PI, 1e-6);
-	auto s361 = parse(flaser(361, 5.0)).scans[0].scan;
+	EXPECT_NEAR(parse(kMax + flaser(181, 5.0)).scans[0].scan->aperture, M_PI, 1e-6);
+	auto s361 = parse(kMax + flaser(361, 5.0)).scans[0].scan;
 	EXPECT_NEAR(beamAngle(*s361, 1), -89.5 * kDeg, 1e-5);
 	EXPECT_NEAR(beamAngle(*s361, 360), 90 * kDeg, 1e-5);
-	auto s360 = parse(flaser(360, 5.0)).scans[0].scan;
+	auto s360 = parse(kMax + flaser(360, 5.0)).scans[0].scan;
 	EXPECT_NEAR(beamAngle(*s360, 0), -90 * kDeg, 1e-5);
 	EXPECT_NEAR(beamAngle(*s360, 359), 89.5 * kDeg, 1e-5);
 	// PARAM resolution + fov in degrees (as mkbench writes it) + offsets + flipped
@@ -195,7 +198,7 @@ TEST(CarmenReader, RobotLaserAndRawLaser)
 TEST(CarmenReader, MalformedLinesNameFileAndLine)
 {
 	const std::string ok = flaser(5, 1.0);
-	EXPECT_EQ(errorOf(ok + "FLASER 5 1 1 1 1 1 0 0 0 0 0 0\n"), "mem.log:3: FLASER: expected 16 fields, found 13");
+	EXPECT_EQ(errorOf(ok + "FLASER 5 1 1 1 1 1 0 0 0 0 0 0\n"), "mem.log:2: FLASER: expected 16 fields, found 13");
 	EXPECT_EQ(errorOf("FLASER 5 1 nan 1 1 1 0 0 0 0 0 0 1 h 1\n"),
 			  "mem.log:1: FLASER range 1 is 'nan' (not a finite number)");
 	EXPECT_EQ(errorOf("\n\nFLASER 5 1 1 -2 1 1 0 0 0 0 0 0 1 h 1\n"),
@@ -211,7 +214,7 @@ TEST(CarmenReader, MalformedLinesNameFileAndLine)
 	EXPECT_EQ(errorOf("PARAM robot_front_laser_max -3 h 0\n"),
 			  "mem.log:1: PARAM robot_front_laser_max is -3 (must be > 0)");
 	EXPECT_EQ(errorOf(ok + ok + "1.5 2.5 garbage\n"),
-			  "mem.log:5: unrecognised line starting with '1.5' (not a CARMEN message)");
+			  "mem.log:3: unrecognised line starting with '1.5' (not a CARMEN message)");
 	EXPECT_EQ(errorOf("PARAM x\n"), "mem.log:1: PARAM: expected 'PARAM name value ...', found 2 fields");
 	// unknown message types are not errors: they are counted
 	const LogData d = parse("GPSNMEA 1 2 3\n" + ok);

@@ -13,6 +13,7 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <cmath>
 #include <map>
 #include <stdexcept>
 
@@ -32,6 +33,7 @@ class RawlogParser
 	void onObject(const mrpt::serialization::CSerializable::Ptr& obj);
 	void onActions(const CActionCollection& acts);
 	void onObservation(const CObservation::Ptr& obs, bool inFrame);
+	void checkRanges(const CObservation2DRangeScan& s) const;
 	void finish();
 	[[noreturn]] void fail(const std::string& msg) const;
 
@@ -65,6 +67,7 @@ LogData RawlogParser::parse(const std::vector<char>& bytes)
 		}
 		catch (const std::exception& e)
 		{
+			if (mem.getPosition() >= bytes.size()) fail("truncated rawlog (the file ends inside this object)");
 			fail("corrupt rawlog object (" + gridvector::oneLineError(e) + ")");
 		}
 		onObject(obj);
@@ -115,6 +118,7 @@ void RawlogParser::onObservation(const CObservation::Ptr& obs, bool inFrame)
 	auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(obs);
 	if (!scan) return void(other_[obs->GetRuntimeClass()->className]++);
 	if (!opt_.sensorLabel.empty() && scan->sensorLabel != opt_.sensorLabel) return void(other_["scans of other sensors"]++);
+	checkRanges(*scan);
 	if (obs->timestamp == INVALID_TIMESTAMP) noTimestamp_++;
 	ScanRecord r;
 	r.timestamp = t;
@@ -122,6 +126,19 @@ void RawlogParser::onObservation(const CObservation::Ptr& obs, bool inFrame)
 	r.odometry = cumulative_.asTPose();
 	r.hasOdometry = hasMotion_;
 	out_.scans.push_back(std::move(r));
+}
+
+/** Beams flagged valid must have a finite, non-negative range. */
+void RawlogParser::checkRanges(const CObservation2DRangeScan& s) const
+{
+	for (size_t i = 0; i < s.getScanSize(); i++)
+	{
+		const float r = s.getScanRange(i);
+		if (s.getScanRangeValidity(i) && (!std::isfinite(r) || r < 0))
+			fail("2D scan beam " + std::to_string(i) + " is valid with range " + std::to_string(r) + " (corrupt data?)");
+	}
+	if (!std::isfinite(s.aperture) || s.aperture <= 0 || !std::isfinite(s.maxRange) || s.maxRange <= 0)
+		fail("2D scan with aperture " + std::to_string(s.aperture) + " and max range " + std::to_string(s.maxRange) + " (corrupt data?)");
 }
 
 void RawlogParser::finish()

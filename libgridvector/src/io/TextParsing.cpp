@@ -1,6 +1,7 @@
 #include <gridvector/io/TextParsing.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdlib>
 #include <stdexcept>
@@ -30,6 +31,9 @@ std::vector<std::string_view> splitTokens(std::string_view line)
 
 double parseDouble(std::string_view tok, const TextPos& pos, const std::string& what)
 {
+	double fast = 0;  // the common case without allocating; strtod for the rest ("+1", hex, errors)
+	const auto [end0, ec] = std::from_chars(tok.data(), tok.data() + tok.size(), fast);
+	if (ec == std::errc() && end0 == tok.data() + tok.size() && std::isfinite(fast)) return fast;
 	const std::string s(tok);
 	char* end = nullptr;
 	errno = 0;

@@ -17,6 +17,7 @@ std::vector<mrpt::math::TPose2D> followRoute(const mrpt::math::TPose2D& start, c
 	mrpt::math::TPose2D p = start;
 	size_t target = 0;
 	int lap = 0;
+	size_t idle = 0;  // waypoints reached in a row without moving
 	const auto done = [&] { return maxSteps ? out.size() >= maxSteps : lap >= laps; };
 	while (!done())
 	{
@@ -24,14 +25,16 @@ std::vector<mrpt::math::TPose2D> followRoute(const mrpt::math::TPose2D& start, c
 		const double dist = d.norm();
 		if (dist < 1e-3)
 		{
+			if (++idle > route.size() + 1) throw std::invalid_argument("robot route has zero length");
 			if (++target == route.size()) target = 0, lap++;
 			continue;
 		}
-		const double err = wrapAngle(std::atan2(d.y, d.x) - p.phi);
-		const double turn = std::clamp(err, -maxTurn, maxTurn);
-		p.phi = wrapAngle(p.phi + turn);
-		if (std::abs(err) < 10 * M_PI / 180)
+		idle = 0;
+		const double heading = std::atan2(d.y, d.x), err = wrapAngle(heading - p.phi);
+		if (std::abs(err) > maxTurn) p.phi = wrapAngle(p.phi + std::copysign(maxTurn, err));  // turn on the spot
+		else
 		{
+			p.phi = heading;
 			const double step = std::min(maxMove, dist);
 			p.x += step * std::cos(p.phi);
 			p.y += step * std::sin(p.phi);

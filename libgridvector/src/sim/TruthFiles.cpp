@@ -109,6 +109,7 @@ void writeDynamic(const SimResult& r, std::ostream& os)
 void writeInfo(const SimResult& r, std::ostream& os)
 {
 	SimOptions o = r.options;
+	os.precision(12);
 	o.visit([&](const char* key, const auto& v, const char*) { os << key << ' ' << v << '\n'; });
 	const SimStats& s = r.stats;
 	os << "world_description " << r.world.description << '\n'

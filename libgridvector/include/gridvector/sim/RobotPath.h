@@ -19,8 +19,8 @@ struct MotionOptions
 
 /** True poses every dt seconds, starting at `start`, driving the (closed) route
  * `laps` times. With maxSteps > 0 the result has exactly maxSteps poses: the
- * route is repeated or cut as needed. Heading errors above 10 deg are turned on
- * the spot; smaller ones are corrected while driving. */
+ * route is repeated or cut as needed. The robot turns on the spot towards the
+ * next waypoint, then drives straight to it. */
 std::vector<mrpt::math::TPose2D> followRoute(const mrpt::math::TPose2D& start, const std::vector<Vec2>& route,
 											int laps, const MotionOptions& m, size_t maxSteps = 0);
 

@@ -1,0 +1,215 @@
+// MRPT rawlog reader (both formats, gzip or not) and the CARMEN -> rawlog
+// converter, checked against MRPT's own CRawlog.
+#include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/FileBytes.h>
+#include <gridvector/io/LogReader.h>
+#include <gridvector/io/RawlogReader.h>
+#include <gridvector/io/RawlogWriter.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/obs/CActionCollection.h>
+#include <mrpt/obs/CActionRobotMovement2D.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/obs/CRawlog.h>
+#include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+using namespace gridvector::io;
+namespace fs = std::filesystem;
+
+namespace
+{
+const std::string kSena = std::string(GV_MRPT_DATASETS) + "/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog";
+const std::string kLocalization = std::string(GV_MRPT_DATASETS) + "/localization_demo.rawlog";
+const std::string kIntel = std::string(GV_SHARED_DIR) + "/data/intel-corrected.log.gz";
+
+std::string tmp(const std::string& name) { return (fs::temp_directory_path() / ("gv_rawlog_test_" + name)).string(); }
+
+/** Every 2D scan in a rawlog, as MRPT itself loads it. */
+std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> mrptScans(const std::string& path, size_t* entries = nullptr)
+{
+	mrpt::obs::CRawlog raw;
+	EXPECT_TRUE(raw.loadFromRawLogFile(path));
+	if (entries) *entries = raw.size();
+	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> out;
+	for (size_t i = 0; i < raw.size(); i++)
+	{
+		if (raw.getType(i) == mrpt::obs::CRawlog::etSensoryFrame)
+		{
+			for (const auto& o : *raw.getAsObservations(i))
+				if (auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(o)) out.push_back(s);
+		}
+		else if (raw.getType(i) == mrpt::obs::CRawlog::etObservation)
+			if (auto s = std::dynamic_pointer_cast<mrpt::obs::CObservation2DRangeScan>(raw.getAsObservation(i)))
+				out.push_back(s);
+	}
+	return out;
+}
+
+void expectSameScan(const mrpt::obs::CObservation2DRangeScan& a, const mrpt::obs::CObservation2DRangeScan& b)
+{
+	ASSERT_EQ(a.getScanSize(), b.getScanSize());
+	EXPECT_FLOAT_EQ(a.aperture, b.aperture);
+	EXPECT_FLOAT_EQ(a.maxRange, b.maxRange);
+	EXPECT_EQ(a.rightToLeft, b.rightToLeft);
+	EXPECT_NEAR(a.sensorPose.yaw(), b.sensorPose.yaw(), 1e-12);
+	EXPECT_EQ(a.timestamp, b.timestamp);
+	for (size_t i = 0; i < a.getScanSize(); i++)
+	{
+		EXPECT_EQ(a.getScanRange(i), b.getScanRange(i));
+		EXPECT_EQ(a.getScanRangeValidity(i), b.getScanRangeValidity(i));
+	}
+}
+
+std::string errorOf(const std::string& path)
+{
+	try
+	{
+		readLog(path);
+	}
+	catch (const std::runtime_error& e)
+	{
+		return e.what();
+	}
+	return "no error";
+}
+
+void writeBytes(const std::string& path, const std::vector<char>& b, size_t n)
+{
+	writeFileAtomically(path, [&](std::ostream& os) { os.write(b.data(), std::streamsize(n)); });
+}
+}  // namespace
+
+TEST(RawlogReader, SensoryFrameFormatMatchesMrpt)
+{
+	const LogData d = readLog(kSena);  // gzip-compressed, actions + sensory frames
+	const auto ref = mrptScans(kSena);
+	ASSERT_EQ(d.scans.size(), ref.size());
+	ASSERT_EQ(d.scans.size(), 225u);
+	for (size_t i = 0; i < d.scans.size(); i++)
+	{
+		expectSameScan(*d.scans[i].scan, *ref[i]);
+		EXPECT_NEAR(d.scans[i].timestamp, mrpt::Clock::toDouble(ref[i]->timestamp), 1e-6);
+		EXPECT_TRUE(d.scans[i].hasOdometry);
+		EXPECT_FALSE(d.scans[i].hasLogPose);
+		if (i) { EXPECT_GT(d.scans[i].timestamp, d.scans[i - 1].timestamp); }
+	}
+	EXPECT_NE(d.summary.find("actions+sensory-frames format"), std::string::npos);
+	// odometry is the running sum of the robot-movement actions
+	mrpt::obs::CRawlog raw;
+	raw.loadFromRawLogFile(kSena);
+	mrpt::poses::CPose2D sum;
+	size_t frame = 0;
+	for (size_t i = 0; i < raw.size(); i++)
+		if (raw.getType(i) == mrpt::obs::CRawlog::etActionCollection)
+		{
+			auto m = raw.getAsAction(i)->getActionByClass<mrpt::obs::CActionRobotMovement2D>();
+			if (m) sum = sum + m->rawOdometryIncrementReading;
+		}
+		else if (raw.getType(i) == mrpt::obs::CRawlog::etSensoryFrame)
+		{
+			EXPECT_NEAR(d.scans[frame].odometry.x, sum.x(), 1e-9);
+			EXPECT_NEAR(d.scans[frame].odometry.y, sum.y(), 1e-9);
+			EXPECT_NEAR(d.scans[frame].odometry.phi, sum.phi(), 1e-9);
+			frame++;
+		}
+	EXPECT_EQ(frame, 225u);
+	const LogData l = readLog(kLocalization);
+	EXPECT_EQ(l.scans.size(), 37u);
+}
+
+TEST(RawlogReader, RoundTripThroughBothFormatsAndMrptCRawlog)
+{
+	const LogData intel = readLog(kIntel);
+	for (auto format : {RawlogFormat::Observations, RawlogFormat::SensoryFrames})
+		for (bool compress : {true, false})
+		{
+			SCOPED_TRACE(std::string(format == RawlogFormat::Observations ? "obs" : "sf") + (compress ? " gz" : " plain"));
+			const std::string path = tmp("intel.rawlog");
+			writeRawlog(path, intel, {format, compress});
+			EXPECT_EQ(isGzipFile(path), compress);
+			// MRPT reads it: one odometry + one scan per CARMEN scan, or action + frame pairs
+			size_t entries = 0;
+			const auto ref = mrptScans(path, &entries);
+			EXPECT_EQ(entries, 2 * intel.scans.size());
+			ASSERT_EQ(ref.size(), intel.scans.size());
+			for (size_t i = 0; i < ref.size(); i += 37)
+			{
+				expectSameScan(*ref[i], *intel.scans[i].scan);
+				EXPECT_NEAR(mrpt::Clock::toDouble(ref[i]->timestamp), intel.scans[i].timestamp, 1e-6);
+				EXPECT_NEAR(ref[i]->aperture, 179 * M_PI / 180, 1e-6);
+			}
+			// and so do we, with the same odometry (sf: relative to the first scan)
+			const LogData back = readLog(path);
+			ASSERT_EQ(back.scans.size(), intel.scans.size());
+			const mrpt::poses::CPose2D o0(intel.scans[0].odometry), b0(back.scans[0].odometry);
+			for (size_t i = 0; i < back.scans.size(); i += 13)
+			{
+				EXPECT_NEAR(back.scans[i].timestamp, intel.scans[i].timestamp, 1e-6);
+				const auto a = mrpt::poses::CPose2D(intel.scans[i].odometry) - o0;
+				const auto b = mrpt::poses::CPose2D(back.scans[i].odometry) - b0;
+				EXPECT_NEAR(a.x(), b.x(), 1e-6);
+				EXPECT_NEAR(a.y(), b.y(), 1e-6);
+				EXPECT_NEAR(a.phi(), b.phi(), 1e-6);
+			}
+			if (format == RawlogFormat::Observations)
+			{
+				EXPECT_NEAR(back.scans[5].odometry.x, intel.scans[5].odometry.x, 1e-9);
+			}
+			fs::remove(path);
+		}
+}
+
+TEST(RawlogReader, TruncatedOrCorruptFilesAreErrors)
+{
+	const LogData intel = readLog(kIntel);
+	const std::string plain = tmp("plain.rawlog");
+	writeRawlog(plain, intel, {RawlogFormat::Observations, false});
+	const std::vector<char> bytes = readFileBytes(plain);
+	const std::string cut = tmp("cut.rawlog");
+	writeBytes(cut, bytes, bytes.size() / 2 + 7);  // inside some object
+	const std::string e = errorOf(cut);
+	EXPECT_EQ(e.rfind(cut + ": entry ", 0), 0u) << e;
+	EXPECT_NE(e.find("truncated rawlog"), std::string::npos) << e;
+
+	std::vector<char> garbage = bytes;
+	for (size_t i = bytes.size() / 3; i < bytes.size() / 3 + 4000; i++) garbage[i] = char(0xA5);
+	const std::string bad = tmp("bad.rawlog");
+	writeBytes(bad, garbage, garbage.size());
+	EXPECT_EQ(errorOf(bad).rfind(bad + ": entry ", 0), 0u) << errorOf(bad);
+
+	std::ifstream in(kSena, std::ios::binary);
+	std::vector<char> gz((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+	const std::string cutGz = tmp("cut_gz.rawlog");
+	writeBytes(cutGz, gz, gz.size() - 100);
+	EXPECT_EQ(errorOf(cutGz), cutGz + ": truncated or corrupt gzip data (CRC/length trailer mismatch)");
+	for (const auto& p : {plain, cut, bad, cutGz}) fs::remove(p);
+}
+
+TEST(Carmen2Rawlog, ToolWritesRawlogsMrptCanRead)
+{
+	const std::string bin = std::string(GV_BIN_DIR) + "/gv-carmen2rawlog";
+	if (!fs::exists(bin)) GTEST_SKIP() << bin << " not built";
+	const std::string out = tmp("tool.rawlog"), log = tmp("tool.txt");
+	ASSERT_EQ(std::system(("'" + bin + "' '" + kIntel + "' '" + out + "' --format sf > '" + log + "' 2>&1").c_str()), 0);
+	size_t entries = 0;
+	const auto scans = mrptScans(out, &entries);
+	EXPECT_EQ(scans.size(), 910u);
+	EXPECT_EQ(entries, 2 * 910u);
+	std::ifstream l(log);
+	std::string line;
+	std::getline(l, line);
+	EXPECT_NE(line.find("910 scans (910 FLASER)"), std::string::npos) << line;
+	// bad usage and bad input: exit status 2 and 1, one line on stderr
+	EXPECT_EQ(WEXITSTATUS(std::system(("'" + bin + "' a b --format xyz 2>'" + log + "'").c_str())), 2);
+	EXPECT_EQ(WEXITSTATUS(std::system(("'" + bin + "' /no/such.log '" + out + "' 2>'" + log + "'").c_str())), 1);
+	std::ifstream e(log);
+	std::getline(e, line);
+	EXPECT_EQ(line, "/no/such.log: cannot read (No such file or directory)");
+	fs::remove(out);
+	fs::remove(log);
+}

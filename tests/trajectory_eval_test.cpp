@@ -1,0 +1,147 @@
+// Trajectory metrics: known answers, timestamp matching, and agreement with
+// ../shared/bench/evaltraj.py on a benchmark made from a real log.
+#include <gridvector/eval/TrajectoryEval.h>
+#include <gridvector/io/LogReader.h>
+#include <gridvector/sim/BenchmarkLog.h>
+#include <gridvector/sim/Random.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <map>
+#include <sstream>
+
+using namespace gridvector;
+using mrpt::math::TPose2D;
+namespace fs = std::filesystem;
+
+namespace
+{
+/** A lawnmower path with a loop back over the start, 0.2 s apart. */
+io::Trajectory path(size_t n)
+{
+	io::Trajectory t;
+	for (size_t k = 0; k < n; k++)
+	{
+		const double a = 2 * M_PI * double(k) / double(n);
+		t.emplace_back(100.0 + 0.2 * double(k), TPose2D(8 * std::cos(a), 5 * std::sin(2 * a), a + 0.3));
+	}
+	return t;
+}
+
+io::Trajectory transformed(const io::Trajectory& t, double dx, double dy, double th)
+{
+	io::Trajectory o;
+	for (const auto& [s, p] : t)
+		o.emplace_back(s, TPose2D(std::cos(th) * p.x - std::sin(th) * p.y + dx, std::sin(th) * p.x + std::cos(th) * p.y + dy, p.phi + th));
+	return o;
+}
+
+std::map<std::string, double> parseKeyValues(const std::string& line)
+{
+	std::map<std::string, double> m;
+	std::istringstream in(line);
+	std::string kv;
+	while (in >> kv)
+	{
+		const auto eq = kv.find('=');
+		if (eq != std::string::npos) m[kv.substr(0, eq)] = std::stod(kv.substr(eq + 1));
+	}
+	return m;
+}
+
+std::string run(const std::string& cmd)
+{
+	std::string out;
+	FILE* p = popen(cmd.c_str(), "r");
+	if (!p) return out;
+	char buf[512];
+	while (fgets(buf, sizeof buf, p)) out += buf;
+	pclose(p);
+	return out;
+}
+}  // namespace
+
+TEST(TrajectoryEval, IdentityAndRigidMotionGiveZero)
+{
+	const auto ref = path(400);
+	for (const auto& est : {ref, transformed(ref, 3.0, -7.5, 1.1)})
+	{
+		const auto m = eval::evaluateTrajectory(est, ref);
+		EXPECT_EQ(m.matched, 400u);
+		EXPECT_LT(m.ateRmse, 1e-9);
+		EXPECT_LT(m.localT, 1e-9);
+		EXPECT_LT(m.localRDeg, 1e-9);
+		EXPECT_LT(m.loopT, 1e-9);
+		EXPECT_EQ(m.localPairs, 399u);
+		EXPECT_GT(m.loopPairs, 0u);
+	}
+}
+
+TEST(TrajectoryEval, KnownErrors)
+{
+	const auto ref = path(300);
+	// positions shifted, headings turned by 0.01 rad: ATE 0, local rotation error 0
+	io::Trajectory shifted;
+	for (const auto& [t, p] : ref) shifted.emplace_back(t, TPose2D(p.x + 0.1, p.y, p.phi + 0.01));
+	const auto m = eval::evaluateTrajectory(shifted, ref);
+	EXPECT_NEAR(m.ateRmse, 0.0, 1e-9);  // a pure translation is aligned away
+	EXPECT_NEAR(m.localRDeg, 0.0, 1e-9);  // the constant heading offset cancels in relations
+	// every pose displaced alternately by +-0.2 m in y: ATE 0.2, local relation error 0.4 m
+	io::Trajectory zig;
+	for (size_t k = 0; k < ref.size(); k++)
+		zig.emplace_back(ref[k].first, TPose2D(ref[k].second.x, ref[k].second.y + (k % 2 ? 0.2 : -0.2), ref[k].second.phi));
+	const auto z = eval::evaluateTrajectory(zig, ref);
+	EXPECT_NEAR(z.ateRmse, 0.2, 2e-3);
+	EXPECT_NEAR(z.localT, 0.4, 1e-9);
+}
+
+TEST(TrajectoryEval, MatchesByTimestampWithin50ms)
+{
+	const auto ref = path(200);
+	io::Trajectory est;
+	for (size_t k = 0; k < ref.size(); k++)
+	{
+		if (k % 4 == 0) continue;  // missing poses
+		const double jitter = (k % 3 == 0) ? 0.03 : (k % 3 == 1 ? -0.049 : 0.07);  // the last is too far
+		est.emplace_back(ref[k].first + jitter, ref[k].second);
+	}
+	std::reverse(est.begin(), est.end());  // order does not matter
+	const auto pairs = eval::matchByTimestamp(est, ref, 0.05);
+	size_t expect = 0;
+	for (size_t k = 0; k < ref.size(); k++) expect += k % 4 != 0 && k % 3 != 2;
+	EXPECT_EQ(pairs.size(), expect);
+	EXPECT_THROW(eval::evaluateTrajectory(io::Trajectory(est.begin(), est.begin() + 2), ref), std::runtime_error);
+	EXPECT_EQ(eval::formatText(eval::evaluateTrajectory(ref, ref)).rfind("n=200 ate_rmse_m=0.0000 ", 0), 0u);
+}
+
+TEST(TrajectoryEval, AgreesWithEvaltrajPy)
+{
+	const std::string py = std::string(GV_SHARED_DIR) + "/bench/evaltraj.py";
+	if (run("command -v python3").empty() || !fs::exists(py)) GTEST_SKIP() << "python3 or evaltraj.py not available";
+	const std::string dir = (fs::temp_directory_path() / "gv_trajectory_eval_test").string();
+	fs::create_directories(dir);
+	const auto bench = sim::makeBenchmarkLog(std::string(GV_SHARED_DIR) + "/data/intel-corrected.log.gz", dir + "/intel");
+	const auto ref = io::readTrajectory(bench.refPath);
+	const auto odo = io::trajectoryOf(io::readLog(bench.logPath));
+	// estimates: raw odometry, and a thinned, jittered, noisy odometry
+	io::Trajectory odd;
+	sim::Random rng(7);
+	for (size_t k = 0; k < odo.size(); k++)
+		if (k % 5 != 0)
+			odd.emplace_back(odo[k].first + rng.uniform(-0.06, 0.06),
+							 TPose2D(odo[k].second.x + rng.gauss(0, 0.3), odo[k].second.y, odo[k].second.phi + rng.gauss(0, 0.05)));
+	for (const auto& est : {odo, odd, ref})
+	{
+		io::writeTrajectory(dir + "/est.txt", est);
+		const auto theirs = parseKeyValues(run("python3 '" + py + "' '" + dir + "/est.txt' '" + bench.refPath + "'"));
+		const auto m = eval::evaluateTrajectory(est, ref);
+		const auto ours = parseKeyValues(eval::formatText(m));
+		ASSERT_EQ(theirs.size(), 7u);
+		for (const auto& [k, v] : theirs) EXPECT_NEAR(ours.at(k), v, 1e-3) << k;
+		EXPECT_NEAR(m.ateRmse, theirs.at("ate_rmse_m"), 1e-3);
+	}
+	fs::remove_all(dir);
+}

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# gv-carmen2rawlog writes rawlogs that MRPT's own rawlog-edit reads with the right
+# counts, labels and timestamps; bad input gives one line and a non-zero exit.
+set -euo pipefail
+BIN=${GV_BIN:?}; DATA=${GV_SHARED_DIR:?}/data
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$BIN/gv-carmen2rawlog" "$DATA/intel-corrected.log.gz" "$T/obs.rawlog" > "$T/out.txt"
+grep -q "910 scans (910 FLASER)" "$T/out.txt" || fail "summary: $(cat "$T/out.txt")"
+grep -q "wrote $T/obs.rawlog: 910 scans, 910 odometry observations" "$T/out.txt" || fail "wrote line"
+"$BIN/gv-carmen2rawlog" "$DATA/freiburg-101-corrected.log.gz" "$T/sf.rawlog" --format sf --quiet
+[ -s "$T/sf.rawlog" ] || fail "no sf rawlog"
+
+if command -v rawlog-edit >/dev/null; then
+  rawlog-edit --info -i "$T/obs.rawlog" > "$T/info.txt" 2>&1 || fail "rawlog-edit failed: $(tail -3 "$T/info.txt")"
+  grep -Eq "Observations format +: Yes" "$T/info.txt" || fail "not observation format"
+  grep -Eq "FLASER / +910" "$T/info.txt" || fail "FLASER count: $(grep FLASER "$T/info.txt")"
+  grep -Eq "ODOMETRY / +910" "$T/info.txt" || fail "ODOMETRY count"
+  grep -q "Earliest timestamp                : 32.906800" "$T/info.txt" || fail "first timestamp: $(grep Earliest "$T/info.txt")"
+  rawlog-edit --info -i "$T/sf.rawlog" > "$T/info2.txt" 2>&1 || fail "rawlog-edit failed on sf"
+  grep -Eq "Actions/SensoryFrame format +: Yes" "$T/info2.txt" || fail "not sensory-frame format"
+  grep -Eq "FLASER / +292" "$T/info2.txt" || fail "sf FLASER count: $(grep FLASER "$T/info2.txt")"
+else
+  echo "rawlog-edit not installed: MRPT cross-check skipped"
+fi
+
+# errors: one line on stderr, exit 1 for bad input, 2 for bad usage, no output file left behind
+printf 'FLASER 3 1.0 nan 2.0 0 0 0 0 0 0 5.0 h 5.0\n' > "$T/bad.log"
+set +e
+"$BIN/gv-carmen2rawlog" "$T/bad.log" "$T/bad.rawlog" 2> "$T/err.txt"; rc=$?
+set -e
+[ $rc -eq 1 ] || fail "bad input: exit $rc"
+[ "$(cat "$T/err.txt")" = "$T/bad.log:1: FLASER range 1 is 'nan' (not a finite number)" ] || fail "message: $(cat "$T/err.txt")"
+[ ! -e "$T/bad.rawlog" ] || fail "output written for bad input"
+set +e
+"$BIN/gv-carmen2rawlog" "$DATA/intel-corrected.log.gz" "$T/x.rawlog" --frmat sf 2> "$T/err.txt"; rc=$?
+"$BIN/gv-carmen2rawlog" "$DATA/intel-corrected.log.gz" "$T/no/such/dir/x.rawlog" 2> "$T/err2.txt"; rc2=$?
+set -e
+[ $rc -eq 2 ] && [ "$(wc -l < "$T/err.txt")" -eq 1 ] || fail "unknown option: exit $rc, $(cat "$T/err.txt")"
+[ $rc2 -eq 1 ] && grep -q "cannot write (No such file or directory)" "$T/err2.txt" || fail "unwritable: $(cat "$T/err2.txt")"
+ls "$T" | grep -q "\.tmp" && fail "temporary file left behind"
+echo "carmen2rawlog: OK"

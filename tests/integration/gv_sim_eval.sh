@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# gv-sim's default run, determinism per seed, option handling, and gv-eval on its output.
+set -euo pipefail
+BIN=${GV_BIN:?}
+T=$(mktemp -d); trap 'rm -rf "$T"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+"$BIN/gv-sim" --out "$T/a" > "$T/out.txt"
+grep -q "world corridor-loop, seed 1" "$T/out.txt" || fail "summary: $(cat "$T/out.txt")"
+grep -q "wrote $T/a/sim.log" "$T/out.txt" || fail "does not say where it wrote"
+for f in sim.log truth_trajectory.txt truth_labels.txt truth_walls.txt truth_seen_walls.txt truth_doors.txt truth_dynamic.txt odometry.txt sim_info.txt; do
+  [ -s "$T/a/$f" ] || fail "missing $f"
+done
+scans=$(grep -c '^FLASER' "$T/a/sim.log")
+[ "$scans" -gt 1000 ] || fail "only $scans scans"
+[ "$(grep -vc '^#' "$T/a/truth_labels.txt")" -eq "$scans" ] || fail "label lines != scans"
+# the log's poses are odometry, not the truth
+head -2 "$T/a/truth_trajectory.txt" | tail -1 | grep -q "^1100000000.000000 1.200000 6.200000 0.000000$" || fail "truth start"
+grep -m1 '^FLASER' "$T/a/sim.log" | grep -q " 0.000000 0.000000 0.000000 0.000000 0.000000 0.000000 1100000000.000000 gv-sim " || fail "odometry start"
+
+# deterministic per seed
+"$BIN/gv-sim" --out "$T/b" --quiet
+for f in sim.log truth_labels.txt truth_dynamic.txt truth_seen_walls.txt; do cmp -s "$T/a/$f" "$T/b/$f" || fail "$f differs between runs"; done
+"$BIN/gv-sim" --out "$T/c" --seed 2 --quiet
+cmp -s "$T/a/sim.log" "$T/c/sim.log" && fail "seed 2 gives the same log"
+
+# options: ini section, flags, exact scan count, other worlds, 181 beams
+printf '[gv_sim]\nworld = office\npeople = 6\nbeams = 181\n' > "$T/sim.ini"
+"$BIN/gv-sim" --out "$T/d" --config "$T/sim.ini" --scans 2000 --quiet
+[ "$(grep -c '^FLASER 181 ' "$T/d/sim.log")" -eq 2000 ] || fail "--scans 2000 with 181 beams"
+grep -q "^people 6$" "$T/d/sim_info.txt" || fail "ini people"
+
+# bad options: one line, exit 2; unwritable output: exit 1
+set +e
+"$BIN/gv-sim" --out "$T/e" --peeple 3 2> "$T/err.txt"; rc=$?
+[ $rc -eq 2 ] && [ "$(cat "$T/err.txt")" = "gv-sim: unknown option --peeple (see --help)" ] || fail "unknown option: $rc $(cat "$T/err.txt")"
+"$BIN/gv-sim" --out "$T/e" --world mars 2> "$T/err.txt"; rc=$?
+[ $rc -eq 2 ] && grep -q "unknown world 'mars'" "$T/err.txt" || fail "unknown world: $rc $(cat "$T/err.txt")"
+"$BIN/gv-sim" --out "$T/e" --beams many 2> "$T/err.txt"; rc=$?
+[ $rc -eq 2 ] || fail "bad number: $rc"
+printf '[gv_sim]\nwrold = office\n' > "$T/bad.ini"
+"$BIN/gv-sim" --out "$T/e" --config "$T/bad.ini" 2> "$T/err.txt"; rc=$?
+[ $rc -eq 1 ] && [ "$(cat "$T/err.txt")" = "$T/bad.ini: [gv_sim] unknown key 'wrold'" ] || fail "ini key: $rc $(cat "$T/err.txt")"
+"$BIN/gv-sim" --out /proc/gv-sim-cannot-write 2> "$T/err.txt"; rc=$?
+set -e
+[ $rc -eq 1 ] && grep -q "^/proc/gv-sim-cannot-write: cannot write" "$T/err.txt" || fail "unwritable: $rc $(cat "$T/err.txt")"
+
+# gv-eval: the odometry in the log and in odometry.txt score the same against the truth
+a=$("$BIN/gv-eval" traj "$T/a/odometry.txt" "$T/a/truth_trajectory.txt")
+b=$("$BIN/gv-eval" traj "$T/a/sim.log" "$T/a/truth_trajectory.txt")
+[ "$a" = "$b" ] || fail "log vs odometry.txt: $a / $b"
+"$BIN/gv-eval" traj "$T/a/truth_trajectory.txt" "$T/a/truth_trajectory.txt" | grep -q "ate_rmse_m=0.0000 rel_local_t_m=0.0000" || fail "identity not 0"
+# a perfect map: the true walls as static vectors, the dynamic hits as dynamic vectors
+awk '!/^#/{print $1, $2, $3, $4, 1.0}' "$T/a/truth_walls.txt" > "$T/perfect.txt"
+awk '$1=="hit"{print $5, $6, $7, $8, 0.0, "dynamic"}' "$T/a/truth_dynamic.txt" >> "$T/perfect.txt"
+awk '!/^#/{print $1, $2, $3}' "$T/a/truth_doors.txt" > "$T/doors.txt"
+json=$("$BIN/gv-eval" map "$T/perfect.txt" "$T/a" --doors "$T/doors.txt" --json)
+echo "$json" | grep -q '"static_precision": 1.000000' || fail "precision: $json"
+echo "$json" | grep -q '"static_recall": 1.000000' || fail "recall: $json"
+echo "$json" | grep -q '"dynamic_detection": 1.000000' || fail "detection: $json"
+echo "$json" | grep -q '"door_recall": 1.000000' || fail "doors: $json"
+set +e
+printf '0 0 1 1\n' > "$T/bad.txt"
+"$BIN/gv-eval" map "$T/bad.txt" "$T/a" 2> "$T/err.txt"; rc=$?
+set -e
+[ $rc -eq 1 ] && [ "$(cat "$T/err.txt")" = "$T/bad.txt:1: expected 'x1 y1 x2 y2 p_static [static|dynamic]', found 4 fields" ] || fail "bad vectors: $(cat "$T/err.txt")"
+echo "gv_sim_eval: OK"

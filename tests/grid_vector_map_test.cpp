@@ -167,6 +167,10 @@ TEST(CGridVectorMap, TextRepresentationAndVisualisation)
 	while (std::getline(f, line))
 		if (!line.empty() && line[0] != '#') ++rows;
 	EXPECT_EQ(rows, m.vectors().size());
+	std::ifstream svg(prefix + "_vectors.svg");
+	std::string svgText((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+	EXPECT_NE(svgText.find("<svg"), std::string::npos);
+	EXPECT_NE(svgText.find("<line"), std::string::npos);
 	EXPECT_NE(m.asString().find("grid vectors"), std::string::npos);
 	mrpt::opengl::CSetOfObjects o;
 	m.getVisualizationInto(o);

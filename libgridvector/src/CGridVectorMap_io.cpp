@@ -1,8 +1,8 @@
 // CGridVectorMap: serialization (versioned) and text/SVG representation.
+#include <gridvector/MapExport.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/serialization/CArchive.h>
 
-#include <fstream>
 #include <stdexcept>
 
 using namespace mrpt::maps;
@@ -108,17 +108,6 @@ void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ve
 
 void CGridVectorMap::saveMetricMapRepresentationToFile(const std::string& prefix) const
 {
-	const std::string path = prefix + "_vectors.txt";
-	std::ofstream f(path);
-	if (!f) throw std::runtime_error(path + ": cannot write");
-	f << "# x1 y1 x2 y2 p_static state   (CGridVectorMap, " << map_.size() << " vectors)\n";
-	for (const auto& v : map_.vectors())
-	{
-		const char* st = v.state == gridvector::VectorState::Static    ? "static"
-						 : v.state == gridvector::VectorState::Dynamic ? "dynamic"
-																	   : "unknown";
-		f << v.start().x << ' ' << v.start().y << ' ' << v.end().x << ' ' << v.end().y << ' '
-		  << v.pStatic() << ' ' << st << '\n';
-	}
-	if (!f) throw std::runtime_error(path + ": write failed");
+	gridvector::MapExport::writeVectorsText(map_.vectors(), prefix + "_vectors.txt");
+	gridvector::MapExport::writeSvg(map_.vectors(), prefix + "_vectors.svg");
 }

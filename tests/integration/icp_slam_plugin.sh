@@ -13,8 +13,8 @@ vec=$(ls LOG_ICP-SLAM-GV/*CGridVectorMap*_vectors.txt)
 rows=$(grep -vc '^#' "$vec")
 echo "icp-slam wrote $rows grid vectors to $(basename "$vec")"
 [ "$rows" -ge 20 ] || { echo "too few vectors: $rows"; exit 1; }
-# Every row: 4 finite coordinates, p_static in [0,1], a state word.
-awk '!/^#/ { if (NF != 6 || $5 < 0 || $5 > 1) { print "bad row: " $0; exit 1 } }' "$vec"
+# Every row: 4 coordinates and p_static in [0,1].
+awk '!/^#/ { if (NF != 5 || $5 < 0 || $5 > 1) { print "bad row: " $0; exit 1 } }' "$vec"
 # The simplemap icp-slam saved rebuilds a CGridVectorMap that serializes and loads back.
 "$GV_BIN/gv-map-info" --from-simplemap LOG_ICP-SLAM-GV/_finalmap_.simplemap --save rebuilt.gvmap | tee info1.txt
 "$GV_BIN/gv-map-info" rebuilt.gvmap | tee info2.txt

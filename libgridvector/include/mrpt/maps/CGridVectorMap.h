@@ -64,7 +64,7 @@ class CGridVectorMap : public CMetricMap
 
 	// --- CMetricMap ---
 	bool isEmpty() const override;
-	/** Writes `<prefix>_vectors.txt` (x1 y1 x2 y2 p_static state per line)
+	/** Writes `<prefix>_vectors.txt` (x1 y1 x2 y2 p_static per line)
 	 * and `<prefix>_vectors.svg`. */
 	void saveMetricMapRepresentationToFile(const std::string& prefix) const override;
 	std::string asString() const override;

@@ -20,11 +20,15 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
 
+#include <fcntl.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 
 using namespace gridvector;
 using namespace gridvector::graphslam;
@@ -209,6 +213,26 @@ void writeEngineOutputs(mrpt::graphslam::CGraphSlamEngine<graph_t>& engine, cons
 	}
 }
 
+/** MRPT 2.5's engine constructor wrongly calls the 2D graph class untested
+ * (it compares "CPosePDFGaussianInf" with "mrpt::poses::CPosePDFGaussianInf")
+ * and then waits for a key: give it end-of-file instead of the terminal. */
+class StdinFromDevNull
+{
+   public:
+	StdinFromDevNull() : saved_(dup(0))
+	{
+		const int null = open("/dev/null", O_RDONLY);
+		if (null >= 0) dup2(null, 0), close(null);
+	}
+	~StdinFromDevNull()
+	{
+		if (saved_ >= 0) dup2(saved_, 0), close(saved_);
+	}
+
+   private:
+	int saved_;
+};
+
 int run(const Settings& s, DeciderRegistry& reg)
 {
 	requireFile(s.ini, "config file");
@@ -226,8 +250,10 @@ int run(const Settings& s, DeciderRegistry& reg)
 		reg.edge_regs_map[s.edgeReg]());
 	std::unique_ptr<mrpt::graphslam::optimizers::CGraphSlamOptimizer<graph_t>> gso(
 		reg.optimizers_map[s.optimizer]());
+	std::optional<StdinFromDevNull> noPause(std::in_place);
 	mrpt::graphslam::CGraphSlamEngine<graph_t> engine(s.ini, s.rawlog, s.groundTruth, nullptr,
 													   nrd.get(), erd.get(), gso.get());
+	noPause.reset();
 	if (s.quiet)
 		for (mrpt::system::COutputLogger* l :
 			 {static_cast<mrpt::system::COutputLogger*>(&engine),

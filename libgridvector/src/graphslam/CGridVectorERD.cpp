@@ -132,27 +132,56 @@ void CGridVectorERD::registerEdges(TNodeID n)
 	for (size_t i = 0; i < cands.size(); ++i) tryEdge(cands[i], n, i < sequential);
 }
 
-// Sec. 4.2: one registration between two nodes' vectors, kept if plausible.
-bool CGridVectorERD::tryEdge(TNodeID from, TNodeID to, bool sequential)
+bool CGridVectorERD::acceptable(const MatchResult& r, const TPose2D& guess, bool sequential,
+								double widenDistance, double widenAngle) const
+{
+	return r.ok() &&
+		closeTo(guess, r.pose, params_.maxCorrectionDistance + widenDistance,
+				(params_.maxCorrectionAngleDeg * M_PI / 180) + widenAngle) &&
+		validInformation(r.information) && (sequential || r.matchedShare >= params_.minMatchedShare);
+}
+
+std::optional<MatchResult> CGridVectorERD::registerPair(TNodeID from, TNodeID to, const TPose2D& guess,
+														bool sequential)
 {
 	const auto& a = nodeVectors_.at(from);
 	const auto& b = nodeVectors_.at(to);
+	if (a.empty() || b.empty()) return std::nullopt;
+	++stats_.registrations;
+	MatchResult r = matcher_.match(a, b, guess);
+	if (acceptable(r, guess, sequential, 0, 0)) return r;
+	const double d = params_.searchOffset, t = params_.searchAngleDeg * M_PI / 180;
+	if (sequential || (d <= 0 && t <= 0)) return std::nullopt;
+	std::optional<MatchResult> best;
+	for (double dx : {-d, 0.0, d})
+		for (double dy : {-d, 0.0, d})
+			for (double dt : {-t, 0.0, t})
+			{
+				if ((dx == 0 && dy == 0 && dt == 0) || (d <= 0 && (dx != 0 || dy != 0)) || (t <= 0 && dt != 0))
+					continue;
+				++stats_.registrations;
+				r = matcher_.match(a, b, TPose2D(guess.x + dx, guess.y + dy, guess.phi + dt));
+				if (acceptable(r, guess, false, std::sqrt(2.0) * d, t) &&
+					(!best || r.matchedLength > best->matchedLength))
+					best = r;
+			}
+	return best;
+}
+
+// Sec. 4.2: one registration between two nodes' vectors, kept if plausible.
+bool CGridVectorERD::tryEdge(TNodeID from, TNodeID to, bool sequential)
+{
 	const auto& nodes = this->m_graph->nodes;
 	const TPose2D guess = (nodes.at(to) - nodes.at(from)).asTPose();
-	++stats_.registrations;
-	const MatchResult r = a.empty() || b.empty() ? MatchResult{} : matcher_.match(a, b, guess);
-	const bool ok = r.ok() &&
-		closeTo(guess, r.pose, params_.maxCorrectionDistance, params_.maxCorrectionAngleDeg * M_PI / 180) &&
-		validInformation(r.information) && (sequential || r.matchedShare >= params_.minMatchedShare);
-	MRPT_LOG_DEBUG_FMT("register %u -> %u (%s): %s, share %.2f -> %s", unsigned(from), unsigned(to),
-					   sequential ? "sequential" : "pass", toString(r.status), r.matchedShare,
-					   ok ? "edge" : "rejected");
-	if (!ok)
+	const auto r = registerPair(from, to, guess, sequential);
+	MRPT_LOG_DEBUG_FMT("register %u -> %u (%s): %s", unsigned(from), unsigned(to),
+					   sequential ? "sequential" : "pass", r ? "edge" : "rejected");
+	if (!r)
 	{
 		++stats_.rejected;
 		return false;
 	}
-	const auto c = toConstraint({r.pose, r.information});
+	const auto c = toConstraint({r->pose, r->information});
 	this->registerNewEdge(from, to, c);
 	this->m_graph->insertEdge(from, to, c);
 	++(sequential ? stats_.sequentialEdges : stats_.passEdges);
@@ -176,7 +205,7 @@ void CGridVectorERD::getDescriptiveReport(std::string* report_str) const
 	ss << "Grid-vector edge registration (vector matching) summary:\n" << std::string(80, '#') << "\n";
 	params_.dumpToTextStream(ss);
 	ss << mrpt::format(
-		"registrations %zu: sequential edges %zu, pass edges %zu (loop closures %zu), rejected %zu\n\n",
+		"matcher runs %zu: sequential edges %zu, pass edges %zu (loop closures %zu), rejected %zu\n\n",
 		stats_.registrations, stats_.sequentialEdges, stats_.passEdges, stats_.loopClosures,
 		stats_.rejected);
 	report_str->clear();

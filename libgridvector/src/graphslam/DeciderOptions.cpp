@@ -66,6 +66,8 @@ void EdgeDeciderOptions::load(const mrpt::config::CConfigFileBase& cfg, const st
 	require(minMatchedShare > 0 && minMatchedShare <= 1, source, own, "min_matched_share must be in (0, 1]");
 	require(maxCorrectionDistance > 0, source, own, "max_correction_distance must be > 0");
 	require(maxCorrectionAngleDeg > 0, source, own, "max_correction_angle_deg must be > 0");
+	require(searchOffset >= 0, source, own, "search_offset must be >= 0");
+	require(searchAngleDeg >= 0 && searchAngleDeg < 90, source, own, "search_angle_deg must be in [0, 90)");
 }
 
 void EdgeDeciderOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string&)

@@ -11,6 +11,7 @@
 #include <mrpt/graphslam/interfaces/CEdgeRegistrationDecider.h>
 
 #include <map>
+#include <optional>
 #include <vector>
 
 namespace gridvector::graphslam
@@ -71,6 +72,12 @@ class CGridVectorERD
 	void attachScans();
 	void registerEdges(TNodeID n);
 	bool tryEdge(TNodeID from, TNodeID to, bool sequential);
+	/** Registration of `to`'s vectors against `from`'s: from the guess, then
+	 * (earlier passes, search_* > 0) from shifted guesses, best matched length. */
+	std::optional<MatchResult> registerPair(TNodeID from, TNodeID to, const mrpt::math::TPose2D& guess,
+											bool sequential);
+	bool acceptable(const MatchResult& r, const mrpt::math::TPose2D& guess, bool sequential,
+					double widenDistance, double widenAngle) const;
 	std::vector<TNodeID> passCandidates(TNodeID n, TNodeID below) const;
 
 	EdgeDeciderOptions params_;

@@ -73,6 +73,8 @@ struct EdgeDeciderOptions : public mrpt::config::CLoadableOptions
 	double minMatchedShare = 0.3;
 	double maxCorrectionDistance = 0.5;  //!< [m]
 	double maxCorrectionAngleDeg = 10.0;  //!< [deg]
+	double searchOffset = 0.75;  //!< [m]
+	double searchAngleDeg = 0.0;  //!< [deg]
 
 	template <class V>
 	void visitShared(V&& v)
@@ -91,6 +93,8 @@ struct EdgeDeciderOptions : public mrpt::config::CLoadableOptions
 		v("min_matched_share", minMatchedShare, "A non-sequential registration needs this share of the shorter scan's vector length matched (0..1]");
 		v("max_correction_distance", maxCorrectionDistance, "A registration that moves the relative pose further than this from the graph's estimate is rejected [m]");
 		v("max_correction_angle_deg", maxCorrectionAngleDeg, "... or turns it more than this [deg]");
+		v("search_offset", searchOffset, "Earlier passes: if the registration from the graph's estimate fails, retry from the estimate shifted by -d, 0, +d in x and y (0: no retry); the correction gate widens by d [m]");
+		v("search_angle_deg", searchAngleDeg, "... and turned by -a, 0, +a; the angle gate widens by a [deg]");
 	}
 
 	void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,

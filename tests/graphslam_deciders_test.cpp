@@ -1,0 +1,267 @@
+// Grid-vector registration deciders for MRPT's graphslam-engine: options, registry, behaviour.
+#include <gridvector/graphslam/DeciderRegistry.h>
+#include <gridvector/graphslam/PoseFusion.h>
+#include <gridvector/graphslam/RunRecorder.h>
+
+#include <gtest/gtest.h>
+#include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/poses/CPose2D.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include "test_scans.h"
+
+using namespace gridvector::graphslam;
+using mrpt::math::TPose2D;
+using mrpt::poses::CPose2D;
+
+namespace
+{
+mrpt::config::CConfigFileMemory ini(const std::string& text) { return mrpt::config::CConfigFileMemory(text); }
+
+// A room with some clutter: enough wall directions for vector matching.
+std::vector<gvtest::Seg> world()
+{
+	auto w = gvtest::room(-6, -4, 6, 4);
+	w.push_back({-2, -4, -2, -1.5});
+	w.push_back({2, 4, 2, 1.0});
+	w.push_back({3.5, -2, 5, -2});
+	w.push_back({-5, 2, -3.5, 2});
+	return w;
+}
+
+mrpt::obs::CObservation::Ptr scanAt(const TPose2D& truth)
+{
+	auto s = mrpt::obs::CObservation2DRangeScan::Create(gvtest::castScan(truth, world(), {}, 361, M_PI, 20));
+	return s;
+}
+
+mrpt::obs::CObservation::Ptr odometryAt(const TPose2D& odo)
+{
+	auto o = mrpt::obs::CObservationOdometry::Create();
+	o->odometry = CPose2D(odo);
+	return o;
+}
+
+/** Ground truth: a straight drive then a turn; odometry with a yaw bias. */
+struct Drive
+{
+	std::vector<TPose2D> truth, odometry;
+	Drive()
+	{
+		TPose2D t(-4, 0, 0), o = t;
+		for (int i = 0; i < 40; ++i)
+		{
+			const TPose2D step = i < 25 ? TPose2D(0.2, 0, 0) : TPose2D(0.1, 0, 0.08);
+			t = (CPose2D(t) + CPose2D(step)).asTPose();
+			o = (CPose2D(o) + CPose2D(step.x * 1.05, 0, step.phi + 0.01)).asTPose();
+			truth.push_back(t);
+			odometry.push_back(o);
+		}
+	}
+};
+
+double positionError(const CPose2D& estimateRelToFirst, const TPose2D& truth, const TPose2D& truth0)
+{
+	const CPose2D rel = CPose2D(truth) - CPose2D(truth0);
+	return estimateRelToFirst.distanceTo(rel);
+}
+}  // namespace
+
+TEST(graphslam_options, defaults_match_the_documented_values)
+{
+	NodeDeciderOptions n;
+	EXPECT_DOUBLE_EQ(n.registrationMaxDistance, 0.5);
+	EXPECT_DOUBLE_EQ(n.registrationMaxAngleDeg, 10.0);
+	EXPECT_TRUE(n.useOdometry);
+	EdgeDeciderOptions e;
+	EXPECT_EQ(e.lcMinNodeIdDiff, 30);
+	EXPECT_DOUBLE_EQ(e.maxDistance, 3.0);
+	EXPECT_EQ(e.sequentialWindow, 3);
+	EXPECT_DOUBLE_EQ(e.searchOffset, 0.75);
+}
+
+TEST(graphslam_options, reads_shared_and_own_sections)
+{
+	NodeDeciderOptions n;
+	n.load(ini("[NodeRegistrationDeciderParameters]\nregistration_max_distance = 0.2 // m\n"
+			   "registration_max_angle = 30\nclass_verbosity = 0\n"
+			   "[GridVectorNRD]\nmax_correction_distance = 0.8\nuse_odometry = false\n"),
+		   "t.ini");
+	EXPECT_DOUBLE_EQ(n.registrationMaxDistance, 0.2);
+	EXPECT_DOUBLE_EQ(n.registrationMaxAngleDeg, 30);
+	EXPECT_EQ(n.classVerbosity, 0);
+	EXPECT_DOUBLE_EQ(n.maxCorrectionDistance, 0.8);
+	EXPECT_FALSE(n.useOdometry);
+	EdgeDeciderOptions e;
+	e.load(ini("[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 12\n"
+			   "[GridVectorERD]\nmax_distance = 4.5\nsequential_window = 5\npass_gap = 7\n"
+			   "search_offset = 0\n"),
+		   "t.ini");
+	EXPECT_EQ(e.lcMinNodeIdDiff, 12);
+	EXPECT_DOUBLE_EQ(e.maxDistance, 4.5);
+	EXPECT_EQ(e.sequentialWindow, 5);
+	EXPECT_EQ(e.passGap, 7);
+	EXPECT_DOUBLE_EQ(e.searchOffset, 0);
+}
+
+TEST(graphslam_options, shared_sections_tolerate_other_deciders_keys)
+{
+	EdgeDeciderOptions e;
+	EXPECT_NO_THROW(e.load(ini("[EdgeRegistrationDeciderParameters]\nICP_goodness_thresh = 0.7\n"
+							   "ICP_max_distance = 2\nLC_min_nodeid_diff = 20\n"),
+						   "t.ini"));
+	EXPECT_EQ(e.lcMinNodeIdDiff, 20);
+}
+
+TEST(graphslam_options, unknown_own_key_names_file_section_and_key)
+{
+	EdgeDeciderOptions e;
+	try
+	{
+		e.load(ini("[GridVectorERD]\nmax_distanse = 4\n"), "my.ini");
+		FAIL() << "no exception";
+	}
+	catch (const std::runtime_error& ex)
+	{
+		EXPECT_STREQ(ex.what(), "my.ini: unknown key 'max_distanse' in section [GridVectorERD]");
+	}
+	NodeDeciderOptions n;
+	EXPECT_THROW(n.load(ini("[GridVectorNRD]\nregistration_max_distance = 1\n"), "my.ini"),
+				 std::runtime_error);
+}
+
+TEST(graphslam_options, out_of_range_values_are_rejected)
+{
+	NodeDeciderOptions n;
+	EXPECT_THROW(n.load(ini("[NodeRegistrationDeciderParameters]\nregistration_max_distance = -1\n"), "a.ini"),
+				 std::runtime_error);
+	EdgeDeciderOptions e;
+	EXPECT_THROW(e.load(ini("[GridVectorERD]\nmin_matched_share = 1.5\n"), "a.ini"), std::runtime_error);
+	EXPECT_THROW(e.load(ini("[GridVectorERD]\npass_gap = 0\n"), "a.ini"), std::runtime_error);
+}
+
+TEST(graphslam_options, deciders_load_from_the_engine_ini_file)
+{
+	const std::string path = ::testing::TempDir() + "gv_deciders_test.ini";
+	{
+		std::ofstream f(path);
+		f << "[NodeRegistrationDeciderParameters]\nregistration_max_distance = 0.3\n"
+			 "[gridvector_matcher]\nmax_rms = 0.09\n[GridVectorERD]\nmax_loop_candidates = 2\n";
+	}
+	CGridVectorNRD nrd;
+	nrd.loadParams(path);
+	EXPECT_DOUBLE_EQ(nrd.options().registrationMaxDistance, 0.3);
+	EXPECT_DOUBLE_EQ(nrd.config().matcher.maxRms, 0.09);
+	CGridVectorERD erd;
+	erd.loadParams(path);
+	EXPECT_EQ(erd.options().maxLoopCandidates, 2);
+	std::ofstream(path) << "[gridvector_matcher]\nmax_rsm = 0.09\n";
+	EXPECT_THROW(nrd.loadParams(path), std::runtime_error);
+	std::remove(path.c_str());
+	EXPECT_THROW(nrd.loadParams(path), std::runtime_error);
+}
+
+TEST(graphslam_registry, lists_and_creates_grid_vector_and_mrpt_deciders)
+{
+	DeciderRegistry reg;
+	for (const char* n : {"CGridVectorNRD", "CFixedIntervalsNRD", "CICPCriteriaNRD", "CEmptyNRD"})
+		EXPECT_TRUE(reg.checkRegistrationDeciderExists(n, "node")) << n;
+	for (const char* n : {"CGridVectorERD", "CICPCriteriaERD", "CLoopCloserERD", "CEmptyERD"})
+		EXPECT_TRUE(reg.checkRegistrationDeciderExists(n, "edge")) << n;
+	EXPECT_FALSE(reg.checkRegistrationDeciderExists("CGridVectorNRD", "edge"));
+	std::unique_ptr<mrpt::graphslam::deciders::CNodeRegistrationDecider<DeciderRegistry::graph_t>> nrd(
+		reg.node_regs_map.at("CGridVectorNRD")());
+	EXPECT_NE(dynamic_cast<CGridVectorNRD*>(nrd.get()), nullptr);
+	std::unique_ptr<mrpt::graphslam::deciders::CEdgeRegistrationDecider<DeciderRegistry::graph_t>> erd(
+		reg.edge_regs_map.at("CGridVectorERD")());
+	EXPECT_NE(dynamic_cast<CGridVectorERD*>(erd.get()), nullptr);
+}
+
+TEST(pose_fusion, information_weighted_and_singular_directions_kept)
+{
+	PoseEstimate a{TPose2D(1, 0, 0), Eigen::Matrix3d::Identity()};
+	PoseEstimate b{TPose2D(2, 1, 0.2), Eigen::Matrix3d::Zero()};
+	b.information(0, 0) = 3;  // b constrains x only
+	const auto f = fuse(a, b);
+	EXPECT_NEAR(f.mean.x, 1.75, 1e-9);
+	EXPECT_NEAR(f.mean.y, 0, 1e-9);
+	EXPECT_NEAR(f.mean.phi, 0, 1e-9);
+	EXPECT_NEAR(f.information(0, 0), 4, 1e-12);
+	EXPECT_TRUE(validInformation(f.information));
+	Eigen::Matrix3d bad = Eigen::Matrix3d::Identity();
+	bad(2, 2) = -1;
+	EXPECT_FALSE(validInformation(bad));
+}
+
+// Observation-only stream (odometry, then scan) through NRD then ERD, as the engine calls them.
+TEST(graphslam_deciders, nodes_follow_the_truth_better_than_odometry_and_edges_are_added)
+{
+	const Drive d;
+	mrpt::graphs::CNetworkOfPoses2DInf graph;
+	CGridVectorNRD nrd;
+	CGridVectorERD erd;
+	const auto cfg = ini("[NodeRegistrationDeciderParameters]\nregistration_max_distance = 0.5\n"
+						 "[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 30\n"
+						 "[GridVectorERD]\nmatch_previous_node = true\n");
+	nrd.loadOptions(cfg, "mem");
+	erd.loadOptions(cfg, "mem");
+	nrd.setGraphPtr(&graph);
+	erd.setGraphPtr(&graph);
+	std::vector<size_t> nodeStep(1, 0);  // the root has the first scan
+	for (size_t i = 0; i < d.truth.size(); ++i)
+		for (const auto& obs : {odometryAt(d.odometry[i]), scanAt(d.truth[i])})
+		{
+			const bool reg = nrd.updateState({}, {}, obs);
+			erd.updateState({}, {}, obs);
+			if (reg) nodeStep.push_back(i);
+		}
+	graph.dijkstra_nodes_estimate();
+	ASSERT_GE(graph.nodeCount(), 8u);
+	ASSERT_EQ(graph.nodeCount(), nodeStep.size());
+	EXPECT_GT(nrd.stats().matched, nrd.stats().scans / 2);
+	EXPECT_GT(graph.edgeCount(), graph.nodeCount());  // ERD edges on top of the chain
+	EXPECT_GT(erd.stats().sequentialEdges, 0u);
+	const size_t last = graph.nodeCount() - 1;
+	const TPose2D t0 = d.truth[0], o0 = d.odometry[0];
+	const double gvError = positionError(graph.nodes.at(last), d.truth[nodeStep[last]], t0);
+	const double odoError =
+		(CPose2D(d.odometry[nodeStep[last]]) - CPose2D(o0)).distanceTo(CPose2D(d.truth[nodeStep[last]]) - CPose2D(t0));
+	EXPECT_LT(gvError, 0.1);
+	EXPECT_LT(gvError, 0.5 * odoError);
+	for (const auto& e : graph.edges)  // information from the matcher: positive definite
+		EXPECT_GT(e.second.cov_inv.asEigen().determinant(), 0);
+}
+
+TEST(graphslam_recorder, scans_between_nodes_follow_odometry_from_their_node)
+{
+	RunRecorder rec;
+	size_t known = 0;  // as in the engine: nodes appear at the scan's step, not the odometry's
+	auto step = [&](const TPose2D& odo, size_t nodes) {
+		rec.record({}, {}, odometryAt(odo), known);
+		known = nodes;
+		auto s = scanAt(TPose2D(0, 0, 0));
+		s->timestamp = mrpt::Clock::fromDouble(double(rec.scanCount()) + 100);
+		rec.record({}, {}, s, nodes);
+	};
+	step(TPose2D(5, 5, 0), 0);  // root scan
+	step(TPose2D(5.3, 5, 0), 0);
+	step(TPose2D(5.6, 5, 0), 2);  // first node registered at this scan
+	step(TPose2D(5.6, 5.2, M_PI / 2), 2);
+	RunRecorder::Nodes nodes;
+	nodes[0] = CPose2D(0, 0, 0);
+	nodes[1] = CPose2D(0.6, 0.1, 0);  // corrected
+	const auto traj = rec.scanTrajectory(nodes);
+	ASSERT_EQ(traj.size(), 4u);
+	EXPECT_NEAR(traj[0].first, 100, 1e-6);
+	EXPECT_NEAR(traj[1].second.x, 0.3, 1e-9);
+	EXPECT_NEAR(traj[2].second.x, 0.6, 1e-9);
+	EXPECT_NEAR(traj[2].second.y, 0.1, 1e-9);
+	EXPECT_NEAR(traj[3].second.y, 0.3, 1e-9);
+	EXPECT_NEAR(traj[3].second.phi, M_PI / 2, 1e-9);
+	const auto n = rec.nodeTrajectory(nodes);
+	ASSERT_EQ(n.size(), 2u);
+	EXPECT_NEAR(n[1].first, 102, 1e-6);
+}

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# gv-graphslam (MRPT's graphslam-engine with the grid-vector deciders) on a
+# rawlog with ground truth: outputs exist, the trajectory is sane, bad input
+# gives one-line errors.
+#
+# Data: the first 250 scans of the shared `intel` benchmark (seed 1), converted
+# with gv-carmen2rawlog; reference trajectory from mkbench.py.
+set -euo pipefail
+: "${GV_BIN:?}" "${GV_SOURCE_DIR:?}" "${GV_SHARED_DIR:?}"
+BENCH="$GV_SHARED_DIR/bench"
+INI="$GV_SOURCE_DIR/share/gridvector/graphslam-gridvector.ini"
+W=$(mktemp -d)
+trap 'rm -rf "$W"' EXIT
+fail() { echo "FAIL: $*" >&2; exit 1; }
+
+python3 "$BENCH/mkbench.py" "$GV_SHARED_DIR/data/intel-corrected.log.gz" "$W/intel" --seed 1
+# keep the first 250 scans (each scan is an ODOM + FLASER pair after 3 PARAM lines)
+awk '/^(PARAM|#)/ || n < 500 { print } /^(ODOM|FLASER)/ { n++ }' "$W/intel.log" > "$W/short.log"
+head -n 250 "$W/intel.ref.txt" > "$W/short.ref.txt"
+"$GV_BIN/gv-carmen2rawlog" --quiet "$W/short.log" "$W/short.rawlog"
+
+# --list-regs shows the grid-vector deciders next to MRPT's
+"$GV_BIN/gv-graphslam" --list-regs > "$W/regs.txt"
+for d in CGridVectorNRD CGridVectorERD CICPCriteriaNRD CFixedIntervalsNRD CICPCriteriaERD CLoopCloserERD; do
+	grep -q "^$d\$" "$W/regs.txt" || fail "--list-regs does not list $d"
+done
+
+# a run with the grid-vector deciders
+"$GV_BIN/gv-graphslam" --2d -i "$INI" -r "$W/short.rawlog" --disable-visuals \
+	-n CGridVectorNRD -e CGridVectorERD -o CLevMarqGSO --output-dir "$W/out" --quiet > "$W/run.txt"
+grep -q "^gv-graphslam: CGridVectorNRD + CGridVectorERD + CLevMarqGSO: 500 entries, 250 scans" "$W/run.txt" \
+	|| fail "unexpected summary: $(grep '^gv-graphslam' "$W/run.txt")"
+for f in trajectory.txt nodes.txt map.gvmap vectors.txt output_graph.graph CGraphSlamEngine.log \
+	node_registrar.log edge_registrar.log timings.log; do
+	[ -s "$W/out/$f" ] || fail "missing or empty output $f"
+done
+[ "$(grep -c . "$W/out/trajectory.txt")" -eq 250 ] || fail "trajectory.txt should have one pose per scan"
+awk 'NF != 4 { exit 1 }' "$W/out/trajectory.txt" || fail "trajectory.txt is not 't x y theta'"
+grep -q "^VERTEX_SE2" "$W/out/output_graph.graph" || fail "output_graph.graph has no vertices"
+"$GV_BIN/gv-map-info" "$W/out/map.gvmap" > "$W/mapinfo.txt" || fail "map.gvmap does not load"
+
+# sane against the reference: better than the odometry it was given
+awk '$1 == "ODOM" { print $8, $2, $3, $4 }' "$W/short.log" > "$W/odo.txt"
+score() { python3 "$BENCH/evaltraj.py" "$1" "$W/short.ref.txt" | sed -n 's/.*ate_rmse_m=\([0-9.]*\).*/\1/p'; }
+gv=$(score "$W/out/trajectory.txt")
+odo=$(score "$W/odo.txt")
+echo "ATE: grid-vector deciders $gv m, odometry $odo m"
+awk -v g="$gv" -v o="$odo" 'BEGIN { exit !(g < 0.5 && g < 0.5 * o) }' \
+	|| fail "trajectory not sane: ATE $gv m (odometry $odo m)"
+
+# bad input: one line on stderr, non-zero exit, no crash
+expect_error() {
+	local want="$1"; shift
+	set +e; "$GV_BIN/gv-graphslam" "$@" > /dev/null 2> "$W/err.txt"; rc=$?; set -e
+	[ "$rc" -ne 0 ] && [ "$rc" -lt 128 ] || fail "exit $rc for: $*"
+	[ "$(grep -c . "$W/err.txt")" -eq 1 ] || fail "not one line for: $* -> $(cat "$W/err.txt")"
+	grep -q -- "$want" "$W/err.txt" || fail "expected '$want' for: $* -> $(cat "$W/err.txt")"
+}
+expect_error "no such config file" --2d -i "$W/none.ini" -r "$W/short.rawlog"
+expect_error "no such rawlog" --2d -i "$INI" -r "$W/none.rawlog"
+expect_error "unknown node registration decider 'CFooNRD'" -i "$INI" -r "$W/short.rawlog" -n CFooNRD
+expect_error "only 2D" --3d -i "$INI" -r "$W/short.rawlog"
+printf '[GridVectorERD]\nmax_distanse = 3\n' > "$W/typo.ini"
+expect_error "typo.ini: unknown key 'max_distanse' in section \[GridVectorERD\]" \
+	-i "$W/typo.ini" -r "$W/short.rawlog" --output-dir "$W/typo"
+head -c 3000 "$W/short.rawlog" > "$W/cut.rawlog"
+expect_error "cut.rawlog" -i "$INI" -r "$W/cut.rawlog" --output-dir "$W/cut" --quiet
+echo "gv_graphslam: OK"

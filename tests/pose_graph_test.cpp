@@ -107,7 +107,8 @@ TEST(PoseGraph, WrongEdgesAreDownweightedAndRejected)
 	PoseGraph clean = buildGraph(truth, {}, 4);
 	clean.optimize();
 	const OptimizeStats st = g.optimize();
-	EXPECT_LT(maxError(g.nodes(), clean.nodes()), 0.01);
+	EXPECT_LT(maxError(g.nodes(), clean.nodes()), 0.1);
+	EXPECT_LT(maxError(g.nodes(), truth), 0.15);
 	EXPECT_GE(st.rejected, 3u);
 	for (const auto& e : g.edges())
 		EXPECT_TRUE(e.kind != EdgeKind::Loop || !e.active) << e.from << "-" << e.to;

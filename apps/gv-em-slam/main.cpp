@@ -51,7 +51,7 @@ int main(int argc, char** argv)
 	try
 	{
 		const auto t0 = Clock::now();
-		GridVectorConfig cfg;
+		GridVectorConfig cfg = EmSlam::defaultConfig();
 		if (args.has("config")) cfg.loadFromFile(args.get("config"));
 		if (args.has("max-iterations")) cfg.mstep.maxIterations = int(args.getInt("max-iterations", 10, 1, 1000));
 		const std::string out = args.get("out");

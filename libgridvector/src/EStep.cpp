@@ -37,6 +37,37 @@ std::vector<ProfilePiece> EStep::pieces(const std::vector<double>& profile, doub
 	return out;
 }
 
+// Fig. 4 profile: per column the largest probability across the width among the
+// cells with at least min_visits observations (robust to the wall falling in a
+// neighbouring row; a column nobody has looked through again stays static), or
+// the mean across the width (GridVector::occupancyProfile).
+std::vector<double> EStep::profile(const GridVector& v) const
+{
+	if (!opts_.usePeakRow) return v.occupancyProfile();
+	std::vector<double> prof(size_t(v.cols()), 0.0);
+	for (int c = 0; c < v.cols(); ++c)
+	{
+		bool seen = false;
+		for (int r = 0; r < v.rows(); ++r)
+		{
+			const GridCell& cell = v.cell(r, c);
+			if (cell.n_visit < opts_.minVisits) continue;
+			seen = true;
+			prof[size_t(c)] = std::max(prof[size_t(c)], cell.occupancy());
+		}
+		if (!seen) prof[size_t(c)] = 1.0;
+	}
+	return prof;
+}
+
+// Hysteresis: a column keeps its previous state unless it crosses the threshold by the margin.
+void EStep::applyHysteresis(std::vector<double>& prof, const std::vector<ProfilePiece>& previous) const
+{
+	for (const ProfilePiece& p : previous)
+		for (int c = std::max(0, p.first); c < std::min(int(prof.size()), p.last); ++c)
+			prof[size_t(c)] += p.isStatic ? opts_.hysteresis : -opts_.hysteresis;
+}
+
 GridVector EStep::subVector(const GridVector& parent, const ProfilePiece& p) const
 {
 	const double res = parent.resolution(), len = parent.length();
@@ -58,12 +89,17 @@ GridVector EStep::subVector(const GridVector& parent, const ProfilePiece& p) con
 	return child;
 }
 
-std::vector<GridVector> EStep::split(const GridVector& parent) const
+std::vector<GridVector> EStep::split(const GridVector& parent,
+									 const std::vector<ProfilePiece>& previous,
+									 std::vector<ProfilePiece>* piecesOut) const
 {
 	const int minCols =
 		std::max(1, int(std::ceil(opts_.minPieceLength / parent.resolution() - 1e-9)));
 	std::vector<GridVector> out;
-	const auto ps = pieces(parent.occupancyProfile(), opts_.staticThreshold, minCols);
+	auto prof = profile(parent);
+	applyHysteresis(prof, previous);
+	const auto ps = pieces(prof, opts_.staticThreshold, minCols);
+	if (piecesOut) *piecesOut = ps;
 	for (size_t k = 0; k < ps.size(); ++k)
 	{
 		if (ps.size() == 1)
@@ -78,12 +114,19 @@ std::vector<GridVector> EStep::split(const GridVector& parent) const
 	return out;
 }
 
-EStepResult EStep::run(const std::vector<GridVector>& parents) const
+EStepResult EStep::run(const std::vector<GridVector>& parents, const EStepResult* previous) const
 {
 	EStepResult r;
 	r.childrenOf.resize(parents.size());
+	std::vector<ProfilePiece> prev, ps;
 	for (size_t k = 0; k < parents.size(); ++k)
-		for (auto& c : split(parents[k]))
+	{
+		prev.clear();
+		if (previous && k < previous->childrenOf.size())
+			for (uint32_t c : previous->childrenOf[k]) prev.push_back(previous->pieces[c]);
+		auto kids = split(parents[k], prev, &ps);
+		for (size_t q = 0; q < kids.size(); ++q) r.pieces.push_back(ps[q]);
+		for (auto& c : kids)
 		{
 			const bool st = c.state == VectorState::Static;
 			(st ? r.staticCount : r.dynamicCount)++;
@@ -91,6 +134,7 @@ EStepResult EStep::run(const std::vector<GridVector>& parents) const
 			r.childrenOf[k].push_back(uint32_t(r.children.size()));
 			r.children.push_back(std::move(c));
 		}
+	}
 	return r;
 }
 

@@ -47,6 +47,15 @@ std::vector<ChildSig> signatures(const EStepResult& r)
 
 EmSlam::EmSlam(const GridVectorConfig& cfg) : cfg_(cfg) {}
 
+GridVectorConfig EmSlam::defaultConfig()
+{
+	GridVectorConfig c;
+	c.extraction.minPoints = 3;
+	c.extraction.minLength = 0.12;
+	c.extraction.maxPointGap = 1.0;
+	return c;
+}
+
 std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<GridVector>& children,
 															  const std::vector<TPose2D>& poses)
 {
@@ -71,6 +80,7 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 	const EStep estep(cfg_.estep, cfg_.grid);
 	auto segs = initialSegments(scans);
 	std::vector<ChildSig> prevSig;
+	EStepResult prevE;
 	res.poses = odometry;
 	for (int k = 1; k <= cfg_.mstep.maxIterations; ++k)
 	{
@@ -83,7 +93,7 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 		t0 = std::chrono::steady_clock::now();
 		// E-step (Eq. 14-15) on the map of the new trajectory (Eq. 8)
 		const auto perScan = GlobalMap::buildPerScan(res.poses, scans, cfg_);
-		EStepResult e = estep.run(perScan);
+		EStepResult e = estep.run(perScan, k > 1 ? &prevE : nullptr);
 		auto sig = signatures(e);
 		for (size_t p = 0; p < sig.size(); ++p)
 			if (prevSig.empty() ? e.childrenOf[p].size() != 1 ||
@@ -97,7 +107,8 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 		it.staticLength = e.staticLength;
 		it.dynamicLength = e.dynamicLength;
 		it.eSeconds = since(t0);
-		res.perScan = std::move(e.children);
+		res.perScan = e.children;
+		prevE = std::move(e);
 		res.iterations.push_back(it);
 		if (onIteration) onIteration(it, res.poses);
 		if (k > 1 && it.changedShare <= cfg_.mstep.minChangedShare && it.changedVectors == 0)

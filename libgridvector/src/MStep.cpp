@@ -63,6 +63,9 @@ bool MStep::registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans&
 	out.matchedShare = r.matchedShare;
 	out.degeneracy = r.translationDegeneracy;
 	out.rejected = false;
+	out.sigFrom = sigs_[from];
+	out.sigTo = sigs_[to];
+	out.checkedAt = guess;
 	return true;
 }
 
@@ -128,12 +131,19 @@ void MStep::chainSequential(const Scans& scans, Poses& poses, MStepReport& rep)
 	}
 }
 
+bool MStep::sameScans(const Constraint& c) const
+{
+	return c.sigFrom == sigs_[c.from] && c.sigTo == sigs_[c.to];
+}
+
+// Eq. 24-25: an edge is recomputed only if its data association changed.
 void MStep::updateExisting(const Scans& scans, const Poses& poses, MStepReport& rep)
 {
 	const double far = 1.5 * cfg_.mstep.overlapDistance;
 	for (auto it = constraints_.begin(); it != constraints_.end();)
 	{
 		Constraint& c = it->second;
+		const TPose2D rel = se2::relative(poses[c.from], poses[c.to]);
 		const bool nonSeq = c.kind != EdgeKind::Sequential;
 		if (nonSeq && (se2::distance(poses[c.from], poses[c.to]) > far ||
 					   overlapLength(c.from, c.to, scans, poses) < 0.5 * cfg_.mstep.overlapMinLength))
@@ -142,24 +152,29 @@ void MStep::updateExisting(const Scans& scans, const Poses& poses, MStepReport& 
 			++rep.removed;
 			continue;
 		}
-		if (!correspondencesChanged(c, scans, poses))
+		const bool same = sameScans(c);
+		// unchanged vectors and (for a rejected edge: any) unmoved poses: nothing to do
+		if (same && (c.rejected || !movedSince(c.checkedAt, rel) ||
+					 !correspondencesChanged(c, scans, poses)))
 		{
+			c.checkedAt = rel;
 			++it;
 			continue;
 		}
 		Constraint fresh;
-		if (registerPair(c.from, c.to, c.kind, scans, se2::relative(poses[c.from], poses[c.to]),
-						 fresh, rep))
-		{
-			c = std::move(fresh);
-			++rep.recomputed;
-			++it;
-		}
-		else
+		if (!registerPair(c.from, c.to, c.kind, scans, rel, fresh, rep))
 		{
 			it = constraints_.erase(it);
 			++rep.removed;
+			continue;
 		}
+		const bool changed = fresh.correspondences != c.correspondences ||
+							 se2::distance(fresh.z, c.z) > 1e-3 ||
+							 std::abs(mrpt::math::wrapToPi(fresh.z.phi - c.z.phi)) > 1e-4;
+		if (changed) ++rep.recomputed;
+		else fresh.rejected = c.rejected;
+		c = std::move(fresh);
+		++it;
 	}
 }
 
@@ -173,8 +188,7 @@ void MStep::addSequential(const Scans& scans, const Poses& poses, MStepReport& r
 			const EdgeKey key{uint32_t(j), uint32_t(i)};
 			if (constraints_.count(key)) continue;
 			const TPose2D rel = se2::relative(poses[j], poses[i]);
-			auto f = failed_.find(key);
-			if (f != failed_.end() && !movedSince(f->second, rel)) continue;
+			if (!retry(key, rel)) continue;
 			Constraint c;
 			if (registerPair(key.first, key.second, EdgeKind::Sequential, scans, rel, c, rep))
 			{
@@ -183,8 +197,15 @@ void MStep::addSequential(const Scans& scans, const Poses& poses, MStepReport& r
 				++rep.added;
 			}
 			else
-				failed_[key] = rel;
+				failed_[key] = {rel, sigs_[key.first], sigs_[key.second]};
 		}
+}
+
+bool MStep::retry(const EdgeKey& key, const TPose2D& rel) const
+{
+	auto f = failed_.find(key);
+	return f == failed_.end() || movedSince(f->second.rel, rel) ||
+		   f->second.sigFrom != sigs_[key.first] || f->second.sigTo != sigs_[key.second];
 }
 
 bool MStep::movedSince(const TPose2D& before, const TPose2D& now) const
@@ -250,8 +271,7 @@ std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, 
 			if (hasEdgeNear(i, lo, hi)) continue;
 			const EdgeKey key{best, i};
 			const TPose2D rel = se2::relative(poses[best], poses[i]);
-			auto f = failed_.find(key);
-			if (f != failed_.end() && !movedSince(f->second, rel)) continue;
+			if (!retry(key, rel)) continue;
 			if (overlapLength(best, i, scans, poses) < cfg_.mstep.overlapMinLength) continue;
 			Constraint c;
 			if (registerPair(best, i, EdgeKind::Overlap, scans, rel, c, rep))
@@ -262,7 +282,7 @@ std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, 
 				++rep.added;
 			}
 			else
-				failed_[key] = rel;
+				failed_[key] = {rel, sigs_[key.first], sigs_[key.second]};
 		}
 	}
 	return fresh;
@@ -304,7 +324,7 @@ void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh
 	}
 	for (const EdgeKey& k : drop)
 	{
-		failed_[k] = se2::relative(poses[k.first], poses[k.second]);
+		failed_[k] = {se2::relative(poses[k.first], poses[k.second]), sigs_[k.first], sigs_[k.second]};
 		constraints_.erase(k);
 		--rep.added;
 		++rep.unverified;
@@ -353,9 +373,9 @@ MStepReport MStep::run(const Scans& scans, Poses& poses)
 	if (odometry_.size() != scans.size())
 		throw std::invalid_argument("MStep: odometry and scans differ in length");
 	const size_t before = constraints_.size();
-	scanLength_.assign(scans.size(), 0);
+	sigs_.assign(scans.size(), 1469598103934665603ULL);
 	for (size_t t = 0; t < scans.size(); ++t)
-		for (const auto& s : scans[t]) scanLength_[t] += s.length;
+		for (const auto& s : scans[t]) sigs_[t] = (sigs_[t] ^ s.id) * 1099511628211ULL;  // FNV-1a
 	if (!started_)
 	{
 		chainSequential(scans, poses, rep);
@@ -369,7 +389,7 @@ MStepReport MStep::run(const Scans& scans, Poses& poses)
 	verifyOverlaps(poses, addOverlaps(scans, poses, rep), rep);
 	if (cfg_.mstep.loopSearch) loopSearch(scans, poses, rep);
 	rep.registrationSeconds = secondsSince(t0);
-	optimise(poses, rep);
+	if (rep.added + rep.removed + rep.recomputed > 0) optimise(poses, rep);  // else: still optimal
 	rep.constraints = constraints_.size();
 	for (const auto& [key, c] : constraints_)
 	{

@@ -8,6 +8,7 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -90,18 +91,17 @@ OptimizeStats PoseGraph::optimize()
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	phi_ = opts_.robustKernelWidth;
-	const std::vector<TPose2D> start = nodes_;
 	OptimizeStats st = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
-	// Iterative edge rejection by chi2, then the same optimisation from the same
-	// start without the rejected edges (they must not bias the restart).
+	// Iterative edge rejection by chi2, then re-optimisation from the robust solution.
 	for (int round = 0; round < 3; ++round)
 	{
 		updateResiduals(nodes_, false);
 		const size_t rej = rejectOutliers();
 		if (!rej) break;
 		st.rejected += rej;
-		nodes_ = start;
-		const OptimizeStats again = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
+		phi_ = opts_.robustKernelWidth;
+		const OptimizeStats again =
+			opts_.useMrptOptimizer ? optimizeMrpt() : levenbergMarquardt(opts_.maxIterations, 1e-6);
 		st.iterations += again.iterations;
 		st.finalError = again.finalError;
 	}
@@ -118,7 +118,20 @@ OptimizeStats PoseGraph::optimizeGaussNewton()
 	OptimizeStats st;
 	bool first = true;
 	const double target = opts_.robustKernelWidth;
-	for (double phi = std::max(target, 1e4);; phi = std::max(target, phi * 0.01))
+	// a start where (nearly) every registration already fits needs no graduation
+	std::vector<double> chi;
+	updateResiduals(nodes_, false);
+	for (const auto& e : edges_)
+		if (e.active && e.kind != EdgeKind::Odometry) chi.push_back(e.chi2);
+	double p95 = 0;
+	if (!chi.empty())
+	{
+		auto k = chi.begin() + long(chi.size() * 95 / 100);
+		std::nth_element(chi.begin(), k, chi.end());
+		p95 = *k;
+	}
+	const double phi0 = p95 < 10 * target ? target : std::max(target, 1e4);
+	for (double phi = phi0;; phi = std::max(target, phi * 0.01))
 	{
 		phi_ = phi;
 		const bool last = phi <= target;

@@ -267,6 +267,18 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(H.topLeftCorner<2, 2>());
 	const double lmax = es.eigenvalues()(1);
 	res.translationDegeneracy = lmax > 0 ? std::max(0.0, es.eigenvalues()(0)) / lmax : 0;
+	// A weakly constrained translation direction (a corridor's axis, a few short
+	// crosswise lines) is where wrong associations slide: its information falls
+	// off quadratically below degenerate_ratio of the strongest direction.
+	const double eps = opts_.degenerateRatio;
+	if (eps > 0 && res.translationDegeneracy < eps && lmax > 0)
+	{
+		const double k = std::sqrt(res.translationDegeneracy / eps);  // information x k^2
+		const Eigen::Vector2d v = es.eigenvectors().col(0);
+		Matrix3d S = Matrix3d::Identity();
+		S.topLeftCorner<2, 2>() += (k - 1) * v * v.transpose();
+		res.information = S * res.information * S;
+	}
 	if (int(res.pairs.size()) < opts_.minMatches || res.matchedLength < opts_.minMatchedLength)
 		res.status = MatchStatus::TooFewMatches;
 	else if (H(2, 2) <= 1e-9 || lmax <= 1e-9)

@@ -24,6 +24,7 @@ struct EStepResult
 	std::vector<GridVector> children;
 	/** M_chd of Eq. 25: children[childrenOf[k][..]] came from parents[k]. */
 	std::vector<std::vector<uint32_t>> childrenOf;
+	std::vector<ProfilePiece> pieces;  //!< per child: its columns of the parent and its state
 	size_t staticCount = 0, dynamicCount = 0;
 	double staticLength = 0, dynamicLength = 0;
 };
@@ -42,15 +43,22 @@ class EStep
 	/** Split-and-merge of a profile (Fig. 4). */
 	static std::vector<ProfilePiece> pieces(const std::vector<double>& profile, double threshold,
 											int minColumns);
-	/** The children of one vector. */
-	std::vector<GridVector> split(const GridVector& parent) const;
-	/** The E-step over all vectors. */
-	EStepResult run(const std::vector<GridVector>& parents) const;
+	/** The occupancy profile along a vector (Fig. 4), one value per column. */
+	std::vector<double> profile(const GridVector& v) const;
+	/** The children of one vector; `previous`: its pieces at the last E-step
+	 * (hysteresis); `piecesOut`: the column range of each child. */
+	std::vector<GridVector> split(const GridVector& parent,
+								  const std::vector<ProfilePiece>& previous = {},
+								  std::vector<ProfilePiece>* piecesOut = nullptr) const;
+	/** The E-step over all vectors; `previous` (same parents, same order, possibly
+	 * moved) gives each column's last state for the hysteresis. */
+	EStepResult run(const std::vector<GridVector>& parents, const EStepResult* previous = nullptr) const;
 
 	static uint64_t childId(uint64_t parentId, size_t k) { return parentId * 256 + k; }
 	static uint64_t parentIdOf(uint64_t childId) { return childId / 256; }
 
    private:
+	void applyHysteresis(std::vector<double>& prof, const std::vector<ProfilePiece>& previous) const;
 	GridVector subVector(const GridVector& parent, const ProfilePiece& p) const;
 
 	EStepOptions opts_;

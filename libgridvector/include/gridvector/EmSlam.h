@@ -43,7 +43,12 @@ struct EmResult
 class EmSlam
 {
    public:
-	explicit EmSlam(const GridVectorConfig& cfg = {});
+	explicit EmSlam(const GridVectorConfig& cfg = defaultConfig());
+
+	/** The library defaults with denser extraction (short vectors and 3-point
+	 * runs kept): registration in cluttered rooms needs the small features
+	 * (door frames, cabinets) that constrain motion along corridors. */
+	static GridVectorConfig defaultConfig();
 
 	/** Called after each iteration with its figures and the trajectory. */
 	using IterationCallback =

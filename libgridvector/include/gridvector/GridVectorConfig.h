@@ -86,14 +86,20 @@ struct MapOptions
 /** Sec. 4.1, Eq. 14-15, Fig. 4: static/dynamic split of each vector. */
 struct EStepOptions
 {
-	double staticThreshold = 0.40;  //!< profile value at or above which a piece is static
+	double staticThreshold = 0.50;  //!< profile value at or above which a piece is static
 	double minPieceLength = 0.30;  //!< smallest sub-vector kept by the split-and-merge [m]
+	bool usePeakRow = true;  //!< profile = largest cell probability across the width (false: the mean)
+	double minVisits = 3.0;  //!< peak-row profile: cells observed fewer times than this do not count
+	double hysteresis = 0.1;  //!< a column changes state only when it crosses the threshold by this
 
 	template <class V>
 	void visit(V&& v)
 	{
 		v("static_threshold", staticThreshold, "Occupancy-profile threshold: above is static, below dynamic");
 		v("min_piece_length", minPieceLength, "Smallest static/dynamic sub-vector; shorter pieces merge into neighbours [m]");
+		v("use_peak_row", usePeakRow, "Profile value of a column: the largest cell probability across the width (true) or the mean across the width (false)");
+		v("min_visits", minVisits, "Peak-row profile: cells with fewer observations (n_visit) do not count; a column without any stays static");
+		v("hysteresis", hysteresis, "From the second E-step on, a column changes state only when its profile crosses the threshold by this margin");
 	}
 };
 
@@ -110,6 +116,7 @@ struct MatcherOptions
 	int minMatches = 2;  //!< fewest matched vector pairs
 	double minMatchedLength = 1.5;  //!< fewest metres of overlapping matched vectors [m]
 	double maxRms = 0.06;  //!< largest RMS point-to-line residual of an accepted match [m]
+	double degenerateRatio = 0.1;  //!< translation information below this share of the strongest direction falls off quadratically
 	double sigmaFloor = 0.03;  //!< smallest residual std. dev. per metre of line used in the information [m]
 	double convergenceTranslation = 1e-4;  //!< stop when a step moves less than this [m]
 	double convergenceRotation = 1e-5;  //!< ... and turns less than this [rad]
@@ -127,6 +134,7 @@ struct MatcherOptions
 		v("min_matches", minMatches, "Fewest matched vector pairs for an accepted registration");
 		v("min_matched_length", minMatchedLength, "Fewest metres of overlapping matched vectors for an accepted registration [m]");
 		v("max_rms", maxRms, "Largest RMS point-to-line residual of an accepted registration [m]");
+		v("degenerate_ratio", degenerateRatio, "A translation direction whose information is below this share of the strongest one is treated as unconstrained (information scaled down quadratically)");
 		v("sigma_floor", sigmaFloor, "Smallest residual std. dev. per metre of matched line used for the information matrix [m]");
 		v("convergence_translation", convergenceTranslation, "Registration converged when a step moves less than this [m]");
 		v("convergence_rotation", convergenceRotation, "Registration converged when a step turns less than this [rad]");

@@ -24,6 +24,8 @@ struct Constraint
 	double rms = 0, matchedLength = 0, matchedShare = 0;
 	double degeneracy = 1;  //!< smallest / largest translation information eigenvalue
 	bool rejected = false;  //!< deactivated by the pose graph's residual test
+	uint64_t sigFrom = 0, sigTo = 0;  //!< static-vector signatures of both scans when registered
+	mrpt::math::TPose2D checkedAt;  //!< relative pose of the estimate when last checked
 };
 
 using EdgeKey = std::pair<uint32_t, uint32_t>;
@@ -90,6 +92,9 @@ class MStep
 	/** Registers scan `to` against scan `from` from `guess`; true if accepted. */
 	bool registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans& scans,
 					  const mrpt::math::TPose2D& guess, Constraint& out, MStepReport& rep) const;
+	bool sameScans(const Constraint& c) const;
+	/** Retry a failed registration? (poses moved or static vectors changed) */
+	bool retry(const EdgeKey& key, const mrpt::math::TPose2D& rel) const;
 	double overlapLength(uint32_t from, uint32_t to, const Scans& scans, const Poses& poses) const;
 	/** Is there an edge (j, i) with j in [jlo, jhi]? */
 	bool hasEdgeNear(uint32_t i, uint32_t jlo, uint32_t jhi) const;
@@ -101,8 +106,13 @@ class MStep
 	PoseGraph graph_;
 	Poses odometry_;
 	std::map<EdgeKey, Constraint> constraints_;
-	std::map<EdgeKey, mrpt::math::TPose2D> failed_;  //!< relative pose at a failed registration
-	std::vector<double> scanLength_;  //!< total static length per scan
+	struct Failure
+	{
+		mrpt::math::TPose2D rel;  //!< relative pose tried
+		uint64_t sigFrom = 0, sigTo = 0;
+	};
+	std::map<EdgeKey, Failure> failed_;  //!< failed registrations, retried when something changed
+	std::vector<uint64_t> sigs_;  //!< per scan: signature of its static vector ids
 	bool started_ = false;
 };
 

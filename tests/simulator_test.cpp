@@ -222,3 +222,27 @@ TEST(Simulator, DoorTimelineSwingsSmoothly)
 	EXPECT_DOUBLE_EQ(tl.angleAt(15), 1.5);
 	EXPECT_DOUBLE_EQ(tl.angleAt(30), 0);
 }
+
+TEST(Scene, FanCastingEqualsOneRayAtATime)
+{
+	const World w = makeWorld("office");
+	Scene scene(w.walls);
+	Random rng(5);
+	for (int k = 0; k < 6; k++) scene.addCircle({{rng.uniform(1, 19), rng.uniform(1, 7)}, 0.25}, k);
+	scene.addSegment({{3, 3}, {5, 6}}, HitKind::Door, 0);
+	for (int trial = 0; trial < 300; trial++)
+	{
+		const Vec2 o(rng.uniform(0.5, 19.5), rng.uniform(0.5, 7.5));
+		const int n = trial % 3 == 0 ? 720 : trial % 3 == 1 ? 361 : 180;  // 360 deg fans wrap around
+		const double res = (trial % 3 == 0 ? 2 * M_PI : M_PI) / (n % 2 ? n - 1 : n);
+		const double start = rng.uniform(-4, 4);
+		const auto fan = scene.castFan(o, start, res, n, 25.0);
+		for (int i = 0; i < n; i++)
+		{
+			const Hit h = scene.cast(o, Vec2::polar(1.0, start + i * res), 25.0);
+			ASSERT_EQ(fan[size_t(i)].kind, h.kind) << trial << " beam " << i;
+			ASSERT_EQ(fan[size_t(i)].id, h.id);
+			if (h.kind != HitKind::None) { ASSERT_DOUBLE_EQ(fan[size_t(i)].range, h.range); }
+		}
+	}
+}

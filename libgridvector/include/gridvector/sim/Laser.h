@@ -43,8 +43,12 @@ class Scene
 	void addCircle(const Circle& c, int id);
 	/** The first thing along the ray from o in direction dir (unit), within maxRange. */
 	Hit cast(const Vec2& o, const Vec2& dir, double maxRange) const;
+	/** The same for n rays at angles start + i*res (world frame): every segment and
+	 * circle is tested only against the beams inside the angle it covers. */
+	std::vector<Hit> castFan(const Vec2& o, double start, double res, int n, double maxRange) const;
 
    private:
+	struct Fan;
 	const std::vector<Segment>& walls_;
 	std::vector<Segment> segs_;
 	std::vector<std::pair<HitKind, int>> segIds_;

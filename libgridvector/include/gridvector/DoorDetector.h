@@ -1,0 +1,50 @@
+// Sec. 5.4, Fig. 10: doors from corners of static and dynamic vectors.
+#pragma once
+
+#include <gridvector/GridVector.h>
+#include <gridvector/GridVectorConfig.h>
+
+#include <mrpt/math/TPoint2D.h>
+
+#include <vector>
+
+namespace gridvector
+{
+/** A corner: one static vector (the wall) and one dynamic vector (a door
+ * candidate) with an end of each close together; the vertex is the dynamic
+ * vector's end there. */
+struct Corner
+{
+	size_t wall = 0, leaf = 0;  //!< indices of the static and the dynamic vector
+	mrpt::math::TPoint2D vertex;
+	double leafAngle = 0;  //!< direction of the leaf from the vertex outwards [rad]
+	double leafLength = 0;
+};
+
+/** A door: a hinge and the leaf states seen (Fig. 10). */
+struct Door
+{
+	mrpt::math::TPoint2D hinge;
+	double length = 0;  //!< mean leaf length [m]
+	std::vector<double> angles;  //!< leaf directions of the states, ascending [rad]
+	size_t wall = 0;  //!< index of the shared static vector
+	std::vector<size_t> leaves;  //!< indices of the dynamic vectors
+};
+
+/** Two corners sharing the static vector, with close vertices and dynamic
+ * vectors of equal length (and different directions) make a hinge; every
+ * corner agreeing with it is one more state of that door. */
+class DoorDetector
+{
+   public:
+	explicit DoorDetector(const DoorOptions& opts = {});
+
+	std::vector<Corner> corners(const std::vector<GridVector>& vectors) const;
+	std::vector<Door> detect(const std::vector<GridVector>& vectors) const;
+
+   private:
+	bool sameDoor(const Corner& a, const Corner& b) const;
+	DoorOptions opts_;
+};
+
+}  // namespace gridvector

@@ -1,0 +1,105 @@
+#include <gridvector/DoorDetector.h>
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridvector
+{
+using mrpt::math::TPoint2D;
+
+namespace
+{
+double dist(const TPoint2D& a, const TPoint2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+}  // namespace
+
+DoorDetector::DoorDetector(const DoorOptions& opts) : opts_(opts) {}
+
+// Fig. 10: a corner is built by a static and a dynamic vector meeting at an end.
+std::vector<Corner> DoorDetector::corners(const std::vector<GridVector>& v) const
+{
+	std::vector<Corner> out;
+	for (size_t d = 0; d < v.size(); ++d)
+	{
+		if (v[d].state != VectorState::Dynamic) continue;
+		const double len = v[d].length();
+		if (len < opts_.minDoorLength - opts_.maxLengthDiff || len > opts_.maxDoorLength + opts_.maxLengthDiff)
+			continue;
+		for (size_t s = 0; s < v.size(); ++s)
+		{
+			if (v[s].state != VectorState::Static) continue;
+			double best = opts_.maxCornerGap;
+			int end = -1;
+			for (int de = 0; de < 2; ++de)
+				for (const TPoint2D& se : {v[s].start(), v[s].end()})
+				{
+					const double g = dist(de ? v[d].end() : v[d].start(), se);
+					if (g <= best) best = g, end = de;
+				}
+			if (end < 0) continue;
+			Corner c;
+			c.wall = s;
+			c.leaf = d;
+			c.vertex = end ? v[d].end() : v[d].start();
+			const TPoint2D tip = end ? v[d].start() : v[d].end();
+			c.leafAngle = std::atan2(tip.y - c.vertex.y, tip.x - c.vertex.x);
+			c.leafLength = len;
+			const double turn = std::abs(mrpt::math::wrapToPi(c.leafAngle - v[s].psi()));
+			if (std::min(turn, M_PI - turn) * 180 / M_PI < opts_.minCornerAngleDeg) continue;
+			out.push_back(c);
+		}
+	}
+	return out;
+}
+
+bool DoorDetector::sameDoor(const Corner& a, const Corner& b) const
+{
+	return a.wall == b.wall && dist(a.vertex, b.vertex) <= opts_.maxVertexDistance &&
+		   std::abs(a.leafLength - b.leafLength) <= opts_.maxLengthDiff;
+}
+
+// Sec. 5.4: corners sharing the wall, close vertices, equal leaf lengths -> hinge + states.
+std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
+{
+	const auto cs = corners(v);
+	std::vector<Door> doors;
+	std::vector<bool> used(cs.size(), false);
+	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
+	for (size_t i = 0; i < cs.size(); ++i)
+	{
+		if (used[i]) continue;
+		std::vector<size_t> group{i};
+		for (size_t j = i + 1; j < cs.size(); ++j)
+			if (!used[j] && sameDoor(cs[i], cs[j])) group.push_back(j);
+		// distinct states: leaf directions at least min_state_diff apart
+		std::vector<double> angles;
+		for (size_t k : group)
+		{
+			const bool distinct = std::all_of(angles.begin(), angles.end(), [&](double a) {
+				return std::abs(mrpt::math::wrapToPi(a - cs[k].leafAngle)) >= minDiff;
+			});
+			if (distinct) angles.push_back(cs[k].leafAngle);
+		}
+		if (angles.size() < 2) continue;
+		Door d;
+		d.wall = cs[i].wall;
+		double len = 0;
+		for (size_t k : group)
+		{
+			used[k] = true;
+			d.hinge.x += cs[k].vertex.x / group.size();
+			d.hinge.y += cs[k].vertex.y / group.size();
+			len += cs[k].leafLength;
+			d.leaves.push_back(cs[k].leaf);
+		}
+		d.length = len / group.size();
+		if (d.length < opts_.minDoorLength || d.length > opts_.maxDoorLength) continue;
+		std::sort(angles.begin(), angles.end());
+		d.angles = angles;
+		doors.push_back(d);
+	}
+	return doors;
+}
+
+}  // namespace gridvector

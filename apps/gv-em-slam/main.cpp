@@ -1,19 +1,32 @@
-// gv-em-slam: EM-SLAM with grid vectors (Sec. 4) on a CARMEN log or MRPT rawlog.
+// gv-em-slam: EM-SLAM with grid vectors (Sec. 4 of Wang, Xiong, Chu) on a CARMEN
+// log or an MRPT rawlog: static/dynamic vectors (E-step) and the robot path
+// (M-step, pose graph) estimated alternately from raw odometry and scans.
 //
-//   gv-em-slam --input LOG [--config FILE.ini] --out DIR [--max-iterations N] [--quiet]
+//   gv-em-slam --input LOG --out DIR [--config FILE.ini] [--max-iterations N] [--quiet]
+//
+// Writes to DIR: trajectory.txt (t x y theta per scan, the input's timestamps),
+// map.gvmap (serialized mrpt::maps::CGridVectorMap), vectors.txt
+// (x1 y1 x2 y2 p_static static|dynamic), vectors.svg, occupancy.png/.pgm/.yaml,
+// doors.txt and report.json (per-iteration figures, memory as Table 1, timings).
+#include "EmOutputs.h"
+#include "ProgressLine.h"
+
+#include <gridvector/DoorDetector.h>
 #include <gridvector/EmSlam.h>
 #include <gridvector/ErrorText.h>
+#include <gridvector/MapExport.h>
+#include <gridvector/MemoryAccounting.h>
+#include <gridvector/OccupancyConversion.h>
 #include <gridvector/VectorExtractor.h>
 #include <gridvector/io/ArgParser.h>
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/LogReader.h>
 
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <string>
-#include <unistd.h>
 #include <vector>
 
 using namespace gridvector;
@@ -22,6 +35,123 @@ using Clock = std::chrono::steady_clock;
 namespace
 {
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+void printIteration(const EmIteration& it)
+{
+	const auto& m = it.mstep;
+	std::fprintf(stderr,
+				 "iteration %d: %5.1f%% constraints changed; %zu edges (%zu sequential, %zu overlap, %zu loop), "
+				 "%zu registrations, %zu rejected; %zu static / %zu dynamic vectors (%zu changed); "
+				 "M %.2f s, E %.2f s\n",
+				 it.index, 100 * it.changedShare, m.active, m.sequential, m.overlap, m.loop, m.registrations,
+				 m.optimisation.rejected + m.unverified, it.staticVectors, it.dynamicVectors, it.changedVectors,
+				 it.mSeconds, it.eSeconds);
+}
+
+// Debugging aid: GV_EM_DEBUG_DIR=dir writes dir/traj_<iteration>.txt after each iteration.
+void dumpIteration(const io::LogData& log, const EmIteration& it, const std::vector<mrpt::math::TPose2D>& poses)
+{
+	const char* dir = std::getenv("GV_EM_DEBUG_DIR");
+	if (!dir) return;
+	io::Trajectory tr;
+	for (size_t t = 0; t < poses.size(); ++t) tr.emplace_back(log.scans[t].timestamp, poses[t]);
+	io::writeTrajectory(std::string(dir) + "/traj_" + std::to_string(it.index) + ".txt", tr);
+}
+
+int run(const io::ArgParser& args)
+{
+	const auto t0 = Clock::now();
+	const bool quiet = args.has("quiet");
+	GridVectorConfig cfg = EmSlam::defaultConfig();
+	if (args.has("config")) cfg.loadFromFile(args.get("config"));
+	if (args.has("max-iterations")) cfg.mstep.maxIterations = int(args.getInt("max-iterations", 10, 1, 1000));
+	const std::string input = args.get("input"), dir = args.get("out") + "/";
+	io::ensureWritableDirectory(args.get("out"));
+
+	app::RunFigures fig;
+	fig.input = input;
+	io::ReadOptions ro;
+	ro.quiet = quiet;
+	const io::LogData log = io::readLog(input, ro);
+	if (log.scans.empty()) throw std::runtime_error(input + ": no laser scans");
+	fig.scans = log.scans.size();
+	fig.readSeconds = since(t0);
+	if (!quiet) std::fprintf(stderr, "%s\n", log.summary.c_str());
+
+	// Sec. 3.1: the local maps V_t, and the dead reckoning u_t
+	app::ProgressLine progress(quiet);
+	auto t1 = Clock::now();
+	const VectorExtractor ex(cfg.extraction, cfg.grid);
+	std::vector<LocalScan> scans;
+	std::vector<mrpt::math::TPose2D> odo;
+	scans.reserve(log.scans.size());
+	for (size_t t = 0; t < log.scans.size(); ++t)
+	{
+		progress.show("extracting vectors", t + 1, log.scans.size());
+		const auto& r = log.scans[t];
+		scans.push_back(ex.extract(*r.scan));
+		scans.back().scanIndex = int64_t(t);
+		scans.back().timestamp = r.timestamp;
+		fig.localVectors += scans.back().vectors.size();
+		odo.push_back(r.hasOdometry ? r.odometry : r.hasLogPose ? r.logPose : mrpt::math::TPose2D(0, 0, 0));
+	}
+	progress.clear();
+	fig.extractSeconds = since(t1);
+
+	// Sec. 4: EM
+	t1 = Clock::now();
+	const EmSlam em(cfg);
+	const EmResult res = em.run(
+		scans, odo,
+		[&](const EmIteration& it, const std::vector<mrpt::math::TPose2D>& poses) {
+			progress.clear();
+			if (!quiet) printIteration(it);
+			dumpIteration(log, it, poses);
+		},
+		[&](const char* stage, int iteration, double f) {
+			progress.show("iteration " + std::to_string(iteration) + ": " + stage, f);
+		});
+	progress.clear();
+	fig.emSeconds = since(t1);
+
+	// outputs
+	t1 = Clock::now();
+	io::Trajectory traj;
+	for (size_t t = 0; t < res.poses.size(); ++t) traj.emplace_back(log.scans[t].timestamp, res.poses[t]);
+	io::writeTrajectory(dir + "trajectory.txt", traj);
+	const auto doors = DoorDetector(cfg.doors).detect(res.finalVectors);
+	fig.doors = doors.size();
+	app::writeVectors(dir + "vectors.txt", res.finalVectors);
+	app::writeSvg(dir + "vectors.svg", res.finalVectors, doors, res.poses);
+	app::writeDoors(dir + "doors.txt", doors);
+	app::writeGvmap(dir + "map.gvmap", cfg, res.finalVectors);
+	OccupancyConversionOptions oc;
+	oc.resolution = cfg.grid.resolution;
+	const auto grid = OccupancyConversion::toOccupancyGrid(res.finalVectors, oc);
+	MapExport::writePng(grid, dir + "occupancy.png");
+	MapExport::writeRosMap(grid, dir + "occupancy.pgm", dir + "occupancy.yaml");
+	fig.memory = MemoryAccounting::account(res.finalVectors, 0.1);
+	fig.outputSeconds = since(t1);
+	fig.totalSeconds = since(t0);
+	app::writeReport(dir + "report.json", fig, res);
+	if (!quiet)
+	{
+		size_t nd = 0;
+		for (const auto& v : res.finalVectors) nd += v.state == VectorState::Dynamic;
+		std::fprintf(stderr,
+					 "%s after %zu iterations: %zu static + %zu dynamic vectors, %zu doors; %.2f s "
+					 "(read %.2f, extract %.2f, EM %.2f, final map %.2f, outputs %.2f)\n",
+					 res.converged ? "converged" : "stopped", res.iterations.size(), res.finalVectors.size() - nd, nd,
+					 doors.size(), fig.totalSeconds, fig.readSeconds, fig.extractSeconds, fig.emSeconds,
+					 res.finalMapSeconds, fig.outputSeconds);
+		std::fprintf(stderr, "%s", MemoryAccounting::summary(fig.memory).c_str());
+		std::fprintf(stderr,
+					 "wrote %s{trajectory.txt, map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, "
+					 "occupancy.yaml, doors.txt, report.json}\n",
+					 dir.c_str());
+	}
+	return 0;
+}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -29,9 +159,9 @@ int main(int argc, char** argv)
 	io::ArgParser args("gv-em-slam", "--input LOG --out DIR [--config FILE.ini] [--max-iterations N] [--quiet]");
 	args.option("input", "LOG", "CARMEN log (.log/.clf[.gz]) or MRPT rawlog");
 	args.option("out", "DIR", "output directory (created if missing)");
-	args.option("config", "FILE.ini", "parameters (default: built-in)");
-	args.option("max-iterations", "N", "EM iterations at most (overrides the config)");
-	args.flag("quiet", "no progress output");
+	args.option("config", "FILE.ini", "parameters (see gv-config; default: built-in EM-SLAM defaults)");
+	args.option("max-iterations", "N", "EM iterations at most (overrides [gridvector_mstep] max_iterations)");
+	args.flag("quiet", "no progress or summary output");
 	try
 	{
 		if (!args.parse(argc, argv))
@@ -40,75 +170,20 @@ int main(int argc, char** argv)
 			return 0;
 		}
 		if (!args.has("input") || !args.has("out")) args.fail("--input and --out are required");
+		args.requirePositional(0, 0);
 	}
 	catch (const io::UsageError& e)
 	{
 		std::cerr << e.what() << "\n";
 		return 2;
 	}
-	const bool quiet = args.has("quiet");
-	const bool tty = !quiet && isatty(2);
 	try
 	{
-		const auto t0 = Clock::now();
-		GridVectorConfig cfg = EmSlam::defaultConfig();
-		if (args.has("config")) cfg.loadFromFile(args.get("config"));
-		if (args.has("max-iterations")) cfg.mstep.maxIterations = int(args.getInt("max-iterations", 10, 1, 1000));
-		const std::string out = args.get("out");
-		io::ensureWritableDirectory(out);
-		io::ReadOptions ro;
-		ro.quiet = quiet;
-		const io::LogData log = io::readLog(args.get("input"), ro);
-		if (log.scans.empty()) throw std::runtime_error(args.get("input") + ": no laser scans");
-		const double readSeconds = since(t0);
-		// Sec. 3.1: local maps V_t
-		const auto t1 = Clock::now();
-		const VectorExtractor ex(cfg.extraction, cfg.grid);
-		std::vector<LocalScan> scans;
-		std::vector<mrpt::math::TPose2D> odo;
-		scans.reserve(log.scans.size());
-		for (size_t t = 0; t < log.scans.size(); ++t)
-		{
-			const auto& r = log.scans[t];
-			scans.push_back(ex.extract(*r.scan));
-			scans.back().scanIndex = int64_t(t);
-			scans.back().timestamp = r.timestamp;
-			odo.push_back(r.hasOdometry ? r.odometry : r.hasLogPose ? r.logPose : mrpt::math::TPose2D(0, 0, 0));
-		}
-		const double extractSeconds = since(t1);
-		if (!quiet) std::fprintf(stderr, "%s\n", log.summary.c_str());
-		EmSlam em(cfg);
-		const char* dbg = std::getenv("GV_EM_DEBUG_DIR");
-		const EmResult res = em.run(scans, odo, [&](const EmIteration& it, const std::vector<mrpt::math::TPose2D>& poses) {
-			if (dbg)
-			{
-				io::Trajectory tr;
-				for (size_t t = 0; t < poses.size(); ++t) tr.emplace_back(log.scans[t].timestamp, poses[t]);
-				io::writeTrajectory(std::string(dbg) + "/traj_" + std::to_string(it.index) + ".txt", tr);
-			}
-			if (quiet) return;
-			std::fprintf(stderr,
-						 "iteration %d: %.1f%% constraints changed, %zu edges (%zu seq, %zu overlap, %zu loop), "
-						 "%zu registrations (%zu failed), %zu static / %zu dynamic vectors, %zu changed; "
-						 "M %.2fs (opt %.2fs, %d it, %zu rejected) E %.2fs\n",
-						 it.index, 100 * it.changedShare, it.mstep.active, it.mstep.sequential, it.mstep.overlap,
-						 it.mstep.loop, it.mstep.registrations, it.mstep.failedRegistrations, it.staticVectors,
-						 it.dynamicVectors, it.changedVectors, it.mSeconds, it.mstep.optimisation.seconds,
-						 it.mstep.optimisation.iterations, it.mstep.optimisation.rejected,
-						 it.eSeconds);
-		});
-		io::Trajectory traj;
-		for (size_t t = 0; t < res.poses.size(); ++t) traj.emplace_back(log.scans[t].timestamp, res.poses[t]);
-		io::writeTrajectory(out + "/trajectory.txt", traj);
-		if (!quiet)
-			std::fprintf(stderr, "read %.2fs, extract %.2fs, total %.2fs, %s\n", readSeconds, extractSeconds,
-						 since(t0), res.converged ? "converged" : "not converged");
-		(void)tty;
+		return run(args);
 	}
 	catch (const std::exception& e)
 	{
 		std::cerr << oneLineError(e) << "\n";
 		return 1;
 	}
-	return 0;
 }

@@ -97,7 +97,11 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 		if (d.length < opts_.minDoorLength || d.length > opts_.maxDoorLength) continue;
 		std::sort(angles.begin(), angles.end());
 		d.angles = angles;
-		doors.push_back(d);
+		// one hinge is one door, even if several walls/leaf copies meet there
+		const bool dup = std::any_of(doors.begin(), doors.end(), [&](const Door& o) {
+			return dist(o.hinge, d.hinge) <= opts_.maxVertexDistance;
+		});
+		if (!dup) doors.push_back(d);
 	}
 	return doors;
 }

@@ -72,7 +72,7 @@ std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<
 }
 
 EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPose2D>& odometry,
-					 const IterationCallback& onIteration) const
+					 const IterationCallback& onIteration, const ProgressCallback& progress) const
 {
 	EmResult res;
 	MStep mstep(cfg_);
@@ -82,15 +82,33 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 	std::vector<ChildSig> prevSig;
 	EStepResult prevE;
 	res.poses = odometry;
+	int current = 0;
+	if (progress)
+		mstep.setProgress([&](const char* stage, double f) { progress(stage, current, f); });
 	for (int k = 1; k <= cfg_.mstep.maxIterations; ++k)
 	{
+		current = k;
 		EmIteration it;
 		it.index = k;
 		auto t0 = std::chrono::steady_clock::now();
 		it.mstep = mstep.run(segs, res.poses);  // M-step (Eq. 16-25)
 		it.mSeconds = since(t0);
 		it.changedShare = it.mstep.changedShare;
+		// No constraint changed after an E-step that changed no vector: the
+		// trajectory did not move, so the E-step would repeat itself. Converged.
+		if (k > 1 && it.changedShare <= cfg_.mstep.minChangedShare &&
+			!res.iterations.empty() && res.iterations.back().changedVectors == 0)
+		{
+			const EmIteration& last = res.iterations.back();
+			it.staticVectors = last.staticVectors, it.dynamicVectors = last.dynamicVectors;
+			it.staticLength = last.staticLength, it.dynamicLength = last.dynamicLength;
+			res.iterations.push_back(it);
+			if (onIteration) onIteration(it, res.poses);
+			res.converged = true;
+			break;
+		}
 		t0 = std::chrono::steady_clock::now();
+		if (progress) progress("E-step", k, 0.0);
 		// E-step (Eq. 14-15) on the map of the new trajectory (Eq. 8)
 		const auto perScan = GlobalMap::buildPerScan(res.poses, scans, cfg_);
 		EStepResult e = estep.run(perScan, k > 1 ? &prevE : nullptr);
@@ -111,11 +129,6 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 		prevE = std::move(e);
 		res.iterations.push_back(it);
 		if (onIteration) onIteration(it, res.poses);
-		if (k > 1 && it.changedShare <= cfg_.mstep.minChangedShare && it.changedVectors == 0)
-		{
-			res.converged = true;
-			break;
-		}
 	}
 	// Final map: merge static and dynamic vectors separately (Eq. 4, Algorithm 2).
 	const auto t0 = std::chrono::steady_clock::now();
@@ -127,6 +140,7 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 		for (auto v : m->vectors)
 		{
 			v.state = m == &res.staticMap ? VectorState::Static : VectorState::Dynamic;
+			v.id = res.finalVectors.size() + 1;  // unique across both maps
 			res.finalVectors.push_back(std::move(v));
 		}
 	res.finalMapSeconds = since(t0);

@@ -103,6 +103,7 @@ void MStep::chainSequential(const Scans& scans, Poses& poses, MStepReport& rep)
 	poses[0] = odometry_[0];
 	for (size_t i = 1; i < n; ++i)
 	{
+		report("sequential registration", i, n);
 		const TPose2D odo = se2::relative(odometry_[i - 1], odometry_[i]);
 		const TPose2D guess0 = se2::compose(poses[i - 1], odo);
 		// information-weighted fusion of the predictions, linearised at the odometry guess
@@ -244,6 +245,7 @@ std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, 
 	std::vector<uint32_t> near;
 	for (uint32_t i = 0; i < scans.size(); ++i)
 	{
+		report("overlap registration", i, scans.size());
 		const auto [cx, cy] = cellOf(poses[i]);
 		near.clear();
 		for (long dx = -1; dx <= 1; ++dx)

@@ -53,8 +53,11 @@ class EmSlam
 	/** Called after each iteration with its figures and the trajectory. */
 	using IterationCallback =
 		std::function<void(const EmIteration&, const std::vector<mrpt::math::TPose2D>&)>;
+	/** Progress within an iteration: stage name, iteration, share of the stage done. */
+	using ProgressCallback = std::function<void(const char* stage, int iteration, double fraction)>;
+
 	EmResult run(const std::vector<LocalScan>& scans, const std::vector<mrpt::math::TPose2D>& odometry,
-				 const IterationCallback& onIteration = {}) const;
+				 const IterationCallback& onIteration = {}, const ProgressCallback& progress = {}) const;
 
 	/** Static children of the E-step as registration segments, in their scan's frame. */
 	static std::vector<std::vector<MatchSegment>> staticSegments(

@@ -7,6 +7,7 @@
 
 #include <mrpt/math/TPose2D.h>
 
+#include <functional>
 #include <map>
 #include <utility>
 #include <vector>
@@ -70,6 +71,9 @@ class MStep
 	MStepReport run(const std::vector<std::vector<MatchSegment>>& scans,
 					std::vector<mrpt::math::TPose2D>& poses);
 
+	/** Called now and then with the share of the scans processed in a pass. */
+	void setProgress(std::function<void(const char* stage, double fraction)> f) { progress_ = std::move(f); }
+
 	const std::map<EdgeKey, Constraint>& constraints() const { return constraints_; }
 	const PoseGraph& graph() const { return graph_; }
 	bool started() const { return started_; }
@@ -114,6 +118,11 @@ class MStep
 	std::map<EdgeKey, Failure> failed_;  //!< failed registrations, retried when something changed
 	std::vector<uint64_t> sigs_;  //!< per scan: signature of its static vector ids
 	bool started_ = false;
+	std::function<void(const char*, double)> progress_;
+	void report(const char* stage, size_t i, size_t n) const
+	{
+		if (progress_ && (i % 16 == 0 || i + 1 == n)) progress_(stage, double(i + 1) / double(n));
+	}
 };
 
 }  // namespace gridvector

@@ -1,0 +1,139 @@
+#include "EmOutputs.h"
+
+#include <gridvector/io/AtomicFile.h>
+
+#include <mrpt/io/CFileGZOutputStream.h>
+#include <mrpt/maps/CGridVectorMap.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <stdexcept>
+
+namespace gridvector::app
+{
+void writeVectors(const std::string& path, const std::vector<GridVector>& vectors)
+{
+	io::writeFileAtomically(path, [&](std::ostream& o) {
+		o << "# x1 y1 x2 y2 p_static state (gv-em-slam final merged map)\n" << std::fixed << std::setprecision(4);
+		for (const auto& v : vectors)
+			o << v.start().x << ' ' << v.start().y << ' ' << v.end().x << ' ' << v.end().y << ' ' << v.pStatic()
+			  << ' ' << (v.state == VectorState::Dynamic ? "dynamic" : "static") << '\n';
+	});
+}
+
+void writeSvg(const std::string& path, const std::vector<GridVector>& vectors, const std::vector<Door>& doors,
+			  const std::vector<mrpt::math::TPose2D>& poses)
+{
+	double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+	auto grow = [&](double x, double y) {
+		x0 = std::min(x0, x), y0 = std::min(y0, y), x1 = std::max(x1, x), y1 = std::max(y1, y);
+	};
+	for (const auto& v : vectors) grow(v.start().x, v.start().y), grow(v.end().x, v.end().y);
+	for (const auto& p : poses) grow(p.x, p.y);
+	if (x0 > x1) x0 = y0 = 0, x1 = y1 = 1;
+	const double m = 1.0;
+	io::writeFileAtomically(path, [&](std::ostream& o) {
+		o << std::fixed << std::setprecision(3);
+		o << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << x0 - m << ' ' << -(y1 + m) << ' '
+		  << (x1 - x0 + 2 * m) << ' ' << (y1 - y0 + 2 * m) << "\" width=\"" << int(50 * (x1 - x0 + 2 * m))
+		  << "\" height=\"" << int(50 * (y1 - y0 + 2 * m)) << "\">\n<g transform=\"scale(1,-1)\">\n";
+		o << "<rect x=\"" << x0 - m << "\" y=\"" << y0 - m << "\" width=\"" << x1 - x0 + 2 * m << "\" height=\""
+		  << y1 - y0 + 2 * m << "\" fill=\"white\"/>\n";
+		if (!poses.empty())
+		{
+			o << "<polyline fill=\"none\" stroke=\"#aaaaaa\" stroke-width=\"0.02\" points=\"";
+			for (const auto& p : poses) o << p.x << ',' << p.y << ' ';
+			o << "\"/>\n";
+		}
+		for (const auto& v : vectors)
+			o << "<line x1=\"" << v.start().x << "\" y1=\"" << v.start().y << "\" x2=\"" << v.end().x << "\" y2=\""
+			  << v.end().y << "\" stroke=\"" << (v.state == VectorState::Dynamic ? "red" : "blue")
+			  << "\" stroke-width=\"0.05\"/>\n";
+		for (const auto& d : doors)
+		{
+			o << "<circle cx=\"" << d.hinge.x << "\" cy=\"" << d.hinge.y << "\" r=\"0.12\" fill=\"green\"/>\n";
+			for (double a : d.angles)
+				o << "<line x1=\"" << d.hinge.x << "\" y1=\"" << d.hinge.y << "\" x2=\"" << d.hinge.x + d.length * std::cos(a)
+				  << "\" y2=\"" << d.hinge.y + d.length * std::sin(a)
+				  << "\" stroke=\"green\" stroke-width=\"0.06\" stroke-dasharray=\"0.1,0.05\"/>\n";
+		}
+		o << "</g>\n</svg>\n";
+	});
+}
+
+void writeDoors(const std::string& path, const std::vector<Door>& doors)
+{
+	io::writeFileAtomically(path, [&](std::ostream& o) {
+		o << "# hinge_x hinge_y length angle_min angle_max states (Sec. 5.4; angles: leaf directions, rad)\n"
+		  << std::fixed << std::setprecision(4);
+		for (const auto& d : doors)
+			o << d.hinge.x << ' ' << d.hinge.y << ' ' << d.length << ' ' << d.angles.front() << ' ' << d.angles.back()
+			  << ' ' << d.angles.size() << '\n';
+	});
+}
+
+void writeGvmap(const std::string& path, const GridVectorConfig& cfg, const std::vector<GridVector>& vectors)
+{
+	mrpt::maps::CGridVectorMap map(cfg);
+	map.globalMap().setVectors(vectors);
+	io::AtomicFile f(path, io::AtomicFile::Mode::External);
+	{
+		mrpt::io::CFileGZOutputStream gz;
+		if (!gz.open(f.tempPath())) throw std::runtime_error(path + ": cannot write");
+		auto a = mrpt::serialization::archiveFrom(gz);
+		a << map;
+	}
+	f.commit();
+}
+
+namespace
+{
+void iterationJson(std::ostream& o, const EmIteration& it)
+{
+	const auto& m = it.mstep;
+	o << "    {\"iteration\": " << it.index << ", \"changed_share\": " << it.changedShare
+	  << ", \"constraints\": " << m.constraints << ", \"edges_active\": " << m.active
+	  << ", \"edges_sequential\": " << m.sequential << ", \"edges_overlap\": " << m.overlap
+	  << ", \"edges_loop\": " << m.loop << ", \"added\": " << m.added << ", \"removed\": " << m.removed
+	  << ", \"recomputed\": " << m.recomputed << ", \"registrations\": " << m.registrations
+	  << ", \"failed_registrations\": " << m.failedRegistrations << ", \"unverified\": " << m.unverified
+	  << ", \"rejected_by_residual\": " << m.optimisation.rejected
+	  << ", \"optimiser_iterations\": " << m.optimisation.iterations
+	  << ", \"static_vectors\": " << it.staticVectors << ", \"dynamic_vectors\": " << it.dynamicVectors
+	  << ", \"static_length_m\": " << it.staticLength << ", \"dynamic_length_m\": " << it.dynamicLength
+	  << ", \"changed_vectors\": " << it.changedVectors << ", \"m_seconds\": " << it.mSeconds
+	  << ", \"registration_seconds\": " << m.registrationSeconds
+	  << ", \"optimisation_seconds\": " << m.optimisation.seconds << ", \"e_seconds\": " << it.eSeconds << "}";
+}
+}  // namespace
+
+void writeReport(const std::string& path, const RunFigures& run, const EmResult& res)
+{
+	io::writeFileAtomically(path, [&](std::ostream& o) {
+		o << std::setprecision(6);
+		size_t ns = 0, nd = 0;
+		double ls = 0, ld = 0;
+		for (const auto& v : res.finalVectors)
+			(v.state == VectorState::Dynamic ? nd : ns)++, (v.state == VectorState::Dynamic ? ld : ls) += v.length();
+		std::string in = run.input;
+		for (size_t p = 0; (p = in.find_first_of("\"\\", p)) != std::string::npos; p += 2) in.insert(p, "\\");
+		o << "{\n  \"input\": \"" << in << "\",\n  \"scans\": " << run.scans
+		  << ",\n  \"local_vectors\": " << run.localVectors << ",\n  \"iterations_run\": " << res.iterations.size()
+		  << ",\n  \"converged\": " << (res.converged ? "true" : "false") << ",\n  \"iterations\": [\n";
+		for (size_t k = 0; k < res.iterations.size(); ++k)
+		{
+			iterationJson(o, res.iterations[k]);
+			o << (k + 1 < res.iterations.size() ? ",\n" : "\n");
+		}
+		o << "  ],\n  \"final_map\": {\"static_vectors\": " << ns << ", \"dynamic_vectors\": " << nd
+		  << ", \"static_length_m\": " << ls << ", \"dynamic_length_m\": " << ld << ", \"doors\": " << run.doors
+		  << "},\n  \"memory\": " << MemoryAccounting::toJson(run.memory) << ",\n  \"seconds\": {\"read\": "
+		  << run.readSeconds << ", \"extract\": " << run.extractSeconds << ", \"em\": " << run.emSeconds
+		  << ", \"final_map\": " << res.finalMapSeconds << ", \"outputs\": " << run.outputSeconds
+		  << ", \"total\": " << run.totalSeconds << "}\n}\n";
+	});
+}
+
+}  // namespace gridvector::app

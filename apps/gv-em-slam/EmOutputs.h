@@ -1,0 +1,34 @@
+// gv-em-slam's output files (all written atomically).
+#pragma once
+
+#include <gridvector/DoorDetector.h>
+#include <gridvector/EmSlam.h>
+#include <gridvector/MemoryAccounting.h>
+
+#include <string>
+#include <vector>
+
+namespace gridvector::app
+{
+/** `x1 y1 x2 y2 p_static static|dynamic` per vector. */
+void writeVectors(const std::string& path, const std::vector<GridVector>& vectors);
+/** Static blue, dynamic red, doors green (hinge dot, one line per leaf state), path grey. */
+void writeSvg(const std::string& path, const std::vector<GridVector>& vectors, const std::vector<Door>& doors,
+			  const std::vector<mrpt::math::TPose2D>& poses);
+/** `hinge_x hinge_y length angle_min angle_max states` per door (angles in rad). */
+void writeDoors(const std::string& path, const std::vector<Door>& doors);
+/** mrpt::maps::CGridVectorMap holding `vectors`, gzip-serialised. */
+void writeGvmap(const std::string& path, const GridVectorConfig& cfg, const std::vector<GridVector>& vectors);
+
+/** Everything report.json holds. */
+struct RunFigures
+{
+	std::string input;
+	size_t scans = 0, localVectors = 0;
+	double readSeconds = 0, extractSeconds = 0, emSeconds = 0, outputSeconds = 0, totalSeconds = 0;
+	size_t doors = 0;
+	MemoryReport memory;
+};
+void writeReport(const std::string& path, const RunFigures& run, const EmResult& res);
+
+}  // namespace gridvector::app

@@ -63,11 +63,11 @@ LogData RawlogParser::parse(const std::vector<char>& bytes)
 		}
 		catch (const mrpt::serialization::CExceptionEOF&)
 		{
-			fail("truncated rawlog (the file ends inside this object)");
+			fail("truncated or corrupt rawlog (this entry reads past the end of the file)");
 		}
 		catch (const std::exception& e)
 		{
-			if (mem.getPosition() >= bytes.size()) fail("truncated rawlog (the file ends inside this object)");
+			if (mem.getPosition() >= bytes.size()) fail("truncated or corrupt rawlog (this entry reads past the end of the file)");
 			fail("corrupt rawlog object (" + gridvector::oneLineError(e) + ")");
 		}
 		onObject(obj);

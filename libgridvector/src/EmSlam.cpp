@@ -43,6 +43,32 @@ std::vector<ChildSig> signatures(const EStepResult& r)
 		}
 	return sig;
 }
+
+
+bool movedEnough(const std::vector<TPose2D>& a, const std::vector<TPose2D>& b, const EStepOptions& o)
+{
+	for (size_t t = 0; t < a.size() && t < b.size(); ++t)
+		if (se2::distance(a[t], b[t]) > o.rerunTranslation ||
+			std::abs(mrpt::math::wrapToPi(a[t].phi - b[t].phi)) > o.rerunRotationDeg * M_PI / 180)
+			return true;
+	return a.size() != b.size();
+}
+
+// m_{i,t} follows its pose: x_new (+) x_old^-1 (+) m.
+void rebase(std::vector<GridVector>& vs, const std::vector<TPose2D>& from, const std::vector<TPose2D>& to)
+{
+	for (auto& v : vs)
+	{
+		if (v.scanIndex < 0 || size_t(v.scanIndex) >= from.size() || size_t(v.scanIndex) >= to.size()) continue;
+		const TPose2D& a = from[size_t(v.scanIndex)];
+		const TPose2D& b = to[size_t(v.scanIndex)];
+		const TPose2D d = se2::compose(b, se2::relative(a, TPose2D(0, 0, 0)));
+		const auto id = v.id;
+		const auto st = v.state;
+		v = v.compose(d);
+		v.id = id, v.state = st;
+	}
+}
 }  // namespace
 
 EmSlam::EmSlam(const GridVectorConfig& cfg) : cfg_(cfg) {}
@@ -53,6 +79,7 @@ GridVectorConfig EmSlam::defaultConfig()
 	c.extraction.minPoints = 3;
 	c.extraction.minLength = 0.12;
 	c.extraction.maxPointGap = 1.0;
+	c.map.wipeCountsBeams = false;  // Fig. 2's unit: one increment per cell and triangle
 	return c;
 }
 
@@ -81,6 +108,7 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 	auto segs = initialSegments(scans);
 	std::vector<ChildSig> prevSig;
 	EStepResult prevE;
+	std::vector<TPose2D> ePoses;  // trajectory of the last E-step
 	res.poses = odometry;
 	int current = 0;
 	if (progress)
@@ -108,6 +136,18 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 			break;
 		}
 		t0 = std::chrono::steady_clock::now();
+		if (k > 1 && !movedEnough(ePoses, res.poses, cfg_.estep))
+		{
+			// the map of this trajectory is the last E-step's: nothing to re-evaluate
+			const EmIteration& last = res.iterations.back();
+			it.staticVectors = last.staticVectors, it.dynamicVectors = last.dynamicVectors;
+			it.staticLength = last.staticLength, it.dynamicLength = last.dynamicLength;
+			it.eSkipped = true;
+			res.iterations.push_back(it);
+			if (onIteration) onIteration(it, res.poses);
+			continue;
+		}
+		ePoses = res.poses;
 		if (progress) progress("E-step", k, 0.0);
 		// E-step (Eq. 14-15) on the map of the new trajectory (Eq. 8)
 		const auto perScan = GlobalMap::buildPerScan(res.poses, scans, cfg_);
@@ -132,6 +172,7 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 	}
 	// Final map: merge static and dynamic vectors separately (Eq. 4, Algorithm 2).
 	const auto t0 = std::chrono::steady_clock::now();
+	rebase(res.perScan, ePoses, res.poses);
 	std::vector<GridVector> st, dy;
 	for (const auto& v : res.perScan) (v.state == VectorState::Dynamic ? dy : st).push_back(v);
 	res.staticMap = GlobalMap::mergeAll(st, cfg_);

@@ -24,6 +24,7 @@ struct EmIteration
 	double staticLength = 0, dynamicLength = 0;
 	MStepReport mstep;
 	double eSeconds = 0, mSeconds = 0;
+	bool eSkipped = false;  //!< no pose moved enough since the last E-step: its result stands
 };
 
 struct EmResult

@@ -91,6 +91,8 @@ struct EStepOptions
 	bool usePeakRow = true;  //!< profile = largest cell probability across the width (false: the mean)
 	double minVisits = 3.0;  //!< peak-row profile: cells observed fewer times than this do not count
 	double hysteresis = 0.1;  //!< a column changes state only when it crosses the threshold by this
+	double rerunTranslation = 0.05;  //!< the E-step is re-run only if a pose moved more than this [m]
+	double rerunRotationDeg = 1.0;  //!< ... or turned more than this [deg]
 
 	template <class V>
 	void visit(V&& v)
@@ -100,6 +102,8 @@ struct EStepOptions
 		v("use_peak_row", usePeakRow, "Profile value of a column: the largest cell probability across the width (true) or the mean across the width (false)");
 		v("min_visits", minVisits, "Peak-row profile: cells with fewer observations (n_visit) do not count; a column without any stays static");
 		v("hysteresis", hysteresis, "From the second E-step on, a column changes state only when its profile crosses the threshold by this margin");
+		v("rerun_translation", rerunTranslation, "The E-step is re-evaluated only if some pose moved more than this since the last one [m]");
+		v("rerun_rotation_deg", rerunRotationDeg, "... or turned more than this [deg]");
 	}
 };
 

@@ -155,7 +155,8 @@ TEST(GlobalMap, SequentialMergingConservesPointsAndFindsTheRoom)
 	for (const auto& v : map.vectors())
 	{
 		len += v.length();
-		EXPECT_GT(v.pStatic(), 0.5);
+		// profile mean over the 3 rows: wall ~1, free row in front ~0, prior behind 0.5
+		EXPECT_GT(v.pStatic(), 0.45);
 		EXPECT_LT(v.scanIndex, 0);  // all merged
 	}
 	EXPECT_NEAR(len, 28.0, 1.5);  // the room's perimeter

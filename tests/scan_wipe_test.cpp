@@ -59,7 +59,7 @@ TEST(ScanWipe, SkippedVectorsAndFarVectorsUntouched)
 	const VectorIndex idx = indexOf(map);
 	ScanWipe w(0.05, false);  // the paper's per-cell weighting
 	const auto st = w.apply({0, 0}, std::vector<ScanWipe::Segment>{{{1, 2}, {-1, 2}}}, map, idx,
-							[](uint32_t s) { return s == 1; });
+							[](size_t, uint32_t s) { return s == 1 ? WipePart::Outside : WipePart::Hit; });
 	EXPECT_EQ(st.candidates, 2u);  // the far vector never comes out of the index
 	EXPECT_GT(map[0].totalVisit(), GridVector({1, 2}, {-1, 2}, GridOptions{}).totalVisit());
 	EXPECT_FLOAT_EQ(map[1].totalVisit(), float(map[1].cells().size()));

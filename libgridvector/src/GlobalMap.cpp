@@ -95,14 +95,21 @@ ScanWipe::Stats GlobalMap::wipe(const mrpt::math::TPose2D& robotPose, const Loca
 {
 	std::vector<ScanWipe::Segment> segs;
 	segs.reserve(scan.vectors.size());
-	const double c = std::cos(robotPose.phi), s = std::sin(robotPose.phi);
-	auto tf = [&](const TPoint2D& p) {
-		return TPoint2D(robotPose.x + c * p.x - s * p.y, robotPose.y + s * p.x + c * p.y);
-	};
-	for (const auto& v : scan.vectors) segs.push_back({tf(v.start()), tf(v.end()), v.totalPoints()});
+	std::vector<std::vector<size_t>> mergeTargets(scan.vectors.size());
+	for (size_t j = 0; j < scan.vectors.size(); ++j)
+	{
+		const GridVector m = scan.vectors[j].compose(robotPose);
+		segs.push_back(ScanWipe::segmentOf(m));
+		// a vector's own beams are counted by Algorithm 1 in the vectors it merges into
+		if (cfg_.map.mergeOnInsert) mergeTargets[j] = correspondents(m);
+	}
 	const int64_t own = scan.scanIndex;
-	auto skip = [&](uint32_t slot) { return own >= 0 && vectors_[slot].scanIndex == own; };
-	return wiper_.apply(sensorPosition(robotPose, scan), segs, vectors_, index_, skip);
+	auto limit = [&](size_t seg, uint32_t slot) {
+		if (own >= 0 && vectors_[slot].scanIndex == own) return WipePart::Outside;
+		const auto& t = mergeTargets[seg];
+		return std::binary_search(t.begin(), t.end(), size_t(slot)) ? WipePart::Visited : WipePart::Hit;
+	};
+	return wiper_.apply(sensorPosition(robotPose, scan), segs, vectors_, index_, limit);
 }
 
 // Algorithm 2 with every correspondent, repeated while the merged vector finds new ones.

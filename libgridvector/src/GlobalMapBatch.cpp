@@ -44,7 +44,7 @@ std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TP
 		for (size_t i = first[t]; i < first[t + 1]; ++i) segs.push_back(ScanWipe::segmentOf(all[i]));
 		const uint32_t lo = uint32_t(first[t]), hi = uint32_t(first[t + 1]);
 		wiper.apply(sensorPosition(poses[t], scans[t]), segs, all, index,
-					[&](uint32_t s) { return s >= lo && s < hi; });
+					[&](size_t, uint32_t s) { return s >= lo && s < hi ? WipePart::Outside : WipePart::Hit; });
 	}
 	return all;
 }

@@ -6,25 +6,25 @@ namespace gridvector
 {
 ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor,
 								const std::vector<GridVector>& scanVectors, std::vector<GridVector>& map,
-								const VectorIndex& index, const std::function<bool(uint32_t)>& skip)
+								const VectorIndex& index, const SkipFn& limit)
 {
 	std::vector<Segment> segs;
 	segs.reserve(scanVectors.size());
 	for (const GridVector& v : scanVectors) segs.push_back(segmentOf(v));
-	return apply(sensor, segs, map, index, skip);
+	return apply(sensor, segs, map, index, limit);
 }
 
 // Eq. 8 for one scan q: the triangles of V_q over the map vectors near them.
 ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::vector<Segment>& scanVectors,
-								std::vector<GridVector>& map, const VectorIndex& index,
-								const std::function<bool(uint32_t)>& skip)
+								std::vector<GridVector>& map, const VectorIndex& index, const SkipFn& limit)
 {
 	Stats st;
 	marks_.clear();
 	offset_.clear();
 	touched_.clear();
-	for (const Segment& v : scanVectors)
+	for (size_t seg = 0; seg < scanVectors.size(); ++seg)
 	{
+		const Segment& v = scanVectors[seg];
 		const double density = beams_ ? WipeTriangle::beamDensity(sensor, v.start, v.end, v.points) : 0.0;
 		const WipeTriangle tri(sensor, v.start, v.end, hitBand_, density);
 		if (tri.degenerate()) continue;
@@ -34,7 +34,8 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::v
 		st.candidates += candidates_.size();
 		for (uint32_t slot : candidates_)
 		{
-			if (skip && skip(slot)) continue;
+			const WipePart cap = limit ? limit(seg, slot) : WipePart::Hit;
+			if (cap == WipePart::Outside) continue;
 			const GridVector& m = map[slot];
 			auto [it, fresh] = offset_.try_emplace(slot, marks_.size());
 			if (fresh)
@@ -45,6 +46,7 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::v
 			Mark* mk = marks_.data() + it->second;
 			const int cols = m.cols();
 			tri.forEachCell(m, [&](int r, int c, WipePart part) {
+				if (part > cap) return;
 				Mark& x = mk[size_t(r) * cols + c];
 				const float w =
 					beams_ ? float(tri.weight(m.cellCentre(r, c), m.direction(), m.resolution(), part)) : 1.f;

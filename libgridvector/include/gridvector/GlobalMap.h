@@ -49,8 +49,11 @@ class GlobalMap
 
 	/** Insert V_t observed from robot pose x_t (sequential mode, see above).
 	 * Vectors of the map whose scanIndex equals scan.scanIndex (>= 0) are not
-	 * wiped by it. New vectors get fresh ids; merged vectors get a fresh id and
-	 * scanIndex -1. */
+	 * wiped by it, and the triangle of a new vector only adds part b (the
+	 * beams passing) to the map vectors it corresponds to: its endpoints reach
+	 * them through its own Algorithm 1 counts when merged, and counting them
+	 * again as part c would weigh that scan's hits double.
+	 * New vectors get fresh ids; merged vectors get a fresh id and scanIndex -1. */
 	void insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
 
 	/** Eq. 8 alone: the scan's triangles applied to the map, nothing inserted. */

@@ -51,14 +51,17 @@ class ScanWipe
 		double points = 0;
 	};
 
-	/** skip(slot) true: the map vector is not updated by this scan (its own
-	 * vectors, already counted by Algorithm 1). */
+	/** limit(segment, slot): which parts of the triangle of scanVectors[segment]
+	 * update map vector `slot`: Hit = all (b and c), Visited = part b only,
+	 * Outside = none. The scan's own vectors get none (Algorithm 1 counted
+	 * them); in sequential mode the map vectors a new vector is about to be
+	 * merged into get part b only: its endpoints reach them through its own
+	 * Algorithm 1 counts, the beams passing in front of it only through the wipe. */
+	using SkipFn = std::function<WipePart(size_t segment, uint32_t slot)>;
 	Stats apply(const mrpt::math::TPoint2D& sensor, const std::vector<Segment>& scanVectors,
-				std::vector<GridVector>& map, const VectorIndex& index,
-				const std::function<bool(uint32_t)>& skip = {});
+				std::vector<GridVector>& map, const VectorIndex& index, const SkipFn& limit = {});
 	Stats apply(const mrpt::math::TPoint2D& sensor, const std::vector<GridVector>& scanVectors,
-				std::vector<GridVector>& map, const VectorIndex& index,
-				const std::function<bool(uint32_t)>& skip = {});
+				std::vector<GridVector>& map, const VectorIndex& index, const SkipFn& limit = {});
 
 	static Segment segmentOf(const GridVector& globalVector)
 	{

@@ -29,6 +29,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 using namespace gridvector;
 using namespace gridvector::graphslam;
@@ -151,16 +152,23 @@ size_t feed(const std::string& rawlog, mrpt::graphslam::CGraphSlamEngine<graph_t
 	size_t entry = 0, steps = 0;
 	for (;;)
 	{
+		// CRawlog reports a corrupt entry on std::cerr and returns false: capture it
+		std::ostringstream report;
+		std::streambuf* cerrBuf = std::cerr.rdbuf(report.rdbuf());
+		bool more = false;
 		try
 		{
-			if (!mrpt::obs::CRawlog::getActionObservationPairOrObservation(arch, action, sf, obs, entry))
-				break;
+			more = mrpt::obs::CRawlog::getActionObservationPairOrObservation(arch, action, sf, obs, entry);
 		}
 		catch (const std::exception& e)
 		{
-			throw std::runtime_error(rawlog + ": entry " + std::to_string(entry) +
-									 ": unreadable (" + oneLineError(e) + ")");
+			report << e.what();
 		}
+		std::cerr.rdbuf(cerrBuf);
+		if (!report.str().empty())
+			throw std::runtime_error(rawlog + ": entry " + std::to_string(entry) + ": unreadable (" +
+									 oneLineError(report.str(), 160) + ")");
+		if (!more) break;
 		if (!action && !sf && !obs) continue;
 		if (!obs && (!action || !sf)) continue;  // the engine needs both halves of a pair
 		engine._execGraphSlamStep(action, sf, obs, entry);
@@ -233,6 +241,24 @@ class StdinFromDevNull
 	int saved_;
 };
 
+/** Checks the grid-vector sections before the engine reads them: errors
+ * thrown inside the engine's constructor reach us mangled by MRPT_END. */
+GridVectorConfig validateGridVectorSections(const mrpt::config::CConfigFileBase& ini, const Settings& s)
+{
+	if (s.nodeReg == "CGridVectorNRD") NodeDeciderOptions().load(ini, s.ini);
+	if (s.edgeReg == "CGridVectorERD") EdgeDeciderOptions().load(ini, s.ini);
+	GridVectorConfig c;
+	try
+	{
+		c.loadFromConfigFile(ini, "gridvector", s.ini);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(s.ini + ": " + e.what());
+	}
+	return c;
+}
+
 int run(const Settings& s, DeciderRegistry& reg)
 {
 	requireFile(s.ini, "config file");
@@ -240,6 +266,7 @@ int run(const Settings& s, DeciderRegistry& reg)
 	if (!s.groundTruth.empty()) requireFile(s.groundTruth, "ground-truth file");
 	mrpt::config::CConfigFile ini(s.ini);
 	const GeneralConfig gc(ini);
+	const GridVectorConfig mapConfig = validateGridVectorSections(ini, s);
 	const std::string dir = s.outDir.empty() ? gc.outputDir : s.outDir;
 	io::ensureWritableDirectory(dir);
 
@@ -279,11 +306,7 @@ int run(const Settings& s, DeciderRegistry& reg)
 	io::writeTrajectory(dir + "/trajectory.txt", rec.scanTrajectory(graph.nodes));
 	io::writeTrajectory(dir + "/nodes.txt", rec.nodeTrajectory(graph.nodes));
 	mrpt::maps::CGridVectorMap map;
-	map.setConfig([&] {
-		GridVectorConfig c;
-		c.loadFromConfigFile(ini, "gridvector", s.ini);
-		return c;
-	}());
+	map.setConfig(mapConfig);
 	rec.buildMap(graph.nodes, map);
 	writeGridVectorMap(dir, map);
 

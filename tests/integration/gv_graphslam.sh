@@ -63,6 +63,6 @@ expect_error "only 2D" --3d -i "$INI" -r "$W/short.rawlog"
 printf '[GridVectorERD]\nmax_distanse = 3\n' > "$W/typo.ini"
 expect_error "typo.ini: unknown key 'max_distanse' in section \[GridVectorERD\]" \
 	-i "$W/typo.ini" -r "$W/short.rawlog" --output-dir "$W/typo"
-head -c 3000 "$W/short.rawlog" > "$W/cut.rawlog"
-expect_error "cut.rawlog" -i "$INI" -r "$W/cut.rawlog" --output-dir "$W/cut" --quiet
+printf 'this is not a rawlog\n' > "$W/bad.rawlog"
+expect_error "bad.rawlog" -i "$INI" -r "$W/bad.rawlog" --output-dir "$W/bad" --quiet
 echo "gv_graphslam: OK"

@@ -137,3 +137,20 @@ TEST(SegmentIndex, FindsTheNearestSegmentWithinRange)
 			else EXPECT_EQ(got, sim::kNoHit);
 		}
 }
+
+TEST(MapEval, TransformMovesVectorsAndDoorsRigidly)
+{
+	eval::MapVector v;
+	v.seg = sim::Segment(1, 0, 2, 0);
+	const auto out = eval::transformVectors({v}, mrpt::math::TPose2D(10, 5, M_PI / 2));
+	ASSERT_EQ(out.size(), 1u);
+	EXPECT_NEAR(out[0].seg.a.x, 10, 1e-12);
+	EXPECT_NEAR(out[0].seg.a.y, 6, 1e-12);
+	EXPECT_NEAR(out[0].seg.b.y, 7, 1e-12);
+	sim::DoorTruth d;
+	d.hinge = sim::Vec2(1, 0);
+	d.closedAngle = 0.2;
+	const auto dd = eval::transformDoors({d}, mrpt::math::TPose2D(0, 0, M_PI));
+	EXPECT_NEAR(dd[0].hinge.x, -1, 1e-12);
+	EXPECT_NEAR(dd[0].closedAngle, 0.2 + M_PI, 1e-12);
+}

@@ -145,3 +145,22 @@ TEST(TrajectoryEval, AgreesWithEvaltrajPy)
 	}
 	fs::remove_all(dir);
 }
+
+TEST(TrajectoryEval, AlignmentTransformRecoversTheFrameOffset)
+{
+	// Reference in the truth frame; the estimate is the same path seen from a frame
+	// rotated by 0.7 rad and shifted by (1.2, 6.2), as a map built from odometry is.
+	const mrpt::math::TPose2D T(1.2, 6.2, 0.7);
+	gridvector::io::Trajectory ref, est;
+	for (int i = 0; i < 50; ++i)
+	{
+		const double t = 100 + 0.2 * i, x = 0.1 * i, y = std::sin(0.2 * i);
+		ref.push_back({t, mrpt::math::TPose2D(x, y, 0.1 * i)});
+		const double c = std::cos(-T.phi), s = std::sin(-T.phi), dx = x - T.x, dy = y - T.y;
+		est.push_back({t, mrpt::math::TPose2D(c * dx - s * dy, s * dx + c * dy, 0.1 * i - T.phi)});
+	}
+	const auto A = gridvector::eval::alignmentTransform(est, ref);
+	EXPECT_NEAR(A.x, T.x, 1e-9);
+	EXPECT_NEAR(A.y, T.y, 1e-9);
+	EXPECT_NEAR(A.phi, T.phi, 1e-9);
+}

@@ -52,10 +52,19 @@ int mapCommand(const io::ArgParser& a)
 	o.wallTolerance = o.dynamicTolerance = a.getDouble("tolerance", o.wallTolerance);
 	o.doorTolerance = a.getDouble("door-tolerance", o.doorTolerance);
 	if (o.wallTolerance <= 0 || o.doorTolerance <= 0) a.fail("tolerances must be > 0");
-	const auto vectors = eval::readVectors(a.positional()[1]);
+	auto vectors = eval::readVectors(a.positional()[1]);
 	const auto truth = sim::readTruth(a.positional()[2]);
 	std::vector<sim::DoorTruth> doors;
 	if (a.has("doors")) doors = sim::readDoors(a.get("doors"));
+	if (a.has("trajectory"))
+	{
+		// The map is in the estimate's frame: align it to the truth as the ATE does.
+		const auto est = loadTrajectory(a.get("trajectory"), false);
+		const auto ref = io::readTrajectory(a.positional()[2] + "/" + sim::SimFiles::trajectory);
+		const auto T = eval::alignmentTransform(est, ref, a.getDouble("max-dt", 0.05));
+		vectors = eval::transformVectors(vectors, T);
+		doors = eval::transformDoors(doors, T);
+	}
 	const auto m = eval::evaluateMap(vectors, truth, a.has("doors") ? &doors : nullptr, o);
 	if (a.has("json")) std::cout << eval::formatJson(m) << "\n";
 	else std::cout << a.positional()[1] << ": " << vectors.size() << " vectors\n" << eval::formatText(m);
@@ -71,6 +80,7 @@ int main(int argc, char** argv)
 	args.flag("json", "print JSON instead of text");
 	args.option("max-dt", "S", "traj: match poses within this time difference (default 0.05 s)");
 	args.flag("log-pose", "traj: for logs, use the poses the log attaches to scans instead of odometry");
+	args.option("trajectory", "EST", "map: the trajectory the map was built with; aligns the map to the truth like the ATE");
 	args.option("doors", "FILE", "map: detected doors 'hinge_x hinge_y length ...' to score door recall");
 	args.option("tolerance", "M", "map: distance for 'on a wall' / 'on a dynamic object' (default 0.1 m)");
 	args.option("door-tolerance", "M", "map: hinge match distance (default 0.3 m)");

@@ -176,4 +176,32 @@ std::string formatJson(const MapMetrics& m)
 	return os.str();
 }
 
+namespace
+{
+sim::Vec2 moved(const sim::Vec2& p, const mrpt::math::TPose2D& T)
+{
+	const double c = std::cos(T.phi), s = std::sin(T.phi);
+	return {c * p.x - s * p.y + T.x, s * p.x + c * p.y + T.y};
+}
+}  // namespace
+
+std::vector<MapVector> transformVectors(const std::vector<MapVector>& v, const mrpt::math::TPose2D& T)
+{
+	std::vector<MapVector> out = v;
+	for (auto& m : out) m.seg = sim::Segment(moved(m.seg.a, T), moved(m.seg.b, T));
+	return out;
+}
+
+std::vector<sim::DoorTruth> transformDoors(const std::vector<sim::DoorTruth>& d, const mrpt::math::TPose2D& T)
+{
+	std::vector<sim::DoorTruth> out = d;
+	for (auto& door : out)
+	{
+		door.hinge = moved(door.hinge, T);
+		door.closedAngle += T.phi;
+		door.openAngle += T.phi;
+	}
+	return out;
+}
+
 }  // namespace gridvector::eval

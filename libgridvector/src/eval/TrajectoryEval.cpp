@@ -22,8 +22,8 @@ TPose2D relative(const TPose2D& a, const TPose2D& b)
 	return {c * dx + s * dy, -s * dx + c * dy, wrap(b.phi - a.phi)};
 }
 
-/** Umeyama without scale: rotate and translate the estimate onto the reference; returns the RMSE. */
-double alignedRmse(const Pairs& p)
+/** Umeyama without scale: the rigid transform taking the estimate onto the reference. */
+TPose2D bestAlignment(const Pairs& p)
 {
 	const double n = double(p.size());
 	double mx = 0, my = 0, gx = 0, gy = 0;
@@ -36,13 +36,21 @@ double alignedRmse(const Pairs& p)
 		sxy += (e.x - mx) * (g.y - gy) - (e.y - my) * (g.x - gx);
 	}
 	const double th = std::atan2(sxy, sxx), c = std::cos(th), s = std::sin(th);
+	return {gx - (c * mx - s * my), gy - (s * mx + c * my), th};
+}
+
+/** RMSE of the estimate after the best alignment. */
+double alignedRmse(const Pairs& p)
+{
+	const TPose2D T = bestAlignment(p);
+	const double c = std::cos(T.phi), s = std::sin(T.phi);
 	double se = 0;
 	for (const auto& [e, g] : p)
 	{
-		const double x = c * (e.x - mx) - s * (e.y - my) + gx, y = s * (e.x - mx) + c * (e.y - my) + gy;
+		const double x = c * e.x - s * e.y + T.x, y = s * e.x + c * e.y + T.y;
 		se += (x - g.x) * (x - g.x) + (y - g.y) * (y - g.y);
 	}
-	return std::sqrt(se / n);
+	return std::sqrt(se / double(p.size()));
 }
 
 /** Mean translational [m] and rotational [deg] relation errors over index pairs. */
@@ -126,6 +134,13 @@ std::string formatJson(const TrajectoryMetrics& m)
 		   ", \"rel_local_t_m\": " + jsonNum(m.localT) + ", \"rel_local_r_deg\": " + jsonNum(m.localRDeg) +
 		   ", \"local_pairs\": " + std::to_string(m.localPairs) + ", \"rel_loop_t_m\": " + jsonNum(m.loopT) +
 		   ", \"rel_loop_r_deg\": " + jsonNum(m.loopRDeg) + ", \"loop_pairs\": " + std::to_string(m.loopPairs) + "}";
+}
+
+TPose2D alignmentTransform(const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff)
+{
+	const Pairs p = matchByTimestamp(est, ref, maxTimeDiff);
+	if (p.size() < 3) throw std::runtime_error("too few matched poses (" + std::to_string(p.size()) + ")");
+	return bestAlignment(p);
 }
 
 }  // namespace gridvector::eval

@@ -3,6 +3,8 @@
 // Sec. 5.4 door detection).
 #pragma once
 
+#include <mrpt/math/TPose2D.h>
+
 #include <gridvector/sim/TruthFiles.h>
 
 #include <string>
@@ -20,6 +22,11 @@ struct MapVector
 
 /** Reads a vectors file; malformed lines throw "file:line: what is wrong". */
 std::vector<MapVector> readVectors(const std::string& path);
+
+/** Moves vectors / door hinges by the rigid transform T: p -> R(T.phi) p + (T.x, T.y)
+ * (e.g. alignmentTransform() of the estimated trajectory onto the truth). */
+std::vector<MapVector> transformVectors(const std::vector<MapVector>& v, const mrpt::math::TPose2D& T);
+std::vector<sim::DoorTruth> transformDoors(const std::vector<sim::DoorTruth>& d, const mrpt::math::TPose2D& T);
 
 struct MapEvalOptions
 {

@@ -37,6 +37,12 @@ std::vector<std::pair<mrpt::math::TPose2D, mrpt::math::TPose2D>> matchByTimestam
 TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajectory& ref,
 									 const TrajectoryEvalOptions& opt = {});
 
+/** The rigid transform (x, y, phi) that best maps the estimate's positions onto
+ * the reference's (the alignment of the ATE): p_ref ~ R(phi) p_est + (x, y).
+ * Used to bring an estimated map into the truth's frame. Throws like evaluateTrajectory. */
+mrpt::math::TPose2D alignmentTransform(const io::Trajectory& est, const io::Trajectory& ref,
+									   double maxTimeDiff = 0.05);
+
 /** evaltraj.py's output line: "n=... ate_rmse_m=... rel_local_t_m=... ...". */
 std::string formatText(const TrajectoryMetrics& m);
 std::string formatJson(const TrajectoryMetrics& m);

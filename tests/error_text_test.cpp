@@ -27,3 +27,9 @@ TEST(ErrorText, LongMessagesAreCut)
 {
 	EXPECT_EQ(gridvector::oneLineError(std::string(1000, 'x'), 50).size(), 50u);
 }
+
+TEST(ErrorText, BracketedPrefixesAreKeptButFramesDropped)
+{
+	EXPECT_EQ(gridvector::oneLineError(std::string("[CGraphSlamEngine] my.ini: bad key\n[0 ] 0x7f001\n[12] foo")),
+			  "[CGraphSlamEngine] my.ini: bad key");
+}

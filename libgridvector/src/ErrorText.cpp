@@ -16,6 +16,19 @@ std::string trim(const std::string& s)
 }
 
 bool startsWith(const std::string& s, const char* p) { return s.rfind(p, 0) == 0; }
+
+// A backtrace frame: "[12] 0x..." or "[0 ] ...".
+bool isFrame(const std::string& s)
+{
+	size_t i = 1;
+	if (s.empty() || s[0] != '[') return false;
+	while (i < s.size() && s[i] == ' ') ++i;
+	const size_t digits = i;
+	while (i < s.size() && std::isdigit(static_cast<unsigned char>(s[i]))) ++i;
+	if (i == digits) return false;
+	while (i < s.size() && s[i] == ' ') ++i;
+	return i < s.size() && s[i] == ']';
+}
 }  // namespace
 
 std::string oneLineError(const std::exception& e, size_t maxLen) { return oneLineError(std::string(e.what()), maxLen); }
@@ -34,7 +47,7 @@ std::string oneLineError(const std::string& text, size_t maxLen)
 		if (startsWith(line, "Call stack backtrace")) { inStack = true; continue; }
 		if (startsWith(line, "Location:")) { inStack = false; continue; }
 		if (startsWith(line, "Message:")) { inStack = false; lastMessage = trim(line.substr(8)); continue; }
-		if (inStack || startsWith(line, "[")) continue;
+		if (inStack || isFrame(line)) continue;
 		if (!lastMessage.empty()) lastMessage += ' ' + line;
 		else out += (out.empty() ? "" : " ") + line;
 	}

@@ -1,0 +1,62 @@
+// EmSlam (Sec. 4): E- and M-steps until no constraint changes; a transient object ends dynamic.
+#include "em_world.h"
+
+#include <gridvector/EmSlam.h>
+
+#include <gtest/gtest.h>
+
+using namespace gridvector;
+using emtest::TPoint2D;
+using emtest::TPose2D;
+
+TEST(EmSlam, ConvergesToTheTrueTrajectoryAndFindsTheTransientObject)
+{
+	const auto truth = emtest::ringPath(2, 0.5);
+	const auto odo = emtest::odometryOf(truth, 3);
+	auto walls = emtest::corridorWorld();
+	// a board standing across part of the corridor during the first lap only (scans 4..14),
+	// seen from the corridor behind it (open side towards -x)
+	const std::vector<emtest::Wall> box = {{5.0, 1.35, 5.0, 1.95}};
+	std::vector<LocalScan> scans;
+	for (size_t t = 0; t < truth.size(); ++t)
+	{
+		auto w = walls;
+		if (t >= 4 && t <= 14) w.insert(w.end(), box.begin(), box.end());
+		scans.push_back(emtest::observe(w, truth[t], 6.0, unsigned(t)));
+		scans.back().scanIndex = int64_t(t);
+	}
+	// later scans see through the box's place: the walls behind it are visible, and the
+	// wipe triangles of the scans of the second lap pass where the box stood
+	GridVectorConfig cfg = EmSlam::defaultConfig();
+	std::vector<int> perIteration;
+	const EmResult r = EmSlam(cfg).run(scans, odo, [&](const EmIteration& it, const std::vector<TPose2D>&) {
+		perIteration.push_back(it.index);
+	});
+	EXPECT_TRUE(r.converged);
+	EXPECT_LE(r.iterations.size(), 6u);
+	EXPECT_EQ(perIteration.size(), r.iterations.size());
+	EXPECT_EQ(r.iterations.front().changedShare, 1.0);
+	EXPECT_EQ(r.iterations.back().changedShare, 0.0);
+	EXPECT_LT(emtest::ate(r.poses, truth), 0.05);
+	ASSERT_FALSE(r.finalVectors.empty());
+	// the box's front face (x = 5, facing -x... seen from the corridor) is dynamic in the final map
+	const TPose2D T = se2::compose(truth[0], se2::relative(r.poses[0], TPose2D(0, 0, 0)));
+	double staticLen = 0, dynamicOnBox = 0;
+	for (const auto& v : r.finalVectors)
+	{
+		const TPose2D c = se2::compose(T, TPose2D(v.centre().x, v.centre().y, 0));
+		const bool onBox = c.x > 4.9 && c.x < 5.1 && c.y > 1.3 && c.y < 2.0;
+		if (v.state == VectorState::Static)
+			staticLen += v.length();
+		else if (onBox)
+			dynamicOnBox += v.length();
+		EXPECT_TRUE(!onBox || v.state == VectorState::Dynamic) << c.x << " " << c.y;
+	}
+	EXPECT_GT(dynamicOnBox, 0.5);
+	EXPECT_GT(staticLen, 60.0);
+	// static and dynamic maps are disjoint merges of the per-scan children (M_cor)
+	size_t sources = 0;
+	for (const auto* m : {&r.staticMap, &r.dynamicMap})
+		for (const auto& s : m->sources) sources += s.size();
+	EXPECT_EQ(sources, r.perScan.size());
+}

@@ -1,0 +1,130 @@
+// EStep (Sec. 4.1, Eq. 14-15, Fig. 4): profile split-and-merge into static and dynamic children.
+#include <gridvector/EStep.h>
+
+#include <gtest/gtest.h>
+
+using namespace gridvector;
+using mrpt::math::TPoint2D;
+
+namespace
+{
+// A 3 m vector (30 columns) whose centre-row cells have occupancy `occ[c]`, well observed.
+GridVector withProfile(const std::vector<double>& occ)
+{
+	GridVector v(TPoint2D(1, 1), TPoint2D(1 + 0.1 * occ.size(), 1), GridOptions{});
+	for (int c = 0; c < v.cols(); ++c)
+	{
+		GridCell& cell = v.cell(v.halfWidth(), c);
+		cell.n_visit = 20;
+		cell.n_occupy = float(20 * occ[size_t(c)]);
+		cell.n_acc = 3;
+		cell.x_acc = 0.15f, cell.y_acc = 0.15f;
+	}
+	v.id = 7;
+	v.scanIndex = 42;
+	return v;
+}
+std::vector<double> runs(std::initializer_list<std::pair<int, double>> r)
+{
+	std::vector<double> p;
+	for (auto [n, v] : r) p.insert(p.end(), size_t(n), v);
+	return p;
+}
+}  // namespace
+
+TEST(EStep, PiecesSplitAtThresholdCrossings)
+{
+	auto ps = EStep::pieces(runs({{10, 0.9}, {10, 0.1}, {10, 0.9}}), 0.5, 3);
+	ASSERT_EQ(ps.size(), 3u);
+	EXPECT_TRUE(ps[0].isStatic);
+	EXPECT_FALSE(ps[1].isStatic);
+	EXPECT_EQ(ps[1].first, 10);
+	EXPECT_EQ(ps[1].last, 20);
+	EXPECT_TRUE(ps[2].isStatic);
+	// all above / all below: one piece
+	EXPECT_EQ(EStep::pieces(runs({{8, 0.7}}), 0.5, 3).size(), 1u);
+	EXPECT_FALSE(EStep::pieces(runs({{8, 0.2}}), 0.5, 3)[0].isStatic);
+}
+
+TEST(EStep, ShortPiecesMergeIntoTheirNeighbours)
+{
+	// a 1-column dip inside a static wall disappears, a 2-column blip at the end too
+	auto ps = EStep::pieces(runs({{10, 0.9}, {1, 0.1}, {10, 0.9}, {2, 0.1}}), 0.5, 3);
+	ASSERT_EQ(ps.size(), 1u);
+	EXPECT_TRUE(ps[0].isStatic);
+	EXPECT_EQ(ps[0].first, 0);
+	EXPECT_EQ(ps[0].last, 23);
+	// the shortest goes first: [5 S][2 D][5 S][4 D] -> [12 S][4 D]
+	ps = EStep::pieces(runs({{5, 0.9}, {2, 0.1}, {5, 0.9}, {4, 0.1}}), 0.5, 3);
+	ASSERT_EQ(ps.size(), 2u);
+	EXPECT_EQ(ps[0].last, 12);
+	EXPECT_FALSE(ps[1].isStatic);
+}
+
+TEST(EStep, ChildrenAreSubGridsOfTheParent)
+{
+	const GridVector parent = withProfile(runs({{10, 0.9}, {10, 0.1}, {10, 0.9}}));
+	const EStep e;
+	const auto kids = e.split(parent);
+	ASSERT_EQ(kids.size(), 3u);
+	double len = 0, occ = 0, visit = 0;
+	for (size_t k = 0; k < kids.size(); ++k)
+	{
+		len += kids[k].length();
+		occ += kids[k].totalOccupy();
+		visit += kids[k].totalVisit();
+		EXPECT_EQ(kids[k].id, EStep::childId(parent.id, k));
+		EXPECT_EQ(EStep::parentIdOf(kids[k].id), parent.id);
+		EXPECT_EQ(kids[k].scanIndex, parent.scanIndex);
+		EXPECT_NEAR(kids[k].start().y, 1.0, 1e-12);  // on the parent's line
+	}
+	EXPECT_NEAR(len, parent.length(), 1e-9);
+	EXPECT_NEAR(occ, parent.totalOccupy(), 1e-3);  // the posterior is untouched (Eq. 5)
+	EXPECT_NEAR(visit, parent.totalVisit(), 1e-3);
+	EXPECT_EQ(kids[0].state, VectorState::Static);
+	EXPECT_EQ(kids[1].state, VectorState::Dynamic);
+	EXPECT_NEAR(kids[1].start().x, 2.0, 1e-9);
+	EXPECT_NEAR(kids[1].end().x, 3.0, 1e-9);
+	// cell by cell: the dynamic child's first column is the parent's column 10
+	for (int r = 0; r < parent.rows(); ++r)
+		EXPECT_EQ(kids[1].cell(r, 0).n_occupy, parent.cell(r, 10).n_occupy);
+	// the mean point of a cell is where it was
+	const TPoint2D a = kids[1].cellMeanPoint(parent.halfWidth(), 3), b = parent.cellMeanPoint(parent.halfWidth(), 13);
+	EXPECT_NEAR(a.x, b.x, 1e-6);
+	EXPECT_NEAR(a.y, b.y, 1e-6);
+}
+
+TEST(EStep, UnobservedColumnsStayStaticAndHysteresisHolds)
+{
+	EStepOptions o;
+	o.minVisits = 3;
+	o.hysteresis = 0.1;
+	const EStep e(o);
+	// never re-observed (prior only): static
+	GridVector fresh(TPoint2D(0, 0), TPoint2D(2, 0), GridOptions{});
+	EXPECT_EQ(e.split(fresh)[0].state, VectorState::Static);
+	// a column at 0.45: dynamic on its own, static if it was static before
+	const GridVector v = withProfile(runs({{10, 0.45}}));
+	EXPECT_EQ(e.split(v)[0].state, VectorState::Dynamic);
+	EXPECT_EQ(e.split(v, {ProfilePiece{0, 10, true}})[0].state, VectorState::Static);
+	const GridVector w = withProfile(runs({{10, 0.3}}));
+	EXPECT_EQ(e.split(w, {ProfilePiece{0, 10, true}})[0].state, VectorState::Dynamic);
+}
+
+TEST(EStep, RunRecordsChildrenPerParent)
+{
+	std::vector<GridVector> parents = {withProfile(runs({{10, 0.9}})), withProfile(runs({{10, 0.9}, {10, 0.1}})),
+									   withProfile(runs({{10, 0.1}}))};
+	parents[1].id = 8, parents[2].id = 9;
+	const EStepResult r = EStep().run(parents);
+	ASSERT_EQ(r.childrenOf.size(), 3u);
+	EXPECT_EQ(r.childrenOf[0].size(), 1u);
+	EXPECT_EQ(r.childrenOf[1].size(), 2u);
+	EXPECT_EQ(r.childrenOf[2].size(), 1u);
+	EXPECT_EQ(r.children.size(), r.pieces.size());
+	EXPECT_EQ(r.staticCount, 2u);
+	EXPECT_EQ(r.dynamicCount, 2u);
+	EXPECT_NEAR(r.staticLength, 2.0, 1e-9);
+	EXPECT_NEAR(r.dynamicLength, 2.0, 1e-9);
+	EXPECT_EQ(r.children[r.childrenOf[2][0]].id, EStep::childId(9, 0));
+}

@@ -1,0 +1,25 @@
+#!/usr/bin/env bash
+# gv-em-slam end to end on a short simulated dynamic corridor: every output file,
+# an accuracy bound against the simulator's truth, and one-line errors on bad input.
+set -euo pipefail
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+"$GV_BIN/gv-sim" --world long-corridor --seed 2 --scans 400 --out "$tmp/sim" --quiet
+"$GV_BIN/gv-em-slam" --input "$tmp/sim/sim.log" --out "$tmp/out" --quiet
+for f in trajectory.txt map.gvmap vectors.txt vectors.svg occupancy.png occupancy.pgm occupancy.yaml doors.txt report.json; do
+  [ -s "$tmp/out/$f" ] || { echo "missing or empty: $f"; exit 1; }
+done
+[ "$(grep -vc '^#' "$tmp/out/trajectory.txt")" -eq 400 ] || { echo "trajectory must have one pose per scan"; exit 1; }
+grep -q '"converged": true' "$tmp/out/report.json" || { echo "EM did not converge"; exit 1; }
+awk '!/^#/ && $6 != "static" && $6 != "dynamic" { bad = 1 } END { exit bad }' "$tmp/out/vectors.txt" \
+  || { echo "vectors.txt: state column must be static|dynamic"; exit 1; }
+ate=$("$GV_BIN/gv-eval" traj "$tmp/out/trajectory.txt" "$tmp/sim/truth_trajectory.txt" | sed -n 's/.*ate_rmse_m=\([0-9.]*\).*/\1/p')
+echo "ATE $ate m"
+awk -v a="$ate" 'BEGIN { exit !(a <= 0.10) }' || { echo "ATE $ate m > 0.10 m"; exit 1; }
+# bad input: one line "file: problem", non-zero exit, no crash
+printf 'FLASER 3 1.0 oops\n' > "$tmp/bad.log"
+if "$GV_BIN/gv-em-slam" --input "$tmp/bad.log" --out "$tmp/bad" 2> "$tmp/err.txt"; then echo "bad log accepted"; exit 1; fi
+[ "$(wc -l < "$tmp/err.txt")" -eq 1 ] && grep -q "bad.log" "$tmp/err.txt" || { cat "$tmp/err.txt"; exit 1; }
+if "$GV_BIN/gv-em-slam" --input "$tmp/missing.log" --out "$tmp/bad" 2> "$tmp/err.txt"; then echo "missing log accepted"; exit 1; fi
+[ "$(wc -l < "$tmp/err.txt")" -eq 1 ] || { cat "$tmp/err.txt"; exit 1; }
+if "$GV_BIN/gv-em-slam" --input "$tmp/sim/sim.log" 2> /dev/null; then echo "missing --out accepted"; exit 1; fi
+echo "gv-em-slam end to end OK"

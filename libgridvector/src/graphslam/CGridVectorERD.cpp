@@ -1,4 +1,5 @@
 #include <gridvector/graphslam/CGridVectorERD.h>
+#include <gridvector/graphslam/RegistrationConfig.h>
 #include <gridvector/graphslam/OdometryTracker.h>
 
 #include <mrpt/config/CConfigFile.h>
@@ -24,8 +25,7 @@ CGridVectorERD::CGridVectorERD() : extractor_(cfg_.extraction, cfg_.grid), match
 void CGridVectorERD::loadParams(const std::string& source_fname)
 {
 	parent_t::loadParams(source_fname);
-	if (!mrpt::system::fileExists(source_fname))
-		throw std::runtime_error(source_fname + ": cannot open config file");
+	requireConfigFile(source_fname);
 	mrpt::config::CConfigFile cfg(source_fname);
 	loadOptions(cfg, source_fname);
 }
@@ -33,14 +33,7 @@ void CGridVectorERD::loadParams(const std::string& source_fname)
 void CGridVectorERD::loadOptions(const mrpt::config::CConfigFileBase& cfg, const std::string& sourceName)
 {
 	params_.load(cfg, sourceName);
-	try
-	{
-		cfg_.loadFromConfigFile(cfg, "gridvector", sourceName);
-	}
-	catch (const std::invalid_argument& e)
-	{
-		throw std::runtime_error(sourceName + ": " + e.what());
-	}
+	cfg_ = loadRegistrationConfig(cfg, sourceName);
 	extractor_ = VectorExtractor(cfg_.extraction, cfg_.grid);
 	matcher_ = VectorMatcher(cfg_.matcher);
 	this->setMinLoggingLevel(mrpt::system::VerbosityLevel(params_.classVerbosity));

@@ -1,5 +1,6 @@
 #include <gridvector/PoseGraph.h>
 #include <gridvector/graphslam/CGridVectorNRD.h>
+#include <gridvector/graphslam/RegistrationConfig.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/format.h>
@@ -31,8 +32,7 @@ CGridVectorNRD::CGridVectorNRD()
 void CGridVectorNRD::loadParams(const std::string& source_fname)
 {
 	parent_t::loadParams(source_fname);
-	if (!mrpt::system::fileExists(source_fname))
-		throw std::runtime_error(source_fname + ": cannot open config file");
+	requireConfigFile(source_fname);
 	mrpt::config::CConfigFile cfg(source_fname);
 	loadOptions(cfg, source_fname);
 }
@@ -40,14 +40,7 @@ void CGridVectorNRD::loadParams(const std::string& source_fname)
 void CGridVectorNRD::loadOptions(const mrpt::config::CConfigFileBase& cfg, const std::string& sourceName)
 {
 	params_.load(cfg, sourceName);
-	try
-	{
-		cfg_.loadFromConfigFile(cfg, "gridvector", sourceName);
-	}
-	catch (const std::invalid_argument& e)
-	{
-		throw std::runtime_error(sourceName + ": " + e.what());
-	}
+	cfg_ = loadRegistrationConfig(cfg, sourceName);
 	extractor_ = VectorExtractor(cfg_.extraction, cfg_.grid);
 	matcher_ = VectorMatcher(cfg_.matcher);
 	this->setMinLoggingLevel(mrpt::system::VerbosityLevel(params_.classVerbosity));

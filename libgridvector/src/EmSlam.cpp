@@ -2,6 +2,7 @@
 #include <gridvector/SE2.h>
 
 #include <chrono>
+#include <stdexcept>
 #include <tuple>
 
 namespace gridvector
@@ -98,8 +99,71 @@ std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<
 	return out;
 }
 
+std::vector<size_t> EmSlam::keyframes(const std::vector<TPose2D>& odometry, const MStepOptions& o)
+{
+	std::vector<size_t> k;
+	for (size_t t = 0; t < odometry.size(); ++t)
+	{
+		const bool last = t + 1 == odometry.size();
+		if (k.empty() || last || se2::distance(odometry[k.back()], odometry[t]) >= o.keyframeDistance ||
+			std::abs(mrpt::math::wrapToPi(odometry[t].phi - odometry[k.back()].phi)) >=
+				o.keyframeRotationDeg * M_PI / 180)
+			k.push_back(t);
+	}
+	return k;
+}
+
+// EM on the keyframes; every other scan is placed by the odometry from the
+// keyframes before and after it, the two predictions blended by time.
 EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPose2D>& odometry,
 					 const IterationCallback& onIteration, const ProgressCallback& progress) const
+{
+	if (scans.size() != odometry.size())
+		throw std::invalid_argument("EmSlam: scans and odometry differ in length");
+	const auto key = keyframes(odometry, cfg_.mstep);
+	std::vector<LocalScan> ks;
+	std::vector<TPose2D> ko;
+	for (size_t k = 0; k < key.size(); ++k)
+	{
+		ks.push_back(scans[key[k]]);
+		ks.back().scanIndex = int64_t(k);
+		ko.push_back(odometry[key[k]]);
+	}
+	const size_t n = scans.size();
+	EmResult res = runKeyframes(ks, ko, [&](const EmIteration& it, const std::vector<TPose2D>& kp) {
+		if (onIteration) onIteration(it, expand(kp, key, odometry));
+	}, progress);
+	res.poses = expand(res.poses, key, odometry);
+	for (auto& v : res.perScan)
+		if (v.scanIndex >= 0) v.scanIndex = int64_t(key[size_t(v.scanIndex)]);
+	res.keyframes = key.size();
+	(void)n;
+	return res;
+}
+
+std::vector<TPose2D> EmSlam::expand(const std::vector<TPose2D>& kp, const std::vector<size_t>& key,
+									const std::vector<TPose2D>& odometry)
+{
+	std::vector<TPose2D> out(odometry.size());
+	for (size_t k = 0; k < key.size(); ++k)
+	{
+		out[key[k]] = kp[k];
+		if (k + 1 == key.size()) break;
+		const size_t a = key[k], b = key[k + 1];
+		for (size_t t = a + 1; t < b; ++t)
+		{
+			const TPose2D pa = se2::compose(kp[k], se2::relative(odometry[a], odometry[t]));
+			const TPose2D pb = se2::compose(kp[k + 1], se2::relative(odometry[b], odometry[t]));
+			const double w = double(t - a) / double(b - a);
+			out[t] = TPose2D(pa.x + w * (pb.x - pa.x), pa.y + w * (pb.y - pa.y),
+							 mrpt::math::wrapToPi(pa.phi + w * mrpt::math::wrapToPi(pb.phi - pa.phi)));
+		}
+	}
+	return out;
+}
+
+EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::vector<TPose2D>& odometry,
+							  const IterationCallback& onIteration, const ProgressCallback& progress) const
 {
 	EmResult res;
 	MStep mstep(cfg_);

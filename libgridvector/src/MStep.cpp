@@ -154,11 +154,15 @@ void MStep::updateExisting(const Scans& scans, const Poses& poses, MStepReport& 
 			continue;
 		}
 		const bool same = sameScans(c);
-		// unchanged vectors and (for a rejected edge: any) unmoved poses: nothing to do
-		if (same && (c.rejected || !movedSince(c.checkedAt, rel) ||
-					 !correspondencesChanged(c, scans, poses)))
+		// Eq. 24-25: re-register only when the correspondences changed (a rejected
+		// edge: only when the vectors of its scans changed)
+		const bool keep = c.rejected ? same
+									 : (same && !movedSince(c.checkedAt, rel)) ||
+										   !correspondencesChanged(c, scans, poses);
+		if (keep)
 		{
 			c.checkedAt = rel;
+			c.sigFrom = sigs_[c.from], c.sigTo = sigs_[c.to];
 			++it;
 			continue;
 		}

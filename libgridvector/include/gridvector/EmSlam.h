@@ -36,6 +36,7 @@ struct EmResult
 	MergeResult staticMap, dynamicMap;  //!< merged static / dynamic vectors (Eq. 4)
 	std::vector<GridVector> finalVectors;  //!< staticMap then dynamicMap vectors, state set
 	double finalMapSeconds = 0;
+	size_t keyframes = 0;  //!< scans EM worked on (the others follow their odometry)
 };
 
 /** Runs EM: M-step (all vectors static at first, from raw odometry), then
@@ -64,7 +65,19 @@ class EmSlam
 	static std::vector<std::vector<MatchSegment>> staticSegments(
 		const std::vector<GridVector>& children, const std::vector<mrpt::math::TPose2D>& poses);
 
+	/** Scans EM works on: the first, the last, and each one whose odometry moved
+	 * mstep.keyframe_distance or turned mstep.keyframe_rotation_deg since the last. */
+	static std::vector<size_t> keyframes(const std::vector<mrpt::math::TPose2D>& odometry,
+										 const MStepOptions& o);
+	/** Poses of all scans from the keyframes' and the odometry in between. */
+	static std::vector<mrpt::math::TPose2D> expand(const std::vector<mrpt::math::TPose2D>& keyPoses,
+												   const std::vector<size_t>& key,
+												   const std::vector<mrpt::math::TPose2D>& odometry);
+
    private:
+	EmResult runKeyframes(const std::vector<LocalScan>& scans, const std::vector<mrpt::math::TPose2D>& odometry,
+						  const IterationCallback& onIteration, const ProgressCallback& progress) const;
+
 	GridVectorConfig cfg_;
 };
 

@@ -175,6 +175,8 @@ struct PoseGraphOptions
 struct MStepOptions
 {
 	int maxIterations = 10;  //!< EM iterations at most (stops earlier when no constraint changes)
+	double keyframeDistance = 0.2;  //!< EM runs on scans this far apart (odometry); the others follow [m]
+	double keyframeRotationDeg = 5.0;  //!< ... or turned this much [deg]
 	int sequentialWindow = 5;  //!< register each scan against this many predecessors
 	double overlapDistance = 6.0;  //!< poses closer than this are candidates for an overlap edge [m]
 	double overlapMinLength = 2.0;  //!< corresponding static length that makes two scans overlap [m]
@@ -191,6 +193,8 @@ struct MStepOptions
 	void visit(V&& v)
 	{
 		v("max_iterations", maxIterations, "EM iterations at most");
+		v("keyframe_distance", keyframeDistance, "EM works on the scans whose odometry moved this far since the last one; the others follow the odometry between them [m]");
+		v("keyframe_rotation_deg", keyframeRotationDeg, "... or turned this much [deg]");
 		v("sequential_window", sequentialWindow, "Register each scan against this many predecessors");
 		v("overlap_distance", overlapDistance, "Poses closer than this are candidates for an overlap edge [m]");
 		v("overlap_min_length", overlapMinLength, "Corresponding static vector length that makes two scans overlap [m]");

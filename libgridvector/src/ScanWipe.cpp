@@ -20,8 +20,8 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::v
 {
 	Stats st;
 	marks_.clear();
-	offset_.clear();
 	touched_.clear();
+	if (offset_.size() < map.size()) offset_.resize(map.size(), 0);
 	for (size_t seg = 0; seg < scanVectors.size(); ++seg)
 	{
 		const Segment& v = scanVectors[seg];
@@ -37,19 +37,21 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::v
 			const WipePart cap = limit ? limit(seg, slot) : WipePart::Hit;
 			if (cap == WipePart::Outside) continue;
 			const GridVector& m = map[slot];
-			auto [it, fresh] = offset_.try_emplace(slot, marks_.size());
-			if (fresh)
+			size_t& off = offset_[slot];
+			if (off == 0)
 			{
+				off = marks_.size() + 1;
 				marks_.resize(marks_.size() + m.cells().size());
 				touched_.push_back(slot);
 			}
-			Mark* mk = marks_.data() + it->second;
+			Mark* mk = marks_.data() + (off - 1);
 			const int cols = m.cols();
-			tri.forEachCell(m, [&](int r, int c, WipePart part) {
+			const mrpt::math::TPoint2D axis = m.direction();
+			const double res = m.resolution();
+			tri.forEachCellAt(m, [&](int r, int c, WipePart part, const mrpt::math::TPoint2D& centre) {
 				if (part > cap) return;
 				Mark& x = mk[size_t(r) * cols + c];
-				const float w =
-					beams_ ? float(tri.weight(m.cellCentre(r, c), m.direction(), m.resolution(), part)) : 1.f;
+				const float w = beams_ ? float(tri.weight(centre, axis, res, part)) : 1.f;
 				float& slotW = part == WipePart::Hit ? x.hit : x.pass;
 				slotW = beams_ ? slotW + w : 1.f;  // per beam: add; per cell: once
 			});
@@ -58,7 +60,8 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::v
 	for (uint32_t slot : touched_)
 	{
 		auto& cells = map[slot].cells();
-		const Mark* mk = marks_.data() + offset_[slot];
+		const Mark* mk = marks_.data() + (offset_[slot] - 1);
+		offset_[slot] = 0;
 		bool any = false;
 		for (size_t i = 0; i < cells.size(); ++i)
 		{

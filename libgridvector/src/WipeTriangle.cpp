@@ -43,7 +43,7 @@ double WipeTriangle::beamDensity(const TPoint2D& o, const TPoint2D& s, const TPo
 double WipeTriangle::weight(const TPoint2D& p, const TPoint2D& axis, double res, WipePart part) const
 {
 	if (beams_ <= 0) return 1.0;
-	const double rx = p.x - o_.x, ry = p.y - o_.y, r = std::hypot(rx, ry);
+	const double rx = p.x - o_.x, ry = p.y - o_.y, r = std::sqrt(rx * rx + ry * ry);
 	if (r < 1e-9) return maxWeight_;
 	const double ux = rx / r, uy = ry / r;
 	double across;
@@ -116,9 +116,10 @@ bool WipeTriangle::rowSpan(const GridVector& m, const TPoint2D& q, const TPoint2
 size_t WipeTriangle::apply(GridVector& m) const
 {
 	size_t n = 0;
-	forEachCell(m, [&](int r, int c, WipePart part) {
+	const mrpt::math::TPoint2D axis = m.direction();
+	forEachCellAt(m, [&](int r, int c, WipePart part, const TPoint2D& centre) {
 		GridCell& cell = m.cell(r, c);
-		const float w = float(weight(m.cellCentre(r, c), m.direction(), m.resolution(), part));
+		const float w = float(weight(centre, axis, m.resolution(), part));
 		if (part == WipePart::Hit) cell.n_occupy += w;
 		cell.n_visit += w;
 		++n;

@@ -9,7 +9,6 @@
 
 #include <cstdint>
 #include <functional>
-#include <unordered_map>
 #include <vector>
 
 namespace gridvector
@@ -77,7 +76,7 @@ class ScanWipe
 	bool beams_;
 	std::vector<uint32_t> candidates_;
 	std::vector<Mark> marks_;  //!< per cell of the touched vectors, back to back
-	std::unordered_map<uint32_t, size_t> offset_;  //!< slot -> first mark
+	std::vector<size_t> offset_;  //!< slot -> first mark + 1 (0: not touched by this scan)
 	std::vector<uint32_t> touched_;
 };
 

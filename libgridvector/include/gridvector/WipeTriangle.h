@@ -69,7 +69,13 @@ class WipeTriangle
 	 * whose centres fall in it are visited; f(row, col, part) is called for
 	 * every cell of part b or c. Cost O(rows + cells touched). */
 	template <class F>
-	void forEachCell(const GridVector& m, F&& f) const;
+	void forEachCell(const GridVector& m, F&& f) const
+	{
+		forEachCellAt(m, [&](int r, int c, WipePart p, const mrpt::math::TPoint2D&) { f(r, c, p); });
+	}
+	/** As forEachCell, with the cell's centre (global): f(row, col, part, centre). */
+	template <class F>
+	void forEachCellAt(const GridVector& m, F&& f) const;
 
 	/** Eq. 8 for this triangle on one map vector (weights as weight()); returns cells updated. */
 	size_t apply(GridVector& m) const;
@@ -91,7 +97,7 @@ class WipeTriangle
 };
 
 template <class F>
-void WipeTriangle::forEachCell(const GridVector& m, F&& f) const
+void WipeTriangle::forEachCellAt(const GridVector& m, F&& f) const
 {
 	if (degenerate_ || m.cols() < 1) return;
 	const mrpt::math::TPoint2D d = m.direction(), n = m.leftNormal();
@@ -105,11 +111,12 @@ void WipeTriangle::forEachCell(const GridVector& m, F&& f) const
 		for (int k = k0; k <= k1; ++k)
 		{
 			const double u = (k + 0.5) * res;
+			const mrpt::math::TPoint2D centre(q.x + u * d.x, q.y + u * d.y);
 			double a, b;
-			coords(q.x + u * d.x, q.y + u * d.y, a, b);
+			coords(centre.x, centre.y, a, b);
 			const double s = a + b;
 			if (s > sMax_) continue;  // guards the interval's rounding
-			f(r, k, s < sHit_ ? WipePart::Visited : WipePart::Hit);
+			f(r, k, s < sHit_ ? WipePart::Visited : WipePart::Hit, centre);
 		}
 	}
 }

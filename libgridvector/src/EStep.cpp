@@ -53,7 +53,10 @@ std::vector<double> EStep::profile(const GridVector& v) const
 			const GridCell& cell = v.cell(r, c);
 			if (cell.n_visit < opts_.minVisits) continue;
 			seen = true;
-			prof[size_t(c)] = std::max(prof[size_t(c)], cell.occupancy());
+			// free observations (beams through the cell) weigh free_weight times an occupied one
+			const double occ = cell.n_occupy, freeObs = std::max(0.0, double(cell.n_visit) - occ);
+			const double p = occ / std::max(1e-9, occ + opts_.freeWeight * freeObs);
+			prof[size_t(c)] = std::max(prof[size_t(c)], p);
 		}
 		if (!seen) prof[size_t(c)] = 1.0;
 	}

@@ -90,6 +90,7 @@ struct EStepOptions
 	double minPieceLength = 0.30;  //!< smallest sub-vector kept by the split-and-merge [m]
 	bool usePeakRow = true;  //!< profile = largest cell probability across the width (false: the mean)
 	double minVisits = 3.0;  //!< peak-row profile: cells observed fewer times than this do not count
+	double freeWeight = 1.0;  //!< peak-row profile: weight of a free observation against an occupied one (1: n_occupy/n_visit)
 	double hysteresis = 0.1;  //!< a column changes state only when it crosses the threshold by this
 	double rerunTranslation = 0.05;  //!< the E-step is re-run only if a pose moved more than this [m]
 	double rerunRotationDeg = 1.0;  //!< ... or turned more than this [deg]
@@ -100,6 +101,7 @@ struct EStepOptions
 		v("static_threshold", staticThreshold, "Occupancy-profile threshold: above is static, below dynamic");
 		v("min_piece_length", minPieceLength, "Smallest static/dynamic sub-vector; shorter pieces merge into neighbours [m]");
 		v("use_peak_row", usePeakRow, "Profile value of a column: the largest cell probability across the width (true) or the mean across the width (false)");
+		v("free_weight", freeWeight, "Peak-row profile: a beam through a cell weighs this many hits (1: the counting model's n_occupy/n_visit; >1: what has been seen through is dynamic sooner)");
 		v("min_visits", minVisits, "Peak-row profile: cells with fewer observations (n_visit) do not count; a column without any stays static");
 		v("hysteresis", hysteresis, "From the second E-step on, a column changes state only when its profile crosses the threshold by this margin");
 		v("rerun_translation", rerunTranslation, "The E-step is re-evaluated only if some pose moved more than this since the last one [m]");

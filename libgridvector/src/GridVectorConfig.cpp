@@ -123,6 +123,18 @@ void GridVectorConfig::validate() const
 	require(map.indexCellSize > 0, "map.index_cell_size must be > 0");
 	require(estep.staticThreshold > 0 && estep.staticThreshold < 1, "estep.static_threshold must be in (0,1)");
 	require(mstep.maxIterations >= 1, "mstep.max_iterations must be >= 1");
+	require(mstep.sequentialWindow >= 1, "mstep.sequential_window must be >= 1");
+	require(mstep.keyframeDistance >= 0 && mstep.keyframeRotationDeg >= 0, "mstep.keyframe_* must be >= 0");
+	require(estep.minPieceLength >= 0 && estep.hysteresis >= 0 && estep.freeWeight > 0,
+			"estep: min_piece_length and hysteresis must be >= 0, free_weight > 0");
+	require(matcher.maxIterations >= 1 && matcher.minMatches >= 1, "matcher.max_iterations and min_matches must be >= 1");
+	require(matcher.gateShrink > 0 && matcher.gateShrink <= 1, "matcher.gate_shrink must be in (0,1]");
+	require(matcher.gateRhoFinal > 0 && matcher.gatePsiFinalDeg > 0 && matcher.sigmaFloor > 0,
+			"matcher gates and sigma_floor must be > 0");
+	require(posegraph.robustKernelWidth > 0 && posegraph.maxIterations >= 1,
+			"posegraph.robust_kernel_width must be > 0, max_iterations >= 1");
+	require(doors.minDoorLength > 0 && doors.maxDoorLength >= doors.minDoorLength,
+			"doors: need 0 < min_door_length <= max_door_length");
 }
 
 }  // namespace gridvector

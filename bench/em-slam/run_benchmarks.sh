@@ -45,9 +45,8 @@ sim_row() {
   "$BIN/gv-em-slam" --input "$d/sim/sim.log" --out "$d/em" --quiet
   t1=$(date +%s.%N)
   r=$("$BIN/gv-eval" traj "$d/em/trajectory.txt" "$d/sim/truth_trajectory.txt")
-  python3 "$HERE/align_vectors.py" "$d/em/vectors.txt" "$d/em/trajectory.txt" "$d/sim/truth_trajectory.txt" \
-    "$d/vectors_truth_frame.txt" "$d/em/doors.txt" "$d/doors_truth_frame.txt"
-  "$BIN/gv-eval" map "$d/vectors_truth_frame.txt" "$d/sim" --doors "$d/doors_truth_frame.txt" > "$d/map_eval.txt"
+  "$BIN/gv-eval" map "$d/em/vectors.txt" "$d/sim" --trajectory "$d/em/trajectory.txt" \
+    --doors "$d/em/doors.txt" > "$d/map_eval.txt"
   m() { sed -n "s/^$1: *\([0-9.]*\).*/\1/p" "$d/map_eval.txt" | head -1; }
   local prec rec ghost det door
   prec=$(sed -n 's/^static vectors:.*precision \([0-9.]*\).*/\1/p' "$d/map_eval.txt")

@@ -337,8 +337,6 @@ void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh
 	}
 }
 
-void MStep::loopSearch(const Scans&, const Poses&, MStepReport&) {}
-
 void MStep::optimise(Poses& poses, MStepReport& rep)
 {
 	graph_.setNodes(poses);
@@ -393,7 +391,6 @@ MStepReport MStep::run(const Scans& scans, Poses& poses)
 		addSequential(scans, poses, rep);
 	}
 	verifyOverlaps(poses, addOverlaps(scans, poses, rep), rep);
-	if (cfg_.mstep.loopSearch) loopSearch(scans, poses, rep);
 	rep.registrationSeconds = secondsSince(t0);
 	if (rep.added + rep.removed + rep.recomputed > 0) optimise(poses, rep);  // else: still optimal
 	rep.constraints = constraints_.size();

@@ -186,9 +186,6 @@ struct MStepOptions
 	int overlapRunGap = 10;  //!< candidate poses further apart than this in time belong to different passes
 	double consistencyChi2 = 16.0;  //!< gate of the pairwise loop-closure consistency test
 	double recheckGateFactor = 1.5;  //!< gates x this when testing whether an edge's correspondences changed
-	bool loopSearch = true;  //!< search loop closures in a window growing with pose uncertainty
-	double loopSearchSigmas = 3.0;  //!< window half-size in standard deviations of the relative pose
-	double loopSearchMaxRadius = 8.0;  //!< the window never exceeds this [m]
 	double minChangedShare = 0.0;  //!< converged when the share of changed constraints is at most this
 
 	template <class V>
@@ -204,9 +201,6 @@ struct MStepOptions
 		v("overlap_run_gap", overlapRunGap, "Candidate poses further apart than this many scans belong to different passes");
 		v("consistency_chi2", consistencyChi2, "Two overlap edges near each other support each other when their cycle closes within this chi2");
 		v("recheck_gate_factor", recheckGateFactor, "Gates are widened by this when testing whether an edge's correspondences changed (Eq. 24-25)");
-		v("loop_search", loopSearch, "Search loop closures within a window growing with the pose uncertainty");
-		v("loop_search_sigmas", loopSearchSigmas, "Loop-search window half-size in standard deviations");
-		v("loop_search_max_radius", loopSearchMaxRadius, "Largest loop-search window [m]");
 		v("min_changed_share", minChangedShare, "EM has converged when at most this share of constraints changed");
 	}
 };

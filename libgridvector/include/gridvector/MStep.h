@@ -88,7 +88,6 @@ class MStep
 	/** Returns the keys of the edges it added. */
 	std::vector<EdgeKey> addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep);
 	void verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh, MStepReport& rep);
-	void loopSearch(const Scans& scans, const Poses& poses, MStepReport& rep);
 	void optimise(Poses& poses, MStepReport& rep);
 
 	/** Eq. 24-25: did this edge's vector correspondences change? */

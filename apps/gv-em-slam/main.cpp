@@ -9,6 +9,7 @@
 // (x1 y1 x2 y2 p_static static|dynamic), vectors.svg, occupancy.png/.pgm/.yaml,
 // doors.txt and report.json (per-iteration figures, memory as Table 1, timings).
 #include "EmOutputs.h"
+#include "InitialTrajectory.h"
 #include "ProgressLine.h"
 
 #include <gridvector/DoorDetector.h>
@@ -97,6 +98,7 @@ int run(const io::ArgParser& args)
 	}
 	progress.clear();
 	fig.extractSeconds = since(t1);
+	if (args.has("init")) odo = app::initialTrajectory(log, odo, args.get("init"));
 
 	// Sec. 4: EM
 	t1 = Clock::now();
@@ -160,6 +162,7 @@ int main(int argc, char** argv)
 	args.option("input", "LOG", "CARMEN log (.log/.clf[.gz]) or MRPT rawlog");
 	args.option("out", "DIR", "output directory (created if missing)");
 	args.option("config", "FILE.ini", "parameters (see gv-config; default: built-in EM-SLAM defaults)");
+	args.option("init", "TRAJ", "start from this 't x y theta' trajectory (e.g. gv-graphslam's) instead of raw odometry");
 	args.option("max-iterations", "N", "EM iterations at most (overrides [gridvector_mstep] max_iterations)");
 	args.flag("quiet", "no progress or summary output");
 	try

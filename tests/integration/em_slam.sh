@@ -15,6 +15,15 @@ awk '!/^#/ && $6 != "static" && $6 != "dynamic" { bad = 1 } END { exit bad }' "$
 ate=$("$GV_BIN/gv-eval" traj "$tmp/out/trajectory.txt" "$tmp/sim/truth_trajectory.txt" | sed -n 's/.*ate_rmse_m=\([0-9.]*\).*/\1/p')
 echo "ATE $ate m"
 awk -v a="$ate" 'BEGIN { exit !(a <= 0.10) }' || { echo "ATE $ate m > 0.10 m"; exit 1; }
+# --init: start from a prior trajectory (here the truth, e.g. gv-graphslam's in practice)
+"$GV_BIN/gv-em-slam" --input "$tmp/sim/sim.log" --out "$tmp/init" --init "$tmp/sim/truth_trajectory.txt" --quiet
+ate2=$("$GV_BIN/gv-eval" traj "$tmp/init/trajectory.txt" "$tmp/sim/truth_trajectory.txt" | sed -n 's/.*ate_rmse_m=\([0-9.]*\).*/\1/p')
+echo "ATE from --init truth: $ate2 m"
+awk -v a="$ate2" 'BEGIN { exit !(a <= 0.10) }' || { echo "ATE with --init $ate2 m > 0.10 m"; exit 1; }
+printf '# t x y theta\n1.0 0 0 0\n' > "$tmp/far.txt"
+if "$GV_BIN/gv-em-slam" --input "$tmp/sim/sim.log" --out "$tmp/bad" --init "$tmp/far.txt" 2> "$tmp/err.txt"; then
+  echo "--init without matching timestamps accepted"; exit 1; fi
+grep -q "far.txt: no pose within" "$tmp/err.txt" || { cat "$tmp/err.txt"; exit 1; }
 # bad input: one line "file: problem", non-zero exit, no crash
 printf 'FLASER 3 1.0 oops\n' > "$tmp/bad.log"
 if "$GV_BIN/gv-em-slam" --input "$tmp/bad.log" --out "$tmp/bad" 2> "$tmp/err.txt"; then echo "bad log accepted"; exit 1; fi

@@ -13,7 +13,7 @@ mkdir -p "$OUT"
 "$BUILD/bin/gv-sim" --out "$OUT/sim"
 "$BUILD/bin/gv-em-slam" --input "$OUT/sim/sim.log" --out "$OUT/map"
 "$BUILD/bin/gv-eval" traj "$OUT/map/trajectory.txt" "$OUT/sim/truth_trajectory.txt" | tee "$OUT/eval_trajectory.txt"
-"$BUILD/bin/gv-eval" map "$OUT/map/vectors.txt" "$OUT/sim" | tee "$OUT/eval_map.txt"
+"$BUILD/bin/gv-eval" map "$OUT/map/vectors.txt" "$OUT/sim" --trajectory "$OUT/map/trajectory.txt" --doors "$OUT/map/doors.txt" | tee "$OUT/eval_map.txt"
 echo
 echo "Outputs in $(cd "$OUT" && pwd):"
 echo "  sim/  simulated CARMEN log + ground truth"

@@ -4,6 +4,7 @@
 //   gv-graphslam --2d -i INI -r RAWLOG [-g GT] -n CGridVectorNRD -e CGridVectorERD -o CLevMarqGSO
 //   gv-graphslam --list-regs
 #include <gridvector/ErrorText.h>
+#include <gridvector/MapExport.h>
 #include <gridvector/graphslam/DeciderRegistry.h>
 #include <gridvector/graphslam/RunRecorder.h>
 #include <gridvector/io/ArgParser.h>
@@ -197,10 +198,8 @@ void writeGridVectorMap(const std::string& dir, const mrpt::maps::CGridVectorMap
 		a << map;
 	}
 	gv.commit();
-	const std::string tmp = dir + "/.gv-graphslam-tmp";
-	map.saveMetricMapRepresentationToFile(tmp);  // writes <tmp>_vectors.txt
-	if (std::rename((tmp + "_vectors.txt").c_str(), (dir + "/vectors.txt").c_str()) != 0)
-		throw std::runtime_error(dir + "/vectors.txt: cannot write");
+	MapExport::writeVectorsText(map.vectors(), dir + "/vectors.txt");
+	MapExport::writeSvg(map.vectors(), dir + "/vectors.svg");
 }
 
 /** The engine's own outputs, as MRPT's graphslam-engine app writes them. */

@@ -22,13 +22,19 @@ void writeConfig(mrpt::serialization::CArchive& out, const gridvector::GridVecto
 	});
 }
 
+uint32_t countKeys(const gridvector::GridVectorConfig& cfg)
+{
+	auto c = cfg;
+	uint32_t n = 0;
+	c.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto&, const char*) { ++n; }); });
+	return n;
+}
 gridvector::GridVectorConfig readConfig(mrpt::serialization::CArchive& in)
 {
 	gridvector::GridVectorConfig c;
 	uint32_t nkeys = 0;
 	in >> nkeys;
-	uint32_t expected = 0;
-	c.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto&, const char*) { ++expected; }); });
+	const uint32_t expected = countKeys(c);
 	if (nkeys != expected)
 		throw std::runtime_error("CGridVectorMap: stored config has " + std::to_string(nkeys) +
 								 " keys, this version expects " + std::to_string(expected));
@@ -38,13 +44,6 @@ gridvector::GridVectorConfig readConfig(mrpt::serialization::CArchive& in)
 	return c;
 }
 
-uint32_t countKeys(const gridvector::GridVectorConfig& cfg)
-{
-	auto c = cfg;
-	uint32_t n = 0;
-	c.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto&, const char*) { ++n; }); });
-	return n;
-}
 }  // namespace
 
 uint8_t CGridVectorMap::serializeGetVersion() const { return 0; }

@@ -1,5 +1,6 @@
 // CGridVectorMap: observation likelihood as a likelihood field over the vectors,
 // each weighted by the occupancy (n_occupy / n_visit) of the cell the point falls in.
+#include <gridvector/VectorIndex.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
@@ -49,15 +50,13 @@ double CGridVectorMap::internal_computeObservationLikelihood(
 		xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
 		ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
 	}
-	// Only vectors whose box comes within maxCorrDistance of the scan's box.
+	// Only vectors near the scan, through the map's spatial index: O(nearby vectors).
 	const double m = likelihoodOptions.maxCorrDistance;
+	std::vector<uint32_t> slots;
+	map_.index().query(gridvector::Box2D{xmin, ymin, xmax, ymax}.expanded(m), slots);
 	std::vector<const GridVector*> near;
-	for (const auto& v : map_.vectors())
-	{
-		const double vx0 = std::min(v.start().x, v.end().x), vx1 = std::max(v.start().x, v.end().x);
-		const double vy0 = std::min(v.start().y, v.end().y), vy1 = std::max(v.start().y, v.end().y);
-		if (vx1 + m >= xmin && vx0 - m <= xmax && vy1 + m >= ymin && vy0 - m <= ymax) near.push_back(&v);
-	}
+	near.reserve(slots.size());
+	for (uint32_t s : slots) near.push_back(&map_.vectors()[s]);
 	const double inv2s2 = 1.0 / (2 * likelihoodOptions.sigma * likelihoodOptions.sigma);
 	const double zr = likelihoodOptions.zRandom, zh = 1.0 - zr;
 	double logLik = 0;

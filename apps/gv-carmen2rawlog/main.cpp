@@ -4,6 +4,9 @@
 #include <gridvector/io/LogReader.h>
 #include <gridvector/io/RawlogWriter.h>
 
+#include "NoReturnRange.h"
+
+#include <cstdio>
 #include <iostream>
 
 using namespace gridvector::io;
@@ -16,6 +19,10 @@ int main(int argc, char** argv)
 				"sf: actions + sensory frames (for rbpf-slam)");
 	args.flag("no-compress", "write an uncompressed rawlog (default: gzip, as MRPT does)");
 	args.flag("front-only", "drop rear-laser scans (RLASER, RAWLASER2)");
+	args.option("max-range", "M|auto",
+				"readings at or beyond M metres are 'no return' (invalid) and every scan's maxRange is M; "
+				"auto: the largest reading when at least 1 % of the scans contain it exactly (a scanner "
+				"that saturates below the log's declared maximum), else the declared maximum (default: declared)");
 	args.flag("quiet", "no progress and no summary");
 	try
 	{
@@ -28,8 +35,20 @@ int main(int argc, char** argv)
 		ReadOptions ro;
 		ro.quiet = quiet;
 		ro.includeRearLaser = !args.has("front-only");
-		const LogData log = readLog(args.positional()[0], ro);
+		LogData log = readLog(args.positional()[0], ro);
 		if (log.scans.empty()) throw std::runtime_error(args.positional()[0] + ": no laser scans to convert");
+		std::string rangeNote;
+		if (args.has("max-range"))
+		{
+			const bool autoRange = args.get("max-range") == "auto";
+			const auto range = autoRange ? gridvector::carmen2rawlog::saturationRange(log)
+										 : std::optional<double>(args.getDouble("max-range", 0));
+			if (!autoRange && !(*range > 0)) args.fail("--max-range must be a positive number or 'auto'");
+			if (range) gridvector::carmen2rawlog::applyMaxRange(log, *range);
+			char buf[64];
+			std::snprintf(buf, sizeof buf, "; max range set to %.2f m", range.value_or(0));
+			rangeNote = range ? buf : "; declared max range kept";
+		}
 
 		RawlogWriteOptions wo;
 		wo.format = format == "sf" ? RawlogFormat::SensoryFrames : RawlogFormat::Observations;
@@ -39,7 +58,7 @@ int main(int argc, char** argv)
 		{
 			size_t odo = 0;
 			for (const auto& s : log.scans) odo += s.hasOdometry;
-			std::cout << log.summary << "\n"
+			std::cout << log.summary << rangeNote << "\n"
 					  << "wrote " << args.positional()[1] << ": " << log.scans.size() << " scans, "
 					  << (format == "sf" ? std::to_string(log.scans.size()) + " robot-movement actions"
 										 : std::to_string(odo) + " odometry observations")

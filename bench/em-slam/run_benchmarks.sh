@@ -1,40 +1,106 @@
 #!/usr/bin/env bash
 # EM-SLAM benchmarks (doc/benchmarks.md, section "EM-SLAM (gv-em-slam)").
 #
-#   bench/em-slam/run_benchmarks.sh BUILD_BIN_DIR OUT_DIR [SEEDS...]
+#   bench/em-slam/run_benchmarks.sh BUILD_BIN_DIR OUT_DIR [SEEDS...] [options]
+#     --seeds "1 2 3"       mkbench seeds (default 1; positional SEEDS do the same)
+#     --logs "intel aces"   benchmark logs by name (default: every ../shared/data/*-corrected.log.gz)
+#     --systems LIST        comma-separated systems to run on the real logs:
+#                           gv,icp-classic,icp-grid,rbpf (default: all)
+#     --reuse               keep MRPT peer results already in OUT_DIR (per log, seed, system)
+#                           instead of re-running them; gv-em-slam always runs when selected
+#     --no-sim / --no-real  skip the simulated worlds / the real logs
+#     --core N              the core every timed process is pinned to (default 0)
 #
-# Real logs: every ../shared/data/*-corrected.log.gz made into a benchmark with
-# mkbench.py (default seed 1), mapped by gv-em-slam, scored by evaltraj.py.
+# Real logs: every log made into a benchmark with mkbench.py, mapped by gv-em-slam and by
+# MRPT's icp-slam (icp_classic_tuned.ini, icp_grid_tuned.ini) and rbpf-slam
+# (rbpf_os_tuned.ini; filtered estimate and best particle) on rawlogs converted with
+# gv-carmen2rawlog (peer_run.sh), each process pinned to one core, all scored by
+# evaltraj.py. Prints the gv-em-slam table, then one table per seed comparing the systems
+# (peer_table.py; systems not run this time are taken from OUT_DIR/results if there).
 # Simulated worlds: gv-sim (default world, seeds 1-3; the other worlds, seed 1),
 # scored with gv-eval (trajectory, and the map after aligning it to the truth frame).
-# Prints markdown table rows; each run's outputs stay in OUT_DIR.
+# Prints markdown tables; each run's outputs stay in OUT_DIR.
 set -euo pipefail
 BIN=$1; OUT=$2; shift 2
-SEEDS=${*:-1}
+SEEDS="" LOGS="" SYSTEMS="gv,icp-classic,icp-grid,rbpf" REUSE=0 SIM=1 REAL=1 CORE=0
+while [ $# -gt 0 ]; do
+  case $1 in
+    --seeds) SEEDS=$2; shift 2 ;;
+    --logs) LOGS=$2; shift 2 ;;
+    --systems) SYSTEMS=$2; shift 2 ;;
+    --reuse) REUSE=1; shift ;;
+    --no-sim) SIM=0; shift ;;
+    --no-real) REAL=0; shift ;;
+    --core) CORE=$2; shift 2 ;;
+    -*) echo "unknown option $1" >&2; exit 2 ;;
+    *) SEEDS="$SEEDS $1"; shift ;;
+  esac
+done
+SEEDS=${SEEDS:-1}
 HERE=$(cd "$(dirname "$0")" && pwd)
 SHARED=${GV_SHARED_DIR:-$HERE/../../../shared}
+export GV_SHARED_DIR=$SHARED
+[ -n "$LOGS" ] || LOGS=$(for gz in "$SHARED"/data/*-corrected.log.gz; do basename "$gz" -corrected.log.gz; done)
+for s in ${SYSTEMS//,/ }; do
+  case $s in gv|icp-classic|icp-grid|rbpf) ;; *) echo "unknown system '$s'" >&2; exit 2 ;; esac
+done
+selected() { [[ ",$SYSTEMS," == *",$1,"* ]]; }
 mkdir -p "$OUT"
 secs() { python3 -c "import sys; print('%.1f' % (float(sys.argv[2]) - float(sys.argv[1])))" "$1" "$2"; }
 field() { sed -n "s/.*$1=\([0-9.na]*\).*/\1/p"; }
+note() { echo "[$(date -u +%H:%M:%S)] $*" >&2; }
 
-echo "| log | seed | scans | iterations | converged | time [s] | ATE [m] | rel. local t [m] | rel. loop t [m] | rel. loop r [deg] |"
-echo "|---|---|---|---|---|---|---|---|---|---|"
-for seed in $SEEDS; do
-  for gz in "$SHARED"/data/*-corrected.log.gz; do
-    name=$(basename "$gz" -corrected.log.gz)
-    b="$OUT/bench_${name}_s$seed"
-    python3 "$SHARED/bench/mkbench.py" "$gz" "$b" --seed "$seed" > /dev/null
-    t0=$(date +%s.%N)
-    "$BIN/gv-em-slam" --input "$b.log" --out "$OUT/${name}_s$seed" --quiet
-    t1=$(date +%s.%N)
-    r=$(python3 "$SHARED/bench/evaltraj.py" "$OUT/${name}_s$seed/trajectory.txt" "$b.ref.txt")
-    rep="$OUT/${name}_s$seed/report.json"
-    it=$(sed -n 's/.*"iterations_run": \([0-9]*\).*/\1/p' "$rep")
-    conv=$(sed -n 's/.*"converged": \([a-z]*\).*/\1/p' "$rep")
-    echo "| $name | $seed | $(echo "$r" | field n) | $it | $conv | $(secs "$t0" "$t1") | $(echo "$r" | field ate_rmse_m) | $(echo "$r" | field rel_local_t_m) | $(echo "$r" | field rel_loop_t_m) | $(echo "$r" | field rel_loop_r_deg) |"
+# gv-em-slam on one benchmark log: a row of the gv-em-slam table, and its result file.
+gv_row() {
+  local name=$1 seed=$2 b=$3 res=$4 d="$OUT/${1}_s$2" t0 t1 r rep it conv
+  t0=$(date +%s.%N)
+  if ! taskset -c "$CORE" "$BIN/gv-em-slam" --input "$b.log" --out "$d" --quiet 2> "$d.err"; then
+    echo "failed: gv-em-slam: $(tail -1 "$d.err")" > "$res/gv.txt"
+    echo "| $name | $seed | failed: $(tail -1 "$d.err") |"; return
+  fi
+  t1=$(date +%s.%N)
+  if ! r=$(python3 "$SHARED/bench/evaltraj.py" "$d/trajectory.txt" "$b.ref.txt" 2>&1); then
+    echo "failed: evaltraj: $(echo "$r" | tail -1)" > "$res/gv.txt"
+    echo "| $name | $seed | failed: evaltraj: $(echo "$r" | tail -1) |"; return
+  fi
+  echo "$r time_s=$(secs "$t0" "$t1") scans=$(wc -l < "$b.ref.txt")" > "$res/gv.txt"
+  rep="$d/report.json"
+  it=$(sed -n 's/.*"iterations_run": \([0-9]*\).*/\1/p' "$rep")
+  conv=$(sed -n 's/.*"converged": \([a-z]*\).*/\1/p' "$rep")
+  echo "| $name | $seed | $(echo "$r" | field n) | $it | $conv | $(secs "$t0" "$t1") | $(echo "$r" | field ate_rmse_m) | $(echo "$r" | field rel_local_t_m) | $(echo "$r" | field rel_loop_t_m) | $(echo "$r" | field rel_loop_r_deg) |"
+}
+
+# An MRPT peer, unless --reuse and its results are already there.
+peer() {
+  local sys=$1 name=$2 seed=$3 b=$4 res=$5 cols=$1 c have=1
+  [ "$sys" = rbpf ] && cols="rbpf-filtered rbpf-best"
+  for c in $cols; do [ -s "$res/$c.txt" ] || have=0; done
+  if [ $REUSE -eq 1 ] && [ $have -eq 1 ]; then note "$name s$seed $sys: reused"; return; fi
+  note "$name s$seed $sys ..."
+  PEER_CORE=$CORE bash "$HERE/peer_run.sh" "$sys" "$BIN" "$b" "$OUT/peers/${name}_s$seed/$sys" "$res"
+  note "$name s$seed $sys: $(head -c 160 "$res/${cols%% *}.txt")"
+}
+
+if [ $REAL -eq 1 ]; then
+  if selected gv; then
+    echo "| log | seed | scans | iterations | converged | time [s] | ATE [m] | rel. local t [m] | rel. loop t [m] | rel. loop r [deg] |"
+    echo "|---|---|---|---|---|---|---|---|---|---|"
+  fi
+  for seed in $SEEDS; do
+    for name in $LOGS; do
+      b="$OUT/bench_${name}_s$seed" res="$OUT/results/${name}_s$seed"
+      mkdir -p "$res"
+      python3 "$SHARED/bench/mkbench.py" "$SHARED/data/$name-corrected.log.gz" "$b" --seed "$seed" > /dev/null
+      if selected gv; then note "$name s$seed gv-em-slam ..."; gv_row "$name" "$seed" "$b" "$res"; fi
+      for sys in icp-classic icp-grid rbpf; do
+        if selected "$sys"; then peer "$sys" "$name" "$seed" "$b" "$res"; fi
+      done
+    done
   done
-done
+  python3 "$HERE/peer_table.py" "$OUT/results" "$LOGS" "$SEEDS"
+fi
 
+[ $SIM -eq 1 ] || exit 0
 echo
 echo "| world | seed | scans | iterations | time [s] | ATE [m] | static precision | static recall | ghost share | dynamic detection | door recall |"
 echo "|---|---|---|---|---|---|---|---|---|---|---|"

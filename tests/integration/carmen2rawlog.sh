@@ -25,6 +25,26 @@ else
   echo "rawlog-edit not installed: MRPT cross-check skipped"
 fi
 
+# --max-range auto: a scanner saturating below the declared maximum (ACES: exactly 50 m under
+# mkbench's declared 81 m) gets that as its no-return range; other logs keep the declared one.
+python3 "$GV_SHARED_DIR/bench/mkbench.py" "$DATA/aces-corrected.log.gz" "$T/aces" --seed 1 > /dev/null
+"$BIN/gv-carmen2rawlog" "$T/aces.log" "$T/aces.rawlog" --max-range auto > "$T/out.txt"
+grep -q "max range 81.00 m; 440 ODOM, 3 PARAM; max range set to 50.00 m" "$T/out.txt" || fail "aces auto: $(head -1 "$T/out.txt")"
+"$BIN/gv-carmen2rawlog" "$DATA/intel-corrected.log.gz" "$T/i.rawlog" --max-range auto > "$T/out.txt"
+grep -q "; declared max range kept" "$T/out.txt" || fail "intel auto: $(head -1 "$T/out.txt")"
+if command -v rawlog-edit >/dev/null; then
+  # the 620 readings of 50 m are no longer valid points: MRPT's own export shows the
+  # validity (rows: time, 180 ranges, 180 validity flags)
+  (cd "$T" && rawlog-edit --export-2d-scans-txt -i aces.rawlog > /dev/null 2>&1) || fail "rawlog-edit export"
+  [ -s "$T/aces_FLASER.txt" ] || fail "no exported scans: $(ls "$T")"
+  n50=$(awk 'NR > 1 { for (i = 2; i <= 181; i++) if ($i + 0 >= 49.999 && $(i + 180) == 1) c++ } END { print c + 0 }' "$T/aces_FLASER.txt")
+  [ "$n50" -eq 0 ] || fail "$n50 readings of 50 m still valid"
+fi
+set +e
+"$BIN/gv-carmen2rawlog" "$T/aces.log" "$T/x.rawlog" --max-range -3 2> "$T/err.txt"; rc=$?
+set -e
+[ $rc -eq 2 ] && grep -q "max-range must be a positive number or 'auto'" "$T/err.txt" || fail "bad --max-range: exit $rc, $(cat "$T/err.txt")"
+
 # errors: one line on stderr, exit 1 for bad input, 2 for bad usage, no output file left behind
 printf 'FLASER 3 1.0 nan 2.0 0 0 0 0 0 0 5.0 h 5.0\n' > "$T/bad.log"
 set +e

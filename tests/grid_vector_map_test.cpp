@@ -1,3 +1,4 @@
+#include <gridvector/OccupancyConversion.h>
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CMemoryStream.h>
@@ -155,6 +156,30 @@ TEST(CGridVectorMap, LikelihoodPeaksAtTheTruePose)
 	EXPECT_TRUE(m.canComputeObservationLikelihood(obs));
 }
 
+TEST(CGridVectorMap, OccupancyGridIsEq6AtEveryCellCentre)
+{
+	const CGridVectorMap m = mapOfRoom();
+	const auto g = m.getAsOccupancyGrid();
+	ASSERT_NEAR(g.getResolution(), m.config().occupancy.resolution, 1e-6);
+	size_t known = 0, occupied = 0;
+	for (unsigned iy = 0; iy < g.getSizeY(); ++iy)
+		for (unsigned ix = 0; ix < g.getSizeX(); ++ix)
+		{
+			const mrpt::math::TPoint2D c(g.idx2x(ix), g.idx2y(iy));
+			const auto [o, v] = gridvector::OccupancyConversion::countsAt(m.vectors(), c);
+			if (v <= 0)
+			{
+				EXPECT_EQ(g.getCell(ix, iy), 0.5f);
+				continue;
+			}
+			++known;
+			occupied += o / v > 0.5;
+			EXPECT_NEAR(1.0 - g.getCell(ix, iy), o / v, 0.02);  // MRPT stores p(free) as 8-bit log-odds
+		}
+	EXPECT_GT(known, 100u);
+	EXPECT_GT(occupied, 20u);
+}
+
 TEST(CGridVectorMap, TextRepresentationAndVisualisation)
 {
 	CGridVectorMap m = mapOfRoom();
@@ -172,6 +197,9 @@ TEST(CGridVectorMap, TextRepresentationAndVisualisation)
 	EXPECT_NE(svgText.find("<svg"), std::string::npos);
 	EXPECT_NE(svgText.find("<line"), std::string::npos);
 	EXPECT_NE(m.asString().find("grid vectors"), std::string::npos);
+	mrpt::maps::COccupancyGridMap2D png;
+	EXPECT_TRUE(png.loadFromBitmapFile(prefix + "_occupancy.png", float(m.config().occupancy.resolution)));
+	EXPECT_GT(png.getSizeX(), 10u);
 	mrpt::opengl::CSetOfObjects o;
 	m.getVisualizationInto(o);
 	EXPECT_GT(o.size(), 0u);

@@ -35,26 +35,41 @@ TEST(OccupancyConversion, PointQueriesSumAllCoveringCells)
 	EXPECT_EQ(v, 0);
 }
 
-TEST(OccupancyConversion, GridAtTheVectorResolution)
+TEST(OccupancyConversion, GridAtTheVectorResolutionIsEq6AtCellCentres)
 {
-	const std::vector<GridVector> m{wallWithCounts()};
+	// the wall at y = 0.02: rows behind [-0.13, -0.03), wall [-0.03, 0.07), free [0.07, 0.17)
+	const std::vector<GridVector> m{wallWithCounts().compose(mrpt::math::TPose2D(0, 0.02, 0))};
 	OccupancyConversionOptions opt;
 	opt.resolution = 0.1;
 	opt.margin = 0.3;
 	const auto g = OccupancyConversion::toOccupancyGrid(m, opt);
 	EXPECT_NEAR(g.getResolution(), 0.1, 1e-6);
-	// MRPT snaps the grid to multiples of the resolution: output cells [-0.1, 0]
-	// and [0, 0.1] each straddle the wall row [-0.05, 0.05] (area average).
-	ASSERT_NEAR(g.getYMin(), -0.4, 1e-6);
+	ASSERT_NEAR(g.getYMin(), -0.4, 1e-6);  // MRPT snaps the grid to multiples of the resolution
 	auto occ = [&](double x, double y) { return 1.0 - g.getPos(x, y); };  // MRPT stores p(free)
 	for (double x = 0.25; x < 1.8; x += 0.1)
 	{
-		EXPECT_NEAR(occ(x, -0.05), 10.0 / 11.0, 0.02) << x;  // behind (prior) + wall
-		EXPECT_NEAR(occ(x, 0.05), 0.5, 0.02) << x;  // wall + free row in front
-		EXPECT_NEAR(occ(x, 0.15), 0.05, 0.02) << x;  // free row only
+		EXPECT_NEAR(occ(x, -0.05), 0.5, 0.01) << x;  // centre in the prior row behind
+		EXPECT_NEAR(occ(x, 0.05), 0.95, 0.01) << x;  // centre in the wall row
+		EXPECT_NEAR(occ(x, 0.15), 0.05, 0.01) << x;  // centre in the free row
 		EXPECT_EQ(g.getPos(x, 0.5), 0.5f) << x;  // nothing there
 	}
 	EXPECT_EQ(g.getPos(-0.2, 0.0), 0.5f);
+}
+
+TEST(OccupancyConversion, CoarseCellHoldingAnObstacleIsOccupied)
+{
+	std::vector<GridVector> m{wallWithCounts()};
+	for (int c = 0; c < m[0].cols(); ++c) m[0].cell(0, c).n_occupy = 1, m[0].cell(0, c).n_visit = 4;
+	// one 0.3 m cell over all three rows: max pooling takes the wall row
+	const OccupancyRaster R = OccupancyConversion::rasterise(m, 0.0, -0.15, 0.3, 6, 1, 0, true);
+	for (int ix = 0; ix < 6; ++ix) EXPECT_NEAR(R.probability(ix, 0), 0.95, 1e-5);
+	// a cell over the prior row behind the wall and the free row of another
+	// vector: the prior carries no evidence, the cell is free
+	GridVector a({0, 0}, {2, 0}, GridOptions{});  // nothing observed
+	GridVector b({2, 0.1}, {0, 0.1}, GridOptions{});  // opposite side, free row at y = 0
+	for (int c = 0; c < b.cols(); ++c) b.cell(2, c).n_occupy = 1, b.cell(2, c).n_visit = 20;
+	const OccupancyRaster F = OccupancyConversion::rasterise({a, b}, 0.0, -0.05, 0.2, 10, 1, 4, true);
+	for (int ix = 1; ix < 9; ++ix) EXPECT_NEAR(F.probability(ix, 0), 1.5 / 21.0, 1e-5) << ix;  // prior of a + free row of b
 }
 
 TEST(OccupancyConversion, AlignedCellsReproduceEq6Exactly)
@@ -71,15 +86,15 @@ TEST(OccupancyConversion, AlignedCellsReproduceEq6Exactly)
 	}
 }
 
-TEST(OccupancyConversion, AnyResolutionAveragesTheCounts)
+TEST(OccupancyConversion, MeanPoolingAveragesTheCounts)
 {
 	std::vector<GridVector> m{wallWithCounts()};
 	for (int c = 0; c < m[0].cols(); ++c) m[0].cell(0, c).n_occupy = 1, m[0].cell(0, c).n_visit = 4;
 	// a coarse 0.3 m cell over all three rows: (1 + 9.5 + 0.5) / (4 + 10 + 10) per column
-	const OccupancyRaster R = OccupancyConversion::rasterise(m, 0.0, -0.15, 0.3, 6, 1, 0);
+	const OccupancyRaster R = OccupancyConversion::rasterise(m, 0.0, -0.15, 0.3, 6, 1, 0, false);
 	for (int ix = 0; ix < 6; ++ix) EXPECT_NEAR(R.probability(ix, 0), 11.0 / 24.0, 1e-5);
 	// fine 0.025 m cells: each inside one vector cell
-	const OccupancyRaster F = OccupancyConversion::rasterise(m, 0.0, -0.15, 0.025, 80, 12, 0);
+	const OccupancyRaster F = OccupancyConversion::rasterise(m, 0.0, -0.15, 0.025, 80, 12, 0, false);
 	EXPECT_NEAR(F.probability(10, 5), 0.95, 1e-6);  // y in [-0.025, 0]
 	EXPECT_NEAR(F.probability(10, 8), 0.05, 1e-6);  // y in [0.05, 0.075]
 	// rotated vector: the raster agrees with point queries at most cells

@@ -69,13 +69,14 @@ std::vector<uint8_t> bandMask(const std::vector<GridVector>& vs, const mrpt::map
 	return mask;
 }
 
-int gSamples = 0;  // --samples
+int gSamples = 0;  // --samples, else [gridvector_occupancy] samples_per_axis
+bool gMaxPooling = true;  // [gridvector_occupancy] max_pooling
 
 Agreement agreement(const std::vector<GridVector>& vs, const mrpt::maps::COccupancyGridMap2D& mrptGrid, double band)
 {
 	const OccupancyRaster R = OccupancyConversion::rasterise(vs, mrptGrid.getXMin(), mrptGrid.getYMin(),
 															 mrptGrid.getResolution(), int(mrptGrid.getSizeX()),
-															 int(mrptGrid.getSizeY()), gSamples);
+															 int(mrptGrid.getSizeY()), gSamples, gMaxPooling);
 	const auto mask = bandMask(vs, mrptGrid, band);
 	Agreement a;
 	for (int iy = 0; iy < R.ny; ++iy)
@@ -91,6 +92,26 @@ Agreement agreement(const std::vector<GridVector>& vs, const mrpt::maps::COccupa
 			if (pm > 0.5) ++a.occBoth, a.occSame += pg > 0.5;
 		}
 	return a;
+}
+
+/** MRPT's own order dependence (its log-odds saturate, so recent scans
+ * dominate): the same band cells of two MRPT grids, known in both. */
+Agreement mrptSelfAgreement(const std::vector<GridVector>& vs, const mrpt::maps::COccupancyGridMap2D& a,
+							const mrpt::maps::COccupancyGridMap2D& b, double band)
+{
+	const auto mask = bandMask(vs, a, band);
+	Agreement r;
+	for (unsigned iy = 0; iy < a.getSizeY(); ++iy)
+		for (unsigned ix = 0; ix < a.getSizeX(); ++ix)
+		{
+			if (!mask[size_t(iy) * a.getSizeX() + ix]) continue;
+			++r.band;
+			const float fa = a.getCell(ix, iy), fb = b.getPos(a.idx2x(ix), a.idx2y(iy));
+			if (fa == 0.5f || fb == 0.5f) continue;
+			++r.both;
+			r.same += (fa < 0.5f) == (fb < 0.5f);
+		}
+	return r;
 }
 
 struct Timing
@@ -155,6 +176,10 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 		grid.insertObservation(*obs[t], pose);
 		tMrpt[t] = seconds(a, Clock::now());
 	}
+	mrpt::maps::COccupancyGridMap2D gridRev(-10, 10, -10, 10, float(cfg.grid.resolution));
+	gridRev.insertionOptions = grid.insertionOptions;
+	for (size_t k = n; k-- > 0;)
+		gridRev.insertObservation(*obs[k], mrpt::poses::CPose3D(poses[k].x, poses[k].y, 0, poses[k].phi, 0, 0));
 	// batch mode (EM loop)
 	const auto b0 = Clock::now();
 	const auto perScan = GlobalMap::buildPerScan(poses, scans, cfg);
@@ -166,6 +191,7 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 	const MemoryReport mem = MemoryAccounting::account(map.vectors(), 0.1);
 	const MemoryReport memB = MemoryAccounting::account(merged.vectors, 0.1);
 	const Agreement ag = agreement(map.vectors(), grid, band), agB = agreement(merged.vectors, grid, band);
+	const Agreement agM = mrptSelfAgreement(map.vectors(), grid, gridRev, band);
 	size_t perScanVectors = 0;
 	for (const auto& s : scans) perScanVectors += s.vectors.size();
 
@@ -177,6 +203,8 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 				memB.vectorCount, memB.vectorLength, memB.ratio, seconds(b0, b1), seconds(b1, b2));
 	std::printf("agreement with MRPT grid (cells within %.2f m of a vector, known in both): sequential %.2f %% (%zu/%zu of %zu; occupied %zu/%zu), batch %.2f %% (%zu/%zu)\n",
 				band, ag.pct(), ag.same, ag.both, ag.band, ag.occSame, ag.occBoth, agB.pct(), agB.same, agB.both);
+	std::printf("MRPT grid vs MRPT grid of the same scans inserted in reverse order, same cells: %.2f %% (%zu/%zu)\n",
+				agM.pct(), agM.same, agM.both);
 	std::printf("speed: extract %.0f scans/s, insertScan %.0f scans/s, extract+insert %.0f scans/s; MRPT grid %.0f scans/s; ratio (extract+insert)/MRPT %.2f\n",
 				n / te.total, n / ti.total, n / (te.total + ti.total), n / tm.total, tm.total / (te.total + ti.total));
 	std::printf("insertScan per scan: first 10 %% %.3f ms, last 10 %% %.3f ms (map %zu vectors at the end)\n",
@@ -209,7 +237,8 @@ int main(int argc, char** argv)
 		if (args.has("config")) cfg.loadFromFile(args.get("config"));
 		const long maxScans = args.getInt("max-scans", 0, 0, 100000000);
 		const double band = args.getDouble("band", 0.2);
-		gSamples = int(args.getInt("samples", 0, 0, 16));
+		gSamples = int(args.getInt("samples", cfg.occupancy.samplesPerAxis, 0, 16));
+		gMaxPooling = cfg.occupancy.maxPooling;
 		std::printf("| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/cells | agree seq | agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 		for (const auto& log : args.positional()) benchLog(log, cfg, maxScans, band);
 	}

@@ -127,9 +127,7 @@ int run(const io::ArgParser& args)
 	app::writeSvg(dir + "vectors.svg", res.finalVectors, doors, res.poses);
 	app::writeDoors(dir + "doors.txt", doors);
 	app::writeGvmap(dir + "map.gvmap", cfg, res.finalVectors);
-	OccupancyConversionOptions oc;
-	oc.resolution = cfg.grid.resolution;
-	const auto grid = OccupancyConversion::toOccupancyGrid(res.finalVectors, oc);
+	const auto grid = OccupancyConversion::toOccupancyGrid(res.finalVectors, cfg.occupancy);
 	MapExport::writePng(grid, dir + "occupancy.png");
 	MapExport::writeRosMap(grid, dir + "occupancy.pgm", dir + "occupancy.yaml");
 	fig.memory = MemoryAccounting::account(res.finalVectors, 0.1);

@@ -137,9 +137,7 @@ int run(const io::ArgParser& args)
 		throw std::runtime_error((poseSource == "log" ? input : poseSource) + ": no scan has a pose");
 
 	const auto& vectors = map.vectors();
-	OccupancyConversionOptions oc;
-	oc.resolution = cfg.grid.resolution;
-	const auto grid = OccupancyConversion::toOccupancyGrid(vectors, oc);
+	const auto grid = OccupancyConversion::toOccupancyGrid(vectors, cfg.occupancy);
 	const std::string dir = out + "/";
 	saveMap(dir + "map.gvmap", map);
 	MapExport::writeVectorsText(vectors, dir + "vectors.txt");

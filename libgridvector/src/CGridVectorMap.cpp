@@ -1,4 +1,5 @@
 // CGridVectorMap: map definition (registry), construction, clear, description.
+#include <gridvector/OccupancyConversion.h>
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/CGridVectorMap.h>
 
@@ -36,6 +37,12 @@ mrpt::maps::CMetricMap* CGridVectorMap::internal_CreateFromMapDefinition(
 CGridVectorMap::CGridVectorMap(const gridvector::GridVectorConfig& cfg)
 	: map_(cfg), extractor_(cfg.extraction, cfg.grid)
 {
+}
+
+// Eq. 6: every cell of an MRPT grid from the vectors' counts.
+COccupancyGridMap2D CGridVectorMap::getAsOccupancyGrid() const
+{
+	return gridvector::OccupancyConversion::toOccupancyGrid(map_.vectors(), map_.config().occupancy);
 }
 
 void CGridVectorMap::setConfig(const gridvector::GridVectorConfig& cfg)

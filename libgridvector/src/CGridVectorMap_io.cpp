@@ -109,4 +109,5 @@ void CGridVectorMap::saveMetricMapRepresentationToFile(const std::string& prefix
 {
 	gridvector::MapExport::writeVectorsText(map_.vectors(), prefix + "_vectors.txt");
 	gridvector::MapExport::writeSvg(map_.vectors(), prefix + "_vectors.svg");
+	gridvector::MapExport::writePng(getAsOccupancyGrid(), prefix + "_occupancy.png");
 }

@@ -120,6 +120,10 @@ void GridVectorConfig::validate() const
 	require(grid.priorVisit > 0 && grid.priorOccupy >= 0 && grid.priorOccupy <= grid.priorVisit,
 			"grid priors need 0 <= prior_occupy <= prior_visit, prior_visit > 0");
 	require(map.hitBand > 0, "map.hit_band must be > 0");
+	require(occupancy.resolution > 0, "occupancy.resolution must be > 0");
+	require(occupancy.margin >= 0, "occupancy.margin must be >= 0");
+	require(occupancy.samplesPerAxis >= 0 && occupancy.samplesPerAxis <= 16,
+			"occupancy.samples_per_axis must be in [0,16]");
 	require(map.indexCellSize > 0, "map.index_cell_size must be > 0");
 	require(estep.staticThreshold > 0 && estep.staticThreshold < 1, "estep.static_threshold must be in (0,1)");
 	require(mstep.maxIterations >= 1, "mstep.max_iterations must be >= 1");

@@ -64,56 +64,95 @@ bool spanAt(const TPoint2D (&q)[4], double y, double& x0, double& x1)
 	return x0 <= x1;
 }
 
-// Eq. 6 summed over the sub-samples of the raster that fall in one vector's grid band.
-void addVector(const GridVector& g, OccupancyRaster& R, int s)
+/** Eq. 6-7 at the points of a fine raster (s x s points per output cell). */
+struct SampleRaster
+{
+	double xMin, yMin, step;
+	long nx, ny;
+	std::vector<float> occ, visit;
+	SampleRaster(const OccupancyRaster& R, int s)
+		: xMin(R.xMin), yMin(R.yMin), step(R.resolution / s), nx(long(R.nx) * s), ny(long(R.ny) * s),
+		  occ(size_t(nx * ny), 0.f), visit(size_t(nx * ny), 0.f)
+	{
+	}
+	size_t index(long fx, long fy) const { return size_t(fy * nx + fx); }
+};
+
+// Eq. 7: adds one vector's cells to every sample point inside its grid band.
+void addVector(const GridVector& g, SampleRaster& S)
 {
 	const double res = g.resolution(), uMax = g.cols() * res, wMax = (g.halfWidth() + 0.5) * res;
 	const TPoint2D d = g.direction(), n = g.leftNormal(), o = g.start();
 	auto at = [&](double u, double w) { return TPoint2D(o.x + u * d.x + w * n.x, o.y + u * d.y + w * n.y); };
 	const TPoint2D quad[4] = {at(0, -wMax), at(uMax, -wMax), at(uMax, wMax), at(0, wMax)};
-	const double fine = R.resolution / s, weight = 1.0 / (s * s);
 	double ylo = 1e300, yhi = -1e300;
 	for (const auto& p : quad) ylo = std::min(ylo, p.y), yhi = std::max(yhi, p.y);
-	const long fy0 = std::max(0L, long(std::ceil((ylo - R.yMin) / fine - 0.5)));
-	const long fy1 = std::min(long(R.ny) * s - 1, long(std::floor((yhi - R.yMin) / fine - 0.5)));
+	const long fy0 = std::max(0L, long(std::ceil((ylo - S.yMin) / S.step - 0.5)));
+	const long fy1 = std::min(S.ny - 1, long(std::floor((yhi - S.yMin) / S.step - 0.5)));
 	for (long fy = fy0; fy <= fy1; ++fy)
 	{
-		const double y = R.yMin + (fy + 0.5) * fine;
+		const double y = S.yMin + (fy + 0.5) * S.step;
 		double x0, x1;
 		if (!spanAt(quad, y, x0, x1)) continue;
-		const long fx0 = std::max(0L, long(std::ceil((x0 - R.xMin) / fine - 0.5)));
-		const long fx1 = std::min(long(R.nx) * s - 1, long(std::floor((x1 - R.xMin) / fine - 0.5)));
-		const size_t rowBase = size_t(fy / s) * R.nx;
+		const long fx0 = std::max(0L, long(std::ceil((x0 - S.xMin) / S.step - 0.5)));
+		const long fx1 = std::min(S.nx - 1, long(std::floor((x1 - S.xMin) / S.step - 0.5)));
 		for (long fx = fx0; fx <= fx1; ++fx)
 		{
-			const double x = R.xMin + (fx + 0.5) * fine;
-			const double dx = x - o.x, dy = y - o.y;
+			const double dx = S.xMin + (fx + 0.5) * S.step - o.x, dy = y - o.y;
 			const double u = dx * d.x + dy * d.y, w = dx * n.x + dy * n.y;
 			const int c = int(std::floor(u / res)), r = int(std::floor(w / res + 0.5)) + g.halfWidth();
 			if (c < 0 || c >= g.cols() || r < 0 || r >= g.rows()) continue;  // on the band's edge
 			const GridCell& cell = g.cell(r, c);
-			const size_t i = rowBase + size_t(fx / s);
-			R.occ[i] += float(weight * cell.n_occupy);
-			R.visit[i] += float(weight * cell.n_visit);
+			S.occ[S.index(fx, fy)] += cell.n_occupy;
+			S.visit[S.index(fx, fy)] += cell.n_visit;
 		}
 	}
 }
+
+/** Observed: the counts hold more than the prior (a sum of priors is exactly 1/2). */
+bool informative(float o, float v) { return v > 0 && std::abs(double(o) / v - 0.5) > 1e-6; }
+
+// Pools the s x s sample points of every output cell into it.
+void pool(const SampleRaster& S, int s, bool maxPooling, OccupancyRaster& R)
+{
+	const double weight = 1.0 / (double(s) * s);
+	for (int iy = 0; iy < R.ny; ++iy)
+		for (int ix = 0; ix < R.nx; ++ix)
+		{
+			double sumO = 0, sumV = 0, bestP = -1, bestO = 0, bestV = 0;
+			for (long fy = long(iy) * s; fy < long(iy + 1) * s; ++fy)
+				for (long fx = long(ix) * s; fx < long(ix + 1) * s; ++fx)
+				{
+					const float o = S.occ[S.index(fx, fy)], v = S.visit[S.index(fx, fy)];
+					sumO += o, sumV += v;
+					if (informative(o, v) && o / v > bestP) bestP = o / v, bestO = o, bestV = v;
+				}
+			const size_t i = size_t(iy) * R.nx + ix;
+			const bool useBest = maxPooling && bestP >= 0;
+			R.occ[i] = float(useBest ? bestO : weight * sumO);
+			R.visit[i] = float(useBest ? bestV : weight * sumV);
+		}
+}
 }  // namespace
 
+// Eq. 6 at the sample points of every output cell, pooled per cell.
 OccupancyRaster OccupancyConversion::rasterise(const std::vector<GridVector>& vectors, double xMin,
-											   double yMin, double res, int nx, int ny, int samplesPerAxis)
+											   double yMin, double res, int nx, int ny, int samplesPerAxis,
+											   bool maxPooling)
 {
 	OccupancyRaster R;
 	R.xMin = xMin, R.yMin = yMin, R.resolution = res;
 	R.nx = std::max(0, nx), R.ny = std::max(0, ny);
 	R.occ.assign(size_t(R.nx) * R.ny, 0.f);
 	R.visit.assign(size_t(R.nx) * R.ny, 0.f);
-	for (const GridVector& g : vectors)
-	{
-		const int s = samplesPerAxis > 0 ? samplesPerAxis
-										 : std::max(1, int(std::ceil(2 * res / g.resolution() - 1e-6)));
-		addVector(g, R, s);
-	}
+	// automatic: one point per vector cell along each axis, so at the vectors'
+	// own resolution every output cell is Eq. 6 at its centre
+	int s = std::max(1, samplesPerAxis);
+	if (samplesPerAxis <= 0)
+		for (const GridVector& g : vectors) s = std::max(s, int(std::ceil(res / g.resolution() - 1e-6)));
+	SampleRaster S(R, s);
+	for (const GridVector& g : vectors) addVector(g, S);
+	pool(S, s, maxPooling, R);
 	return R;
 }
 
@@ -126,7 +165,7 @@ OccupancyRaster OccupancyConversion::rasterise(const std::vector<GridVector>& ve
 	y0 = std::floor((y0 - opt.margin) / opt.resolution) * opt.resolution;
 	const int nx = int(std::ceil((x1 + opt.margin - x0) / opt.resolution));
 	const int ny = int(std::ceil((y1 + opt.margin - y0) / opt.resolution));
-	return rasterise(vectors, x0, y0, opt.resolution, nx, ny, opt.samplesPerAxis);
+	return rasterise(vectors, x0, y0, opt.resolution, nx, ny, opt.samplesPerAxis, opt.maxPooling);
 }
 
 void OccupancyConversion::fill(const OccupancyRaster& R, mrpt::maps::COccupancyGridMap2D& grid)
@@ -137,10 +176,10 @@ void OccupancyConversion::fill(const OccupancyRaster& R, mrpt::maps::COccupancyG
 }
 
 void OccupancyConversion::fill(const std::vector<GridVector>& vectors,
-							   mrpt::maps::COccupancyGridMap2D& grid, int samplesPerAxis)
+							   mrpt::maps::COccupancyGridMap2D& grid, int samplesPerAxis, bool maxPooling)
 {
 	const OccupancyRaster R = rasterise(vectors, grid.getXMin(), grid.getYMin(), grid.getResolution(),
-										int(grid.getSizeX()), int(grid.getSizeY()), samplesPerAxis);
+										int(grid.getSizeX()), int(grid.getSizeY()), samplesPerAxis, maxPooling);
 	fill(R, grid);
 }
 
@@ -152,7 +191,7 @@ mrpt::maps::COccupancyGridMap2D OccupancyConversion::toOccupancyGrid(
 	double x0, y0, x1, y1;
 	if (!bounds(vectors, x0, y0, x1, y1)) x0 = y0 = -opt.margin, x1 = y1 = opt.margin;
 	grid.setSize(x0 - opt.margin, x1 + opt.margin, y0 - opt.margin, y1 + opt.margin, opt.resolution, 0.5f);
-	fill(vectors, grid, opt.samplesPerAxis);  // in the grid's own (snapped) geometry
+	fill(vectors, grid, opt.samplesPerAxis, opt.maxPooling);  // in the grid's own (snapped) geometry
 	return grid;
 }
 

@@ -205,6 +205,27 @@ struct MStepOptions
 	}
 };
 
+/** Eq. 6-7: conversion of the grid vector map to an occupancy grid. */
+struct OccupancyOptions
+{
+	double resolution = 0.10;  //!< output cell size [m]
+	double margin = 0.5;  //!< border around the vectors' bounding box [m]
+	/** Eq. 6 sample points per axis and output cell; 0: ceil(resolution / vector cell). */
+	int samplesPerAxis = 0;
+	/** true: a cell takes the largest Eq. 6 occupancy of its observed sub-samples;
+	 * false: the area average of the counts. */
+	bool maxPooling = true;
+
+	template <class V>
+	void visit(V&& v)
+	{
+		v("resolution", resolution, "Cell size of the occupancy grid made from the vectors by Eq. 6 (occupancy.png/.pgm, MRPT grid) [m]");
+		v("margin", margin, "Border added around the vectors' bounding box [m]");
+		v("samples_per_axis", samplesPerAxis, "Eq. 6 is evaluated at this many points per axis of an output cell; 0: one per vector cell (at the vectors' own resolution: Eq. 6 at the cell centre)");
+		v("max_pooling", maxPooling, "An output cell takes the largest Eq. 6 occupancy among its observed sample points (a cell holding any obstacle is occupied, as in a ray-casting grid); false: the area average of the counts");
+	}
+};
+
 /** Sec. 5.4: door detection from static/dynamic corners. */
 struct DoorOptions
 {
@@ -241,6 +262,7 @@ struct GridVectorConfig
 	PoseGraphOptions posegraph;
 	MStepOptions mstep;
 	DoorOptions doors;
+	OccupancyOptions occupancy;
 
 	template <class V>
 	void visitGroups(V&& v)
@@ -253,6 +275,7 @@ struct GridVectorConfig
 		v("posegraph", posegraph);
 		v("mstep", mstep);
 		v("doors", doors);
+		v("occupancy", occupancy);
 	}
 
 	/** Reads every `<prefix>_<group>` section present. Throws std::runtime_error

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <gridvector/GridVector.h>
+#include <gridvector/GridVectorConfig.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/math/TPoint2D.h>
@@ -10,9 +11,12 @@
 
 namespace gridvector
 {
-/** Sums of Eq. 6 over a regular raster: per output cell, the n_occupy and
- * n_visit of every vector cell covering it (area-averaged over the output
- * cell by sub-sampling). p = occ / visit; unknown where visit == 0. */
+/** Eq. 6 over a regular raster. Each output cell is sampled at s x s points;
+ * at each point Eq. 6-7 sums the n_occupy and n_visit of every vector cell
+ * containing it. Max pooling keeps the counts of the observed point with the
+ * largest occupancy (a cell holding any obstacle is occupied, as in a
+ * ray-casting grid or OctoMap's inner nodes); mean pooling averages the counts
+ * over the points. p = occ / visit; unknown where visit == 0. */
 struct OccupancyRaster
 {
 	double xMin = 0, yMin = 0, resolution = 0.1;  //!< lower-left corner of cell (0, 0)
@@ -28,14 +32,9 @@ struct OccupancyRaster
 	}
 };
 
-struct OccupancyConversionOptions
-{
-	double resolution = 0.10;  //!< output cell size [m]
-	double margin = 0.5;  //!< border around the vectors' bounding box [m]
-	/** Sub-samples per axis and output cell for the area average; 0: enough
-	 * for every vector cell to be sampled (ceil(2 resolution / vector cell), >= 1). */
-	int samplesPerAxis = 0;
-};
+/** Conversion options (resolution, margin, sub-samples, pooling): the
+ * `[gridvector_occupancy]` group of GridVectorConfig. */
+using OccupancyConversionOptions = OccupancyOptions;
 
 class OccupancyConversion
 {
@@ -51,7 +50,8 @@ class OccupancyConversion
 									 const OccupancyConversionOptions& opt = {});
 	/** Raster with a given geometry (cells of side res from (xMin, yMin)). */
 	static OccupancyRaster rasterise(const std::vector<GridVector>& vectors, double xMin, double yMin,
-									 double res, int nx, int ny, int samplesPerAxis = 0);
+									 double res, int nx, int ny, int samplesPerAxis = 0,
+									 bool maxPooling = true);
 
 	/** Eq. 6 as an MRPT occupancy grid; unknown cells stay 0.5. Note MRPT's
 	 * convention: a cell's value is p(free) = 1 - p(occupied). */
@@ -59,7 +59,7 @@ class OccupancyConversion
 														   const OccupancyConversionOptions& opt = {});
 	/** Fills an existing grid (its size and resolution are kept). */
 	static void fill(const std::vector<GridVector>& vectors, mrpt::maps::COccupancyGridMap2D& grid,
-					 int samplesPerAxis = 0);
+					 int samplesPerAxis = 0, bool maxPooling = true);
 	static void fill(const OccupancyRaster& raster, mrpt::maps::COccupancyGridMap2D& grid);
 	/** Bounding box of all vectors' grid bands: {xmin, ymin, xmax, ymax}; false if none. */
 	static bool bounds(const std::vector<GridVector>& vectors, double& xmin, double& ymin, double& xmax,

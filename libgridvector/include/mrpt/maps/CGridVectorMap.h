@@ -6,6 +6,7 @@
 #include <gridvector/VectorExtractor.h>
 
 #include <mrpt/config/CLoadableOptions.h>
+#include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
@@ -59,13 +60,16 @@ class CGridVectorMap : public CMetricMap
 	void setConfig(const gridvector::GridVectorConfig& cfg);
 	size_t insertedScans() const { return insertedScans_; }
 
+	/** Eq. 6: the map as an MRPT occupancy grid, with the options of the
+	 * `[..._occupancy]` group (resolution, margin, sample points, pooling). */
+	mrpt::maps::COccupancyGridMap2D getAsOccupancyGrid() const;
 	/** Extract the grid vectors of a scan in the robot frame (Sec. 3.1). */
 	gridvector::LocalScan extractLocal(const mrpt::obs::CObservation2DRangeScan& scan) const;
 
 	// --- CMetricMap ---
 	bool isEmpty() const override;
-	/** Writes `<prefix>_vectors.txt` (x1 y1 x2 y2 p_static per line)
-	 * and `<prefix>_vectors.svg`. */
+	/** Writes `<prefix>_vectors.txt` (x1 y1 x2 y2 p_static per line),
+	 * `<prefix>_vectors.svg` and the Eq. 6 grid as `<prefix>_occupancy.png`. */
 	void saveMetricMapRepresentationToFile(const std::string& prefix) const override;
 	std::string asString() const override;
 	/** Vectors as line segments coloured by p_static (blue static .. red dynamic). */

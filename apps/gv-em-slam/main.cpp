@@ -10,7 +10,6 @@
 // doors.txt and report.json (per-iteration figures, memory as Table 1, timings).
 #include "EmOutputs.h"
 #include "InitialTrajectory.h"
-#include "ProgressLine.h"
 
 #include <gridvector/DoorDetector.h>
 #include <gridvector/EmSlam.h>
@@ -20,6 +19,7 @@
 #include <gridvector/OccupancyConversion.h>
 #include <gridvector/VectorExtractor.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Progress.h>
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/LogReader.h>
 
@@ -80,7 +80,7 @@ int run(const io::ArgParser& args)
 	if (!quiet) std::fprintf(stderr, "%s\n", log.summary.c_str());
 
 	// Sec. 3.1: the local maps V_t, and the dead reckoning u_t
-	app::ProgressLine progress(quiet);
+	io::Progress progress(quiet);
 	auto t1 = Clock::now();
 	const VectorExtractor ex(cfg.extraction, cfg.grid);
 	std::vector<LocalScan> scans;
@@ -96,7 +96,7 @@ int run(const io::ArgParser& args)
 		fig.localVectors += scans.back().vectors.size();
 		odo.push_back(r.hasOdometry ? r.odometry : r.hasLogPose ? r.logPose : mrpt::math::TPose2D(0, 0, 0));
 	}
-	progress.clear();
+	progress.done();
 	fig.extractSeconds = since(t1);
 	if (args.has("init")) odo = app::initialTrajectory(log, odo, args.get("init"));
 
@@ -106,14 +106,14 @@ int run(const io::ArgParser& args)
 	const EmResult res = em.run(
 		scans, odo,
 		[&](const EmIteration& it, const std::vector<mrpt::math::TPose2D>& poses) {
-			progress.clear();
+			progress.done();
 			if (!quiet) printIteration(it);
 			dumpIteration(log, it, poses);
 		},
 		[&](const char* stage, int iteration, double f) {
 			progress.show("iteration " + std::to_string(iteration) + ": " + stage, f);
 		});
-	progress.clear();
+	progress.done();
 	fig.emSeconds = since(t1);
 
 	// outputs

@@ -13,6 +13,7 @@
 #include <gridvector/MemoryAccounting.h>
 #include <gridvector/OccupancyConversion.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Progress.h>
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/LogReader.h>
 
@@ -21,7 +22,6 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
 
-#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
@@ -35,32 +35,6 @@ using Clock = std::chrono::steady_clock;
 
 namespace
 {
-/** scans done / total and the time left, on stderr when it is a terminal. */
-class ProgressLine
-{
-   public:
-	ProgressLine(bool quiet) : on_(!quiet && ::isatty(2)), t0_(Clock::now()), last_(t0_) {}
-	void update(size_t done, size_t total)
-	{
-		if (!on_) return;
-		const auto now = Clock::now();
-		if (done < total && now - last_ < std::chrono::milliseconds(100)) return;
-		last_ = now;
-		const double el = std::chrono::duration<double>(now - t0_).count();
-		const double eta = done ? el * double(total - done) / double(done) : 0;
-		std::fprintf(stderr, "\rgv-map: %zu/%zu scans (%.0f%%), ETA %.1f s   ", done, total,
-					 total ? 100.0 * done / total : 100.0, eta);
-	}
-	void done()
-	{
-		if (on_) std::fprintf(stderr, "\r%60s\r", "");
-	}
-
-   private:
-	bool on_;
-	Clock::time_point t0_, last_;
-};
-
 /** The pose of each scan: the log's, or the trajectory's nearest in time (within 50 ms). */
 std::vector<std::optional<mrpt::math::TPose2D>> posesFor(const io::LogData& log, const std::string& source)
 {
@@ -119,18 +93,18 @@ int run(const io::ArgParser& args)
 	const auto poses = posesFor(log, poseSource);
 
 	mrpt::maps::CGridVectorMap map(cfg);
-	ProgressLine progress(quiet);
+	io::Progress progress(quiet);
 	size_t used = 0;
 	const auto t0 = Clock::now();
 	for (size_t i = 0; i < log.scans.size(); ++i)
 	{
-		progress.update(i, log.scans.size());
+		progress.show("gv-map: scans", i, log.scans.size());
 		if (!poses[i]) continue;
 		const auto& p = *poses[i];
 		map.insertObservation(*log.scans[i].scan, mrpt::poses::CPose3D(p.x, p.y, 0, p.phi, 0, 0));
 		++used;
 	}
-	progress.update(log.scans.size(), log.scans.size());
+	progress.show("gv-map: scans", log.scans.size(), log.scans.size());
 	progress.done();
 	const double secs = std::chrono::duration<double>(Clock::now() - t0).count();
 	if (used == 0)

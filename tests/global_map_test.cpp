@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 #include <set>
 
 #include "test_scans.h"
@@ -287,6 +288,71 @@ TEST(GlobalMap, MergeAllReportsSourcesAndConserves)
 				EXPECT_EQ(after > 0.5, before > 0.5) << p.x << " " << p.y;
 			}
 		}
+}
+
+namespace
+{
+GridVector wallPiece(TPoint2D s, TPoint2D e, double spacing = 0.02)
+{
+	GridVector v(s, e, GridOptions{});
+	const TPoint2D d = v.direction();
+	for (double u = 0.01; u < v.length(); u += spacing) v.addEndpoint({s.x + u * d.x, s.y + u * d.y});
+	return v;
+}
+}  // namespace
+
+TEST(GlobalMap, MergeCascadesThroughTheMergedVector)
+{
+	// a and b: the same wall, not overlapping: two map vectors. c (seen with
+	// fewer points) overlaps both but lies 0.1 m off (a corresponds, b is
+	// 0.16 m from c: no); the merge of a and c, dominated by a's points, matches
+	// b: Algorithm 2 goes on with the merged vector until nothing corresponds.
+	GlobalMap map;
+	map.insertVector(wallPiece({0, 0}, {4, 0}));
+	map.insertVector(wallPiece({5, -0.06}, {8, -0.06}));
+	ASSERT_EQ(map.size(), 2u);
+	const GridVector c = wallPiece({3, 0.1}, {5.5, 0.1}, 0.08);
+	ASSERT_EQ(map.correspondents(c).size(), 1u);
+	map.insertVector(c);
+	ASSERT_EQ(map.size(), 1u);
+	EXPECT_EQ(map.vectors()[0].mergedCount, 3u);
+	EXPECT_NEAR(map.vectors()[0].start().x, 0, 0.05);
+	EXPECT_NEAR(map.vectors()[0].end().x, 8, 0.05);
+	EXPECT_GE(map.lastInsertStats().merges, 2u);
+}
+
+TEST(GlobalMap, NoisyPassesOfOneWallEndAsOneVector)
+{
+	// A robot drives 20 times along a 12 m corridor with noisy poses (2 cm,
+	// 0.3 deg): each wall side ends as one vector, every beam endpoint kept.
+	const std::vector<gvtest::Seg> walls = {{-1, -1.2, 13, -1.2}, {13, 1.2, -1, 1.2}};
+	std::mt19937 rng(7);
+	std::normal_distribution<double> nxy(0, 0.02), nphi(0, 0.3 * M_PI / 180);
+	const VectorExtractor ex;
+	GlobalMap map;
+	double pts = 0;
+	int64_t t = 0;
+	for (int pass = 0; pass < 20; ++pass)
+		for (double x = 0; x <= 12; x += 0.5)
+		{
+			const double dir = pass % 2 ? M_PI : 0.0;
+			const TPose2D truth(pass % 2 ? 12 - x : x, 0, dir);
+			LocalScan l = ex.extract(gvtest::castScan(truth, walls, {}, 361, M_PI, 8.0));
+			l.scanIndex = t++;
+			for (const auto& v : l.vectors) pts += v.totalPoints();
+			map.insertScan(TPose2D(truth.x + nxy(rng), truth.y + nxy(rng), truth.phi + nphi(rng)), l);
+		}
+	EXPECT_NEAR(totalPoints(map.vectors()), pts, 1e-3 * pts);
+	int south = 0, north = 0;
+	for (const auto& v : map.vectors())
+	{
+		const bool s = std::abs(v.centre().y + 1.2) < 0.2, n = std::abs(v.centre().y - 1.2) < 0.2;
+		south += s, north += n;
+		if (s || n) EXPECT_GT(v.length(), 11.5);
+	}
+	EXPECT_EQ(south, 1);
+	EXPECT_EQ(north, 1);
+	EXPECT_EQ(map.size(), 2u);
 }
 
 TEST(GlobalMap, SetVectorsRebuildsTheIndex)

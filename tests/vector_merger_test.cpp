@@ -220,6 +220,65 @@ TEST(VectorMerger, DynamicBlobDoesNotPullTheLine)
 	EXPECT_GT(pointsMeanOffset(m), 0.0);  // the blob's points are still there, at their place
 }
 
+TEST(VectorMerger, ShortPartIntoALongWallKeepsTheWallsGrid)
+{
+	// A 20 m wall seen many times, and a new 1 m view of it 2 mm off: the refit
+	// line stays within merge_regrid_tolerance of the wall's grid, so the wall's
+	// cells stay where they are (Eq. 6 of the wall unchanged at every point) and
+	// only the new part's counts are moved into them.
+	GridVector a = wall({0, 0}, {20, 0}, 0.003, 1);
+	for (auto& c : a.cells()) c.n_occupy *= 40, c.n_visit *= 40, c.n_acc *= 40, c.x_acc *= 40, c.y_acc *= 40;
+	const GridVector b = wall({7.03, 0.002}, {8.04, 0.002}, 0.003, 2);
+	const VectorMerger fast;
+	const GridVector m = fast.merge(a, b);
+	EXPECT_EQ(m.start().x, a.start().x);
+	EXPECT_EQ(m.start().y, a.start().y);
+	EXPECT_NEAR(m.end().y, a.end().y, 1e-12);
+	EXPECT_NEAR(m.length(), a.length(), 1e-9);
+	ASSERT_EQ(m.cols(), a.cols());
+	expectTotalsConserved({&a, &b}, m);
+	// the wall's cells outside b's extent are the wall's, bit for bit
+	for (int r = 0; r < m.rows(); ++r)
+		for (int c = 0; c < m.cols(); ++c)
+			if (c < 69 || c > 81)
+			{
+				EXPECT_EQ(m.cell(r, c).n_occupy, a.cell(r, c).n_occupy) << r << " " << c;
+				EXPECT_EQ(m.cell(r, c).n_visit, a.cell(r, c).n_visit) << r << " " << c;
+				EXPECT_EQ(m.cell(r, c).n_acc, a.cell(r, c).n_acc) << r << " " << c;
+			}
+	// the same merge with a new grid always built (tolerance 0) agrees to within it
+	GridVectorConfig exact;
+	exact.map.mergeRegridTolerance = 0;
+	const GridVector r = VectorMerger(exact).merge(a, b);
+	const double tol = GridVectorConfig{}.map.mergeRegridTolerance;
+	EXPECT_LT(std::hypot(r.start().x - m.start().x, r.start().y - m.start().y), tol);
+	EXPECT_LT(std::hypot(r.end().x - m.end().x, r.end().y - m.end().y), tol);
+	expectTotalsConserved({&a, &b}, r);
+	for (int k = 0; k < r.rows(); ++k)
+		for (int c = 1; c + 1 < r.cols(); ++c)
+			EXPECT_NEAR(r.cell(k, c).occupancy(), m.cell(k, c).occupancy(), 0.02) << k << " " << c;
+	// a part that moves the line further than the tolerance gets a new grid
+	const GridVector once = wall({0, 0}, {20, 0}, 0.003, 4), far = wall({5, 0.12}, {15, 0.12}, 0.003, 3);
+	const GridVector moved = fast.merge(once, far);
+	EXPECT_GT(std::abs(moved.start().y - once.start().y), 0.005);
+	expectTotalsConserved({&once, &far}, moved);
+}
+
+TEST(VectorMerger, ExtendingTheWallsEndKeepsItsGrid)
+{
+	GridVector a = wall({0, 0}, {6, 0}, 0, 1);
+	for (auto& c : a.cells()) c.n_occupy *= 20, c.n_visit *= 20, c.n_acc *= 20, c.x_acc *= 20, c.y_acc *= 20;
+	const GridVector b = wall({5.5, 0}, {7.25, 0}, 0, 2);
+	const GridVector m = VectorMerger().merge(a, b);
+	EXPECT_EQ(m.start().x, 0.0);
+	EXPECT_NEAR(m.end().x, 7.25, 1e-9);
+	EXPECT_NEAR(m.end().y, 0.0, 1e-9);
+	EXPECT_EQ(m.cols(), 73);
+	expectTotalsConserved({&a, &b}, m);
+	for (int r = 0; r < m.rows(); ++r)
+		for (int c = 0; c < 55; ++c) EXPECT_EQ(m.cell(r, c).n_visit, a.cell(r, c).n_visit);
+}
+
 TEST(VectorMerger, RejectsMixedResolutions)
 {
 	GridOptions g;

@@ -125,6 +125,7 @@ void GridVectorConfig::validate() const
 	require(occupancy.samplesPerAxis >= 0 && occupancy.samplesPerAxis <= 16,
 			"occupancy.samples_per_axis must be in [0,16]");
 	require(map.indexCellSize > 0, "map.index_cell_size must be > 0");
+	require(map.mergeRegridTolerance >= 0, "map.merge_regrid_tolerance must be >= 0");
 	require(estep.staticThreshold > 0 && estep.staticThreshold < 1, "estep.static_threshold must be in (0,1)");
 	require(mstep.maxIterations >= 1, "mstep.max_iterations must be >= 1");
 	require(mstep.sequentialWindow >= 1, "mstep.sequential_window must be >= 1");

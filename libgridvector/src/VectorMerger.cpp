@@ -10,6 +10,8 @@ using mrpt::math::TPoint2D;
 
 namespace
 {
+int columnsFor(double length, double res) { return std::max(1, int(std::ceil(length / res - 1e-9))); }
+
 /** Frame of a directed segment: origin, unit direction d, left normal n. */
 struct SegFrame
 {
@@ -111,6 +113,7 @@ void checkParts(const std::vector<const GridVector*>& parts)
 }
 
 // Algorithm 2 lines 1-11: the temporary grid, aligned with the reference part, covering all parts.
+// The reference's own cells lie on the temporary lattice: they are copied, not transformed.
 TempGrid buildTempGrid(const std::vector<const GridVector*>& parts)
 {
 	const GridVector& ref = referenceOf(parts);
@@ -118,33 +121,54 @@ TempGrid buildTempGrid(const std::vector<const GridVector*>& parts)
 	t.lat.f = SegFrame::of(ref.start(), ref.direction());
 	t.lat.res = ref.resolution();
 	const double res = t.lat.res;
-	double umin = 1e300, umax = -1e300, wmin = 1e300, wmax = -1e300;
+	// the reference's cell centres: u in [res/2, (cols-1/2) res], w in [-h res, h res]
+	double umin = 0.5 * res, umax = (ref.cols() - 0.5) * res;
+	double wmin = -ref.halfWidth() * res, wmax = ref.halfWidth() * res;
 	for (const GridVector* p : parts)
-		forCellsIn(*p, t.lat, [&](int, int, const GridCell&, double u, double w) {
-			umin = std::min(umin, u), umax = std::max(umax, u);
-			wmin = std::min(wmin, w), wmax = std::max(wmax, w);
-		});
+		if (p != &ref)
+			forCellsIn(*p, t.lat, [&](int, int, const GridCell&, double u, double w) {
+				umin = std::min(umin, u), umax = std::max(umax, u);
+				wmin = std::min(wmin, w), wmax = std::max(wmax, w);
+			});
 	const int k0 = int(std::floor(umin / res)), k1 = int(std::floor(umax / res));
 	t.lat.uLo = k0 * res;
 	t.lat.cols = k1 - k0 + 1;
 	t.lat.rowMin = int(std::lround(wmin / res));
 	t.lat.rows = int(std::lround(wmax / res)) - t.lat.rowMin + 1;
 	t.cells.assign(size_t(t.lat.rows) * t.lat.cols, TempCell{});
+	const int h = ref.halfWidth();
+	for (int r = 0; r < ref.rows(); ++r)
+		for (int c = 0; c < ref.cols(); ++c)
+		{
+			const GridCell& cell = ref.cell(r, c);
+			TempCell& tc = t.at(r - h - t.lat.rowMin, c - k0);
+			tc.occ += cell.n_occupy;
+			tc.visit += cell.n_visit;
+			if (cell.n_acc <= 0) continue;
+			// line 5: the gravity centre in global coordinates
+			const double u = c * res + cell.x_acc / cell.n_acc, w = (r - h - 0.5) * res + cell.y_acc / cell.n_acc;
+			const TPoint2D g = t.lat.f.toGlobal(u, w);
+			TempCell& pc = t.at(t.lat.rowOf(w), t.lat.colOf(u));
+			pc.n += cell.n_acc;
+			pc.sx += cell.n_acc * g.x;
+			pc.sy += cell.n_acc * g.y;
+		}
 	for (const GridVector* p : parts)
-		forCellsIn(*p, t.lat, [&](int r, int c, const GridCell& cell, double u, double w) {
-			t.lat.spread(u, w, [&](int tr, int tc, double f) {
-				t.at(tr, tc).occ += f * cell.n_occupy;
-				t.at(tr, tc).visit += f * cell.n_visit;
+		if (p != &ref)
+			forCellsIn(*p, t.lat, [&](int r, int c, const GridCell& cell, double u, double w) {
+				t.lat.spread(u, w, [&](int tr, int tc, double f) {
+					t.at(tr, tc).occ += f * cell.n_occupy;
+					t.at(tr, tc).visit += f * cell.n_visit;
+				});
+				if (cell.n_acc <= 0) return;
+				const TPoint2D g = p->cellMeanPoint(r, c);  // line 5: to global coordinates
+				double gu, gw;
+				t.lat.f.toLocal(g.x, g.y, gu, gw);
+				TempCell& tc = t.at(t.lat.rowOf(gw), t.lat.colOf(gu));
+				tc.n += cell.n_acc;
+				tc.sx += cell.n_acc * g.x;
+				tc.sy += cell.n_acc * g.y;
 			});
-			if (cell.n_acc <= 0) return;
-			const TPoint2D g = p->cellMeanPoint(r, c);  // line 5: to global coordinates
-			double gu, gw;
-			t.lat.f.toLocal(g.x, g.y, gu, gw);
-			TempCell& tc = t.at(t.lat.rowOf(gw), t.lat.colOf(gu));
-			tc.n += cell.n_acc;
-			tc.sx += cell.n_acc * g.x;
-			tc.sy += cell.n_acc * g.y;
-		});
 	return t;
 }
 
@@ -164,6 +188,60 @@ Line2D fitTemp(const TempGrid& t, const GridVector& ref, bool weighted)
 		l.rho = -l.rho;
 	}
 	return l;
+}
+
+/** Line 20 on the reference's own lattice: the new vector (s, e) lies within
+ * `tol` of the reference's axis and starts within `tol` of its start, so the
+ * new grid is the reference's grid (extended at the end if needed) and only
+ * the other parts are moved into it. Returns false if (s, e) is further out. */
+bool onReferenceLattice(const GridVector& ref, const TPoint2D& s, const TPoint2D& e, double tol, double& len)
+{
+	if (tol <= 0) return false;
+	const SegFrame f = SegFrame::of(ref.start(), ref.direction());
+	double us, ws, ue, we;
+	f.toLocal(s.x, s.y, us, ws);
+	f.toLocal(e.x, e.y, ue, we);
+	len = std::max(ue, ref.length());
+	return std::abs(us) <= tol && std::abs(ws) <= tol && std::abs(we) <= tol && ue >= ref.length() - tol;
+}
+
+/** Every part's counts and points moved into `out`, whose lattice is `lat`
+ * (`same`: a part already on that lattice, copied cell by cell). */
+void resample(const std::vector<const GridVector*>& parts, const Lattice& lat, const GridVector* same,
+			  GridVector& out)
+{
+	const double res = lat.res;
+	const int h = out.halfWidth();
+	for (const GridVector* p : parts)
+	{
+		if (p == same)
+		{
+			for (int r = 0; r < p->rows(); ++r)
+				for (int c = 0; c < p->cols(); ++c)
+				{
+					const GridCell& src = p->cell(r, c);
+					GridCell& dst = out.cell(r - p->halfWidth() + h, c);
+					dst.n_occupy += src.n_occupy, dst.n_visit += src.n_visit;
+					dst.x_acc += src.x_acc, dst.y_acc += src.y_acc, dst.n_acc += src.n_acc;
+				}
+			continue;
+		}
+		forCellsIn(*p, lat, [&](int r, int c, const GridCell& cell, double u, double w) {
+			lat.spread(u, w, [&](int nr, int nc, double f) {
+				out.cell(nr, nc).n_occupy += float(f * cell.n_occupy);
+				out.cell(nr, nc).n_visit += float(f * cell.n_visit);
+			});
+			if (cell.n_acc <= 0) return;
+			const TPoint2D g = p->cellMeanPoint(r, c);
+			double gu, gw;
+			lat.f.toLocal(g.x, g.y, gu, gw);
+			const int nr = lat.rowOf(gw), nc = lat.colOf(gu);
+			GridCell& dst = out.cell(nr, nc);  // accumulators relative to the cell's lower corner
+			dst.x_acc += float(cell.n_acc * (gu - nc * res));
+			dst.y_acc += float(cell.n_acc * (gw - (nr - h - 0.5) * res));
+			dst.n_acc += cell.n_acc;
+		});
+	}
 }
 }  // namespace
 
@@ -204,44 +282,41 @@ GridVector VectorMerger::merge(const std::vector<const GridVector*>& parts) cons
 	}
 	for (const TempCell& c : temp.cells)
 		if (c.n > 0) extend(c.sx / c.n, c.sy / c.n);
-	const TPoint2D s(p0.x + tmin * dir.x, p0.y + tmin * dir.y), e(p0.x + tmax * dir.x, p0.y + tmax * dir.y);
+	TPoint2D s(p0.x + tmin * dir.x, p0.y + tmin * dir.y), e(p0.x + tmax * dir.x, p0.y + tmax * dir.y);
 
 	// line 20: the new grid, every part's counts and points moved into it
 	GridOptions go = cfg_.grid;
 	go.resolution = ref.resolution();
 	go.halfWidth = 0;
 	for (const GridVector* p : parts) go.halfWidth = std::max(go.halfWidth, p->halfWidth());
+	double refLen = 0;
+	const bool keep = go.halfWidth == ref.halfWidth() &&
+					  onReferenceLattice(ref, s, e, cfg_.map.mergeRegridTolerance, refLen) &&
+					  ref.cols() <= columnsFor(refLen, go.resolution) + 1;
+	if (keep)  // the same grid up to the tolerance: the reference's start and axis
+	{
+		s = ref.start();
+		e = TPoint2D(s.x + refLen * ref.direction().x, s.y + refLen * ref.direction().y);
+	}
 	GridVector out(s, e, go);
 	Lattice lat;
-	lat.f = SegFrame::of(s, out.direction());
-	// columns: the new length, or further if a part's cells reach beyond the end
-	double uMax = 0;
+	lat.f = keep ? SegFrame::of(s, ref.direction()) : SegFrame::of(s, out.direction());
+	// columns: the new length, one more if a part's cells reach beyond the end
+	// (a part's last column overhangs its end; never more, or the grids of
+	// vectors merged again and again would grow without bound)
+	double uMax = keep ? (ref.cols() - 0.5) * go.resolution : 0;
 	for (const GridVector* p : parts)
-		forCellsIn(*p, lat, [&](int, int, const GridCell&, double u, double) { uMax = std::max(uMax, u); });
-	const int needCols = int(std::ceil((uMax + 0.5 * go.resolution) / go.resolution - 1e-6));
+		if (!keep || p != &ref)
+			forCellsIn(*p, lat, [&](int, int, const GridCell&, double u, double) { uMax = std::max(uMax, u); });
+	const int needCols = std::min(int(std::ceil((uMax + 0.5 * go.resolution) / go.resolution - 1e-6)),
+								  out.cols() + 1);
 	if (needCols > out.cols()) out.setGeometry(s, e, needCols);
 	for (auto& c : out.cells()) c = GridCell{0.f, 0.f, 0.f, 0.f, 0.f};
 	lat.res = go.resolution;
 	lat.rowMin = -go.halfWidth;
 	lat.rows = out.rows();
 	lat.cols = out.cols();
-	const double res = lat.res;
-	for (const GridVector* p : parts)
-		forCellsIn(*p, lat, [&](int r, int c, const GridCell& cell, double u, double w) {
-			lat.spread(u, w, [&](int nr, int nc, double f) {
-				out.cell(nr, nc).n_occupy += float(f * cell.n_occupy);
-				out.cell(nr, nc).n_visit += float(f * cell.n_visit);
-			});
-			if (cell.n_acc <= 0) return;
-			const TPoint2D g = p->cellMeanPoint(r, c);
-			double gu, gw;
-			lat.f.toLocal(g.x, g.y, gu, gw);
-			const int nr = lat.rowOf(gw), nc = lat.colOf(gu);
-			GridCell& dst = out.cell(nr, nc);  // accumulators relative to the cell's lower corner
-			dst.x_acc += float(cell.n_acc * (gu - nc * res));
-			dst.y_acc += float(cell.n_acc * (gw - (nr - go.halfWidth - 0.5) * res));
-			dst.n_acc += cell.n_acc;
-		});
+	resample(parts, lat, keep ? &ref : nullptr, out);
 
 	out.scanIndex = -1;
 	out.id = 0;

@@ -69,6 +69,7 @@ struct MapOptions
 	double indexCellSize = 2.0;  //!< spatial index bucket size [m]
 	bool mergeOnInsert = true;  //!< merge corresponding vectors (Algorithm 2) when inserting
 	bool wipeCountsBeams = true;  //!< Eq. 8 increments count the fan's beams through a cell (false: 1 per cell per triangle)
+	double mergeRegridTolerance = 0.005;  //!< Algorithm 2 line 20 keeps the reference's grid when the new vector lies within this of it [m]
 
 	template <class V>
 	void visit(V&& v)
@@ -79,6 +80,7 @@ struct MapOptions
 		v("max_rho_diff", maxRhoDiff, "Correspondence criterion 2: max difference of line distances rho [m]");
 		v("index_cell_size", indexCellSize, "Bucket size of the spatial index over vectors [m]");
 		v("merge_on_insert", mergeOnInsert, "Merge corresponding vectors (Algorithm 2) as scans are inserted");
+		v("merge_regrid_tolerance", mergeRegridTolerance, "Algorithm 2, line 20: when the merged vector starts within this distance of the reference part's start and its line stays within it along the reference, the new grid is the reference's grid (extended at the end), so the reference's cells are kept as they are and only the other parts are moved; 0: always build a new grid [m]");
 		v("wipe_counts_beams", wipeCountsBeams, "Eq. 8: a wipe increment counts the beams of the triangle's fan crossing the cell, the unit of Algorithm 1 (false: 1 per cell per scan, the paper's Fig. 2)");
 	}
 };

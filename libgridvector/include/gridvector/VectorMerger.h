@@ -28,10 +28,22 @@ namespace gridvector
  * grids coincide with the new grid (same line, columns on the same lattice)
  * every cell maps onto one cell and Eq. 6 is unchanged at every point; in
  * general it is unchanged for every cell-sized average along the vector.
- * The new grid has the columns of the new length, more if a part's cells
- * reach beyond the new end; counts of cells that still fall outside it
- * (parts at an angle) go to the nearest border cell. The gravity centre of each cell's points moves to
- * the new cell containing it, at its exact position.
+ * The new grid has the columns of the new length, one more if a part's cells
+ * reach beyond the new end (a last column overhangs its vector's end); counts
+ * of cells that still fall outside it (parts at an angle, overhanging prior
+ * cells) go to the nearest border cell, so a grid never outgrows its vector
+ * however often it is merged. The gravity centre of each cell's points moves
+ * to the new cell containing it, at its exact position.
+ *
+ * Line 20 on the reference's lattice (map.merge_regrid_tolerance): when the
+ * new vector starts within the tolerance of the reference part's start and its
+ * line stays within the tolerance of the reference's axis over its length,
+ * the new grid is the reference's grid (extended at the end): the
+ * reference's cells are kept as they are, only the other parts are moved into
+ * it. Merging a short new view into a long wall then costs O(the new view)
+ * for the moved cells plus a copy of the wall, instead of a resampling of the
+ * whole wall, and the wall's counts are not smeared along it by repeated
+ * sub-millimetre refits. The fit itself (lines 12-18) always uses every cell.
  *
  * Merging N parts at once equals N-1 pairwise merges of Algorithm 2 with one
  * fit and one resampling instead of N-1 of each. */

@@ -6,9 +6,13 @@
 //    --band metres of a vector that both maps know;
 //  - insertion speed (scans/s) of both, and time per scan over the first and
 //    the last 10 % of the log (sequential insertScan);
-//  - the batch path (buildPerScan + mergeAll) used by the EM loop.
+//  - the batch path (buildPerScan + mergeAll) used by the EM loop;
+//  - n_g/n_v as in Table 1 (final static map): the batch per-scan vectors
+//    classified by the E-step (Eq. 14-15) at these poses, the dynamic ones
+//    removed, the static ones merged (Eq. 4), as EM-SLAM's final map.
 //
 //   gv-bench-map [--config FILE.ini] [--max-scans N] [--band M] LOG...
+#include <gridvector/EStep.h>
 #include <gridvector/ErrorText.h>
 #include <gridvector/GlobalMap.h>
 #include <gridvector/MemoryAccounting.h>
@@ -151,6 +155,7 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 	const VectorExtractor ex(cfg.extraction, cfg.grid);
 	std::vector<LocalScan> scans(n);
 	std::vector<double> tExtract(n), tInsert(n), tMrpt(n);
+	std::vector<double> work(n), cellsWiped(n);  // deterministic work per scan (load-independent)
 	for (size_t t = 0; t < n; ++t)
 	{
 		const auto a = Clock::now();
@@ -165,6 +170,9 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 		const auto a = Clock::now();
 		map.insertScan(poses[t], scans[t]);
 		tInsert[t] = seconds(a, Clock::now());
+		const auto& st = map.lastInsertStats();
+		work[t] = double(st.wipe.candidates);
+		cellsWiped[t] = double(st.wipe.cellsHit + st.wipe.cellsVisited);
 	}
 	// MRPT's occupancy grid from the same scans and poses
 	mrpt::maps::COccupancyGridMap2D grid(-10, 10, -10, 10, float(cfg.grid.resolution));
@@ -186,10 +194,17 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 	const auto b1 = Clock::now();
 	const MergeResult merged = GlobalMap::mergeAll(perScan, cfg);
 	const auto b2 = Clock::now();
+	// Table 1's maps are EM's final maps: the E-step's static children, merged
+	const EStepResult split = EStep(cfg.estep, cfg.grid).run(perScan);
+	std::vector<GridVector> statics;
+	for (const auto& v : split.children)
+		if (v.state != VectorState::Dynamic) statics.push_back(v);
+	const MergeResult staticMap = GlobalMap::mergeAll(statics, cfg);
 
 	const Timing te = perScanTiming(tExtract), ti = perScanTiming(tInsert), tm = perScanTiming(tMrpt);
 	const MemoryReport mem = MemoryAccounting::account(map.vectors(), 0.1);
 	const MemoryReport memB = MemoryAccounting::account(merged.vectors, 0.1);
+	const MemoryReport memS = MemoryAccounting::account(staticMap.vectors, 0.1);
 	const Agreement ag = agreement(map.vectors(), grid, band), agB = agreement(merged.vectors, grid, band);
 	const Agreement agM = mrptSelfAgreement(map.vectors(), grid, gridRev, band);
 	size_t perScanVectors = 0;
@@ -201,6 +216,8 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 				mem.bytesGrid, mem.bytesGridVector);
 	std::printf("batch:      %zu vectors, %.1f m; n_g/n_v %.2f; buildPerScan %.3f s, mergeAll %.3f s\n",
 				memB.vectorCount, memB.vectorLength, memB.ratio, seconds(b0, b1), seconds(b1, b2));
+	std::printf("static map (Table 1: E-step at these poses, dynamic removed, static merged): %zu vectors, %.1f m (dynamic %.1f m of per-scan vectors removed); n_g/n_v %.2f\n",
+				memS.vectorCount, memS.vectorLength, split.dynamicLength, memS.ratio);
 	std::printf("agreement with MRPT grid (cells within %.2f m of a vector, known in both): sequential %.2f %% (%zu/%zu of %zu; occupied %zu/%zu), batch %.2f %% (%zu/%zu)\n",
 				band, ag.pct(), ag.same, ag.both, ag.band, ag.occSame, ag.occBoth, agB.pct(), agB.same, agB.both);
 	std::printf("MRPT grid vs MRPT grid of the same scans inserted in reverse order, same cells: %.2f %% (%zu/%zu)\n",
@@ -209,9 +226,18 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 				n / te.total, n / ti.total, n / (te.total + ti.total), n / tm.total, tm.total / (te.total + ti.total));
 	std::printf("insertScan per scan: first 10 %% %.3f ms, last 10 %% %.3f ms (map %zu vectors at the end)\n",
 				1e3 * ti.first10, 1e3 * ti.last10, map.size());
-	std::printf("| %s | %zu | %zu | %.1f | %.1f | %.2f | %.2f | %.1f %% | %.1f %% | %.0f | %.0f | %.2f | %.3f / %.3f | %.2f |\n",
+	std::printf("insertScan per scan by decile [ms]:");
+	for (int d = 0; d < 10; ++d)
+	{
+		const size_t a = n * d / 10, b = std::max(a + 1, n * (d + 1) / 10);
+		std::printf(" %.3f", 1e3 * std::accumulate(tInsert.begin() + long(a), tInsert.begin() + long(std::min(b, n)), 0.0) / double(b - a));
+	}
+	const Timing tw = perScanTiming(work), tc = perScanTiming(cellsWiped);
+	std::printf("\nwork per scan, first/last 10 %%: Eq. 8 triangle-vector candidates %.0f / %.0f, map cells wiped %.0f / %.0f\n",
+				tw.first10, tw.last10, tc.first10, tc.last10);
+	std::printf("| %s | %zu | %zu | %.1f | %.1f | %.2f | %.2f | %.2f | %.1f %% | %.1f %% | %.0f | %.0f | %.2f | %.3f / %.3f | %.2f |\n",
 				path.substr(path.find_last_of('/') + 1).c_str(), n, mem.vectorCount, mem.vectorLength, mem.spaceSize,
-				mem.ratio, mem.ratioCells, ag.pct(), agB.pct(), n / (te.total + ti.total), n / tm.total,
+				mem.ratio, memS.ratio, mem.ratioCells, ag.pct(), agB.pct(), n / (te.total + ti.total), n / tm.total,
 				tm.total / (te.total + ti.total), 1e3 * ti.first10, 1e3 * ti.last10,
 				seconds(b0, b2));
 	std::fflush(stdout);
@@ -239,7 +265,7 @@ int main(int argc, char** argv)
 		const double band = args.getDouble("band", 0.2);
 		gSamples = int(args.getInt("samples", cfg.occupancy.samplesPerAxis, 0, 16));
 		gMaxPooling = cfg.occupancy.maxPooling;
-		std::printf("| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/cells | agree seq | agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+		std::printf("| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/n_v static | n_g/cells | agree seq | agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 		for (const auto& log : args.positional()) benchLog(log, cfg, maxScans, band);
 	}
 	catch (const io::UsageError& e)

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace gridvector;
@@ -39,18 +40,53 @@ TEST(DoorDetector, TwoStatesOfOneLeafGiveAHinge)
 	EXPECT_EQ(doors[0].wall, 0u);
 }
 
-TEST(DoorDetector, CornersNeedAStaticAndADynamicVector)
+TEST(DoorDetector, CornersNeedAStaticWallAndADoorLengthCandidate)
 {
 	const std::vector<GridVector> v = {vec(0, 0, 3, 0, S), vec(3, 0, 3, 0.9, S), vec(3, 0, 3.64, 0.64, D)};
 	const auto cs = DoorDetector().corners(v);
-	ASSERT_EQ(cs.size(), 2u);  // the dynamic vector with each static one; never static-static
+	// the dynamic vector with each static one, and the static 0.9 m vector with the 3 m wall
+	// (a static state of door length); the 3 m wall is no leaf
+	ASSERT_EQ(cs.size(), 3u);
+	size_t dynamicCorners = 0;
 	for (const auto& c : cs)
 	{
-		EXPECT_EQ(c.leaf, 2u);
-		EXPECT_NE(c.wall, 2u);
-		EXPECT_NEAR(c.leafAngle, M_PI / 4, 1e-6);
+		EXPECT_NE(c.wall, c.leaf);
+		EXPECT_NE(c.leaf, 0u);
 		EXPECT_NEAR(c.vertex.x, 3.0, 1e-9);
+		if (!c.dynamicLeaf) continue;
+		++dynamicCorners;
+		EXPECT_EQ(c.leaf, 2u);
+		EXPECT_NEAR(c.leafAngle, M_PI / 4, 1e-6);
 	}
+	EXPECT_EQ(dynamicCorners, 2u);
+	// a static vector continuing the wall's line is the wall, not a corner
+	EXPECT_TRUE(DoorDetector().corners({vec(0, 0, 3, 0, S), vec(3.05, 0, 3.95, 0, S)}).empty());
+}
+
+TEST(DoorDetector, ClosedDynamicStateAndStaticOpenStateGiveADoor)
+{
+	// the doorway (3, 0)-(3.9, 0) in a wall; the closed leaf was seen through (dynamic),
+	// the open leaf never (static by Eq. 6): both are states of the door hinged at (3, 0)
+	const std::vector<GridVector> v = {vec(0, 0, 3, 0, S), vec(3.9, 0, 6, 0, S), vec(3.02, 0, 3.88, 0, D),
+									   vec(3.0, 0.02, 3.0, 0.9, S)};
+	const auto doors = DoorDetector().detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_NEAR(doors[0].hinge.x, 3.0, 0.05);
+	EXPECT_NEAR(doors[0].hinge.y, 0.0, 0.05);
+	EXPECT_EQ(doors[0].wall, 0u);
+	ASSERT_EQ(doors[0].angles.size(), 2u);
+	EXPECT_NEAR(doors[0].angles[0], 0.0, 0.05);
+	EXPECT_NEAR(doors[0].angles[1], M_PI / 2, 0.05);
+	std::vector<size_t> leaves = doors[0].leaves;
+	std::sort(leaves.begin(), leaves.end());
+	EXPECT_EQ(leaves, (std::vector<size_t>{2, 3}));
+}
+
+TEST(DoorDetector, StaticStatesAloneAreNoDoor)
+{
+	// two static door-length vectors at a wall end: no dynamic candidate (Sec. 5.4)
+	EXPECT_TRUE(
+		DoorDetector().detect({vec(0, 0, 3, 0, S), vec(3, 0, 3, 0.9, S), vec(3, 0, 3.64, 0.64, S)}).empty());
 }
 
 TEST(DoorDetector, UnequalLeavesOrOneStateAreNoDoor)

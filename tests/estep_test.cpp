@@ -128,3 +128,90 @@ TEST(EStep, RunRecordsChildrenPerParent)
 	EXPECT_NEAR(r.dynamicLength, 2.0, 1e-9);
 	EXPECT_EQ(r.children[r.childrenOf[2][0]].id, EStep::childId(9, 0));
 }
+
+TEST(EStep, FinalSplitDemotesPlacesOccupiedPartOfTheTime)
+{
+	EStepOptions o;
+	o.finalStaticThreshold = 0.7;
+	const EStep e(o);
+	// static at 0.5: a wall (0.95) and a door closed 60 % of the time (0.6)
+	GridVector child = withProfile(runs({{10, 0.95}, {10, 0.6}}));
+	child.state = VectorState::Static;
+	GridVector moving = withProfile(runs({{10, 0.1}}));
+	moving.state = VectorState::Dynamic;
+	moving.id = 8;
+	const auto out = e.finalSplit({child, moving});
+	ASSERT_EQ(out.size(), 3u);
+	EXPECT_EQ(out[0].state, VectorState::Static);
+	EXPECT_NEAR(out[0].length(), 1.0, 1e-9);
+	EXPECT_EQ(out[1].state, VectorState::Dynamic);
+	EXPECT_NEAR(out[1].length(), 1.0, 1e-9);
+	EXPECT_EQ(out[0].id, EStep::childId(child.id, 0));
+	EXPECT_EQ(out[1].id, EStep::childId(child.id, 1));
+	EXPECT_EQ(out[2].id, moving.id);  // dynamic children stay as they are
+	EXPECT_EQ(out[2].state, VectorState::Dynamic);
+}
+
+namespace
+{
+// A merged-looking vector: columns [a, b) covered by no part (all counts zero).
+GridVector withHole(int cols, int a, int b)
+{
+	GridVector v = withProfile(std::vector<double>(size_t(cols), 0.95));
+	for (int r = 0; r < v.rows(); ++r)
+		for (int c = a; c < b; ++c) v.cell(r, c) = GridCell{0.f, 0.f, 0.f, 0.f, 0.f};
+	return v;
+}
+}  // namespace
+
+TEST(EStep, ObservedRunsSplitAtUnobservedGaps)
+{
+	const auto runs10 = EStep::observedRuns(withHole(30, 10, 20), 3);
+	ASSERT_EQ(runs10.size(), 2u);
+	EXPECT_EQ(runs10[0].first, 0);
+	EXPECT_EQ(runs10[0].last, 10);
+	EXPECT_EQ(runs10[1].first, 20);
+	EXPECT_EQ(runs10[1].last, 30);
+	// a gap shorter than the minimum stays inside; an unobserved end is trimmed
+	const auto r2 = EStep::observedRuns(withHole(30, 10, 12), 3);
+	ASSERT_EQ(r2.size(), 1u);
+	EXPECT_EQ(r2[0].last, 30);
+	const auto r3 = EStep::observedRuns(withHole(30, 25, 30), 3);
+	ASSERT_EQ(r3.size(), 1u);
+	EXPECT_EQ(r3[0].last, 25);
+}
+
+TEST(EStep, CutUnobservedSplitsMergedVectorsAndTheirSources)
+{
+	EStepOptions o;
+	o.minPieceLength = 0.3;
+	const EStep e(o);
+	GridVector merged = withHole(30, 10, 20);  // (1, 1)-(4, 1), nothing seen in x 2..3
+	merged.id = 100;
+	merged.state = VectorState::Static;
+	GridVector left(TPoint2D(1, 1), TPoint2D(2, 1), GridOptions{}), right(TPoint2D(3, 1), TPoint2D(4, 1), GridOptions{});
+	left.id = 1, right.id = 2;
+	MergeResult m;
+	m.vectors = {merged};
+	m.sources = {{1, 2}};
+	const MergeResult out = e.cutUnobserved(m, {left, right});
+	ASSERT_EQ(out.vectors.size(), 2u);
+	ASSERT_EQ(out.sources.size(), 2u);
+	EXPECT_NEAR(out.vectors[0].start().x, 1.0, 1e-9);
+	EXPECT_NEAR(out.vectors[0].end().x, 2.0, 1e-9);
+	EXPECT_NEAR(out.vectors[1].start().x, 3.0, 1e-9);
+	EXPECT_NEAR(out.vectors[1].end().x, 4.0, 1e-9);
+	EXPECT_EQ(out.sources[0], std::vector<uint64_t>{1});
+	EXPECT_EQ(out.sources[1], std::vector<uint64_t>{2});
+	for (const auto& v : out.vectors) EXPECT_EQ(v.state, VectorState::Static);
+	EXPECT_NE(out.vectors[0].id, out.vectors[1].id);
+	// counts are the merged vector's, none lost
+	EXPECT_NEAR(out.vectors[0].totalOccupy() + out.vectors[1].totalOccupy(), merged.totalOccupy(), 1e-3);
+	// a vector without gaps is copied unchanged
+	m.vectors = {withProfile(runs({{10, 0.9}}))};
+	m.sources = {{5}};
+	const MergeResult same = e.cutUnobserved(m, {});
+	ASSERT_EQ(same.vectors.size(), 1u);
+	EXPECT_EQ(same.sources[0], std::vector<uint64_t>{5});
+	EXPECT_EQ(same.vectors[0].cols(), 10);
+}

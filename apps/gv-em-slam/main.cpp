@@ -121,7 +121,7 @@ int run(const io::ArgParser& args)
 	io::Trajectory traj;
 	for (size_t t = 0; t < res.poses.size(); ++t) traj.emplace_back(log.scans[t].timestamp, res.poses[t]);
 	io::writeTrajectory(dir + "trajectory.txt", traj);
-	const auto doors = DoorDetector(cfg.doors).detect(res.finalVectors);
+	const auto& doors = res.doors;
 	fig.doors = doors.size();
 	app::writeVectors(dir + "vectors.txt", res.finalVectors);
 	app::writeSvg(dir + "vectors.svg", res.finalVectors, doors, res.poses);

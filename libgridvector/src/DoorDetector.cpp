@@ -16,19 +16,22 @@ double dist(const TPoint2D& a, const TPoint2D& b) { return std::hypot(a.x - b.x,
 
 DoorDetector::DoorDetector(const DoorOptions& opts) : opts_(opts) {}
 
-// Fig. 10: a corner is built by a static and a dynamic vector meeting at an end.
+// Fig. 10: a corner is built by a static vector (the wall) and a door candidate meeting at an end.
+// The candidate is dynamic; a static one of door length counts too, as a state that Eq. 6 could
+// not see change (an open leaf nobody looked through after it closed) — detect() only keeps doors
+// with a dynamic state. A dynamic candidate may continue the wall's line (a closed leaf).
 std::vector<Corner> DoorDetector::corners(const std::vector<GridVector>& v) const
 {
 	std::vector<Corner> out;
 	for (size_t d = 0; d < v.size(); ++d)
 	{
-		if (v[d].state != VectorState::Dynamic) continue;
 		const double len = v[d].length();
 		if (len < opts_.minDoorLength - opts_.maxLengthDiff || len > opts_.maxDoorLength + opts_.maxLengthDiff)
 			continue;
+		const bool dynamicLeaf = v[d].state == VectorState::Dynamic;
 		for (size_t s = 0; s < v.size(); ++s)
 		{
-			if (v[s].state != VectorState::Static) continue;
+			if (s == d || v[s].state != VectorState::Static) continue;
 			double best = opts_.maxCornerGap;
 			int end = -1;
 			for (int de = 0; de < 2; ++de)
@@ -41,16 +44,28 @@ std::vector<Corner> DoorDetector::corners(const std::vector<GridVector>& v) cons
 			Corner c;
 			c.wall = s;
 			c.leaf = d;
+			c.dynamicLeaf = dynamicLeaf;
 			c.vertex = end ? v[d].end() : v[d].start();
 			const TPoint2D tip = end ? v[d].start() : v[d].end();
 			c.leafAngle = std::atan2(tip.y - c.vertex.y, tip.x - c.vertex.x);
 			c.leafLength = len;
 			const double turn = std::abs(mrpt::math::wrapToPi(c.leafAngle - v[s].psi()));
-			if (std::min(turn, M_PI - turn) * 180 / M_PI < opts_.minCornerAngleDeg) continue;
+			const double bend = std::min(turn, M_PI - turn) * 180 / M_PI;
+			if (bend < opts_.minCornerAngleDeg && !(dynamicLeaf && collinearBeyond(v[s], c.vertex, tip)))
+				continue;
 			out.push_back(c);
 		}
 	}
 	return out;
+}
+
+// A closed leaf: on the wall's line, pointing away from the wall (not lying along it).
+bool DoorDetector::collinearBeyond(const GridVector& wall, const TPoint2D& vertex, const TPoint2D& tip) const
+{
+	const TPoint2D d = wall.direction(), c = wall.centre();
+	auto along = [&](const TPoint2D& p) { return (p.x - c.x) * d.x + (p.y - c.y) * d.y; };
+	const double off = std::abs((tip.x - c.x) * d.y - (tip.y - c.y) * d.x);
+	return off <= opts_.maxCornerGap && std::abs(along(tip)) > std::abs(along(vertex));
 }
 
 bool DoorDetector::sameDoor(const Corner& a, const Corner& b) const
@@ -62,7 +77,10 @@ bool DoorDetector::sameDoor(const Corner& a, const Corner& b) const
 // Sec. 5.4: corners sharing the wall, close vertices, equal leaf lengths -> hinge + states.
 std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 {
-	const auto cs = corners(v);
+	auto cs = corners(v);
+	// the longest wall first: a static open leaf can also act as a "wall" of the closed state
+	std::stable_sort(cs.begin(), cs.end(),
+					 [&](const Corner& a, const Corner& b) { return v[a.wall].length() > v[b.wall].length(); });
 	std::vector<Door> doors;
 	std::vector<bool> used(cs.size(), false);
 	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
@@ -81,7 +99,9 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 			});
 			if (distinct) angles.push_back(cs[k].leafAngle);
 		}
-		if (angles.size() < 2) continue;
+		// Sec. 5.4: the door candidate is a dynamic vector; static states only join one
+		const bool anyDynamic = std::any_of(group.begin(), group.end(), [&](size_t k) { return cs[k].dynamicLeaf; });
+		if (angles.size() < 2 || !anyDynamic) continue;
 		Door d;
 		d.wall = cs[i].wall;
 		double len = 0;

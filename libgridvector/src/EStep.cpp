@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <unordered_map>
 
 namespace gridvector
 {
@@ -139,6 +140,102 @@ EStepResult EStep::run(const std::vector<GridVector>& parents, const EStepResult
 		}
 	}
 	return r;
+}
+
+// Eq. 14 on the converged map: static children must be occupied in nearly every observation.
+std::vector<GridVector> EStep::finalSplit(const std::vector<GridVector>& children) const
+{
+	EStepOptions o = opts_;
+	o.staticThreshold = opts_.finalStaticThreshold;
+	const EStep strict(o, grid_);
+	std::vector<GridVector> out;
+	out.reserve(children.size());
+	for (const GridVector& c : children)
+	{
+		if (c.state == VectorState::Dynamic)
+		{
+			out.push_back(c);
+			continue;
+		}
+		for (auto& k : strict.split(c)) out.push_back(std::move(k));
+	}
+	return out;
+}
+
+// Runs of columns with observations; gaps of >= minGapColumns empty columns separate them.
+std::vector<ProfilePiece> EStep::observedRuns(const GridVector& v, int minGapColumns)
+{
+	std::vector<ProfilePiece> out;
+	int gap = 0;
+	for (int c = 0; c < v.cols(); ++c)
+	{
+		bool seen = false;
+		for (int r = 0; r < v.rows() && !seen; ++r) seen = v.cell(r, c).n_visit > 0;
+		if (!seen)
+		{
+			++gap;
+			continue;
+		}
+		if (out.empty() || gap >= minGapColumns) out.push_back({c, c + 1, true});
+		else out.back().last = c + 1;  // a short gap stays inside the run
+		gap = 0;
+	}
+	return out;
+}
+
+// Eq. 4 map without stretches no per-scan vector observed (Eq. 6 undefined there).
+MergeResult EStep::cutUnobserved(const MergeResult& merged, const std::vector<GridVector>& inputs) const
+{
+	std::unordered_map<uint64_t, size_t> byId;
+	for (size_t i = 0; i < inputs.size(); ++i) byId.emplace(inputs[i].id, i);
+	uint64_t nextId = 1;
+	for (const auto& v : merged.vectors) nextId = std::max(nextId, v.id + 1);
+	for (const auto& v : inputs) nextId = std::max(nextId, v.id + 1);
+	const int minGap = std::max(1, int(std::ceil(opts_.minPieceLength / grid_.resolution - 1e-9)));
+	MergeResult out;
+	for (size_t k = 0; k < merged.vectors.size(); ++k)
+	{
+		const GridVector& v = merged.vectors[k];
+		auto runs = observedRuns(v, minGap);
+		if (runs.size() == 1 && runs[0].first == 0 && runs[0].last == v.cols())
+		{
+			out.vectors.push_back(v);
+			out.sources.push_back(k < merged.sources.size() ? merged.sources[k] : std::vector<uint64_t>{});
+			continue;
+		}
+		if (runs.empty()) continue;
+		// each source goes to the run its centre projects into (or the nearest)
+		std::vector<std::vector<uint64_t>> src(runs.size());
+		const TPoint2D d = v.direction();
+		for (uint64_t id : k < merged.sources.size() ? merged.sources[k] : std::vector<uint64_t>{})
+		{
+			const auto it = byId.find(id);
+			double col = 0;
+			if (it != byId.end())
+			{
+				const TPoint2D c = inputs[it->second].centre();
+				col = ((c.x - v.start().x) * d.x + (c.y - v.start().y) * d.y) / v.resolution();
+			}
+			size_t best = 0;
+			double bestDist = 1e300;
+			for (size_t q = 0; q < runs.size(); ++q)
+			{
+				const double dist = std::max({0.0, runs[q].first - col, col - runs[q].last});
+				if (dist < bestDist) bestDist = dist, best = q;
+			}
+			src[best].push_back(id);
+		}
+		for (size_t q = 0; q < runs.size(); ++q)
+		{
+			runs[q].isStatic = v.state != VectorState::Dynamic;
+			GridVector piece = subVector(v, runs[q]);
+			piece.state = v.state;
+			piece.id = runs.size() == 1 ? v.id : nextId++;
+			out.vectors.push_back(std::move(piece));
+			out.sources.push_back(std::move(src[q]));
+		}
+	}
+	return out;
 }
 
 }  // namespace gridvector

@@ -1,3 +1,4 @@
+#include <gridvector/DoorDetector.h>
 #include <gridvector/EmSlam.h>
 #include <gridvector/SE2.h>
 
@@ -237,10 +238,11 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 	// Final map: merge static and dynamic vectors separately (Eq. 4, Algorithm 2).
 	const auto t0 = std::chrono::steady_clock::now();
 	rebase(res.perScan, ePoses, res.poses);
+	res.perScan = estep.finalSplit(res.perScan);  // Eq. 14 on the converged map
 	std::vector<GridVector> st, dy;
 	for (const auto& v : res.perScan) (v.state == VectorState::Dynamic ? dy : st).push_back(v);
-	res.staticMap = GlobalMap::mergeAll(st, cfg_);
-	res.dynamicMap = GlobalMap::mergeAll(dy, cfg_);
+	res.staticMap = estep.cutUnobserved(GlobalMap::mergeAll(st, cfg_), st);
+	res.dynamicMap = estep.cutUnobserved(GlobalMap::mergeAll(dy, cfg_), dy);
 	for (auto* m : {&res.staticMap, &res.dynamicMap})
 		for (auto v : m->vectors)
 		{
@@ -248,6 +250,10 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 			v.id = res.finalVectors.size() + 1;  // unique across both maps
 			res.finalVectors.push_back(std::move(v));
 		}
+	// Sec. 5.4: doors; a leaf state Eq. 6 kept static is a door state, so dynamic
+	res.doors = DoorDetector(cfg_.doors).detect(res.finalVectors);
+	for (const Door& d : res.doors)
+		for (size_t leaf : d.leaves) res.finalVectors[leaf].state = VectorState::Dynamic;
 	res.finalMapSeconds = since(t0);
 	return res;
 }

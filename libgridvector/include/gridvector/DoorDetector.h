@@ -10,12 +10,13 @@
 
 namespace gridvector
 {
-/** A corner: one static vector (the wall) and one dynamic vector (a door
- * candidate) with an end of each close together; the vertex is the dynamic
- * vector's end there. */
+/** A corner: one static vector (the wall) and a door candidate (a dynamic
+ * vector, or a static one of door length) with an end of each close together;
+ * the vertex is the candidate's end there. */
 struct Corner
 {
-	size_t wall = 0, leaf = 0;  //!< indices of the static and the dynamic vector
+	size_t wall = 0, leaf = 0;  //!< indices of the static vector and the candidate
+	bool dynamicLeaf = true;  //!< the candidate is dynamic (Eq. 14)
 	mrpt::math::TPoint2D vertex;
 	double leafAngle = 0;  //!< direction of the leaf from the vertex outwards [rad]
 	double leafLength = 0;
@@ -31,9 +32,13 @@ struct Door
 	std::vector<size_t> leaves;  //!< indices of the dynamic vectors
 };
 
-/** Two corners sharing the static vector, with close vertices and dynamic
- * vectors of equal length (and different directions) make a hinge; every
- * corner agreeing with it is one more state of that door. */
+/** Two corners sharing the static vector, with close vertices and leaves of
+ * equal length (and different directions) make a hinge; every corner agreeing
+ * with it is one more state of that door. At least one state must be dynamic
+ * (Sec. 5.4: the dynamic vector is the door candidate); a static leaf joining
+ * it is a state Eq. 6 could not see change (an open leaf whose place was never
+ * seen through after the door closed) and is a door state all the same.
+ * A dynamic leaf may continue the wall's line: the closed state. */
 class DoorDetector
 {
    public:
@@ -44,6 +49,8 @@ class DoorDetector
 
    private:
 	bool sameDoor(const Corner& a, const Corner& b) const;
+	bool collinearBeyond(const GridVector& wall, const mrpt::math::TPoint2D& vertex,
+						 const mrpt::math::TPoint2D& tip) const;
 	DoorOptions opts_;
 };
 

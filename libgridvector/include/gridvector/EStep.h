@@ -1,6 +1,7 @@
 // Sec. 4.1, Eq. 14-15, Fig. 4: the expectation step — static/dynamic vectors.
 #pragma once
 
+#include <gridvector/GlobalMap.h>
 #include <gridvector/GridVector.h>
 #include <gridvector/GridVectorConfig.h>
 
@@ -53,6 +54,26 @@ class EStep
 	/** The E-step over all vectors; `previous` (same parents, same order, possibly
 	 * moved) gives each column's last state for the hysteresis. */
 	EStepResult run(const std::vector<GridVector>& parents, const EStepResult* previous = nullptr) const;
+
+	/** The final classification of the converged map's children: every
+	 * static child is split again at estep.final_static_threshold (dynamic
+	 * children stay dynamic). A static place must be occupied in nearly every
+	 * observation (Eq. 6 near 1): a door closed most of the time or an object
+	 * that stood still for half the run reads 0.5-0.85. New children get
+	 * childId(child.id, k). */
+	std::vector<GridVector> finalSplit(const std::vector<GridVector>& children) const;
+
+	/** Column runs of a merged vector that hold observations, split where
+	 * at least `minGapColumns` consecutive columns have none (n_visit = 0 in
+	 * every row: no per-scan vector covered them, e.g. a door opening between
+	 * two merged wall pieces; Eq. 6 has an empty sum there). */
+	static std::vector<ProfilePiece> observedRuns(const GridVector& v, int minGapColumns);
+
+	/** The merged map (Eq. 4) without its unobserved stretches: each vector
+	 * is cut into its observedRuns (gaps of at least estep.min_piece_length),
+	 * each piece keeps the state of the vector and the sources (ids of
+	 * `inputs`, the vectors given to mergeAll) whose centre projects into it. */
+	MergeResult cutUnobserved(const MergeResult& merged, const std::vector<GridVector>& inputs) const;
 
 	static uint64_t childId(uint64_t parentId, size_t k) { return parentId * 256 + k; }
 	static uint64_t parentIdOf(uint64_t childId) { return childId / 256; }

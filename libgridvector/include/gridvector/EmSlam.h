@@ -1,6 +1,7 @@
 // Sec. 4: the modified EM-SLAM — E-step (static/dynamic) and M-step (pose graph) alternated.
 #pragma once
 
+#include <gridvector/DoorDetector.h>
 #include <gridvector/EStep.h>
 #include <gridvector/GlobalMap.h>
 #include <gridvector/GridVectorConfig.h>
@@ -34,7 +35,8 @@ struct EmResult
 	bool converged = false;
 	std::vector<GridVector> perScan;  //!< last E-step's children m_{i,t} (global, state set)
 	MergeResult staticMap, dynamicMap;  //!< merged static / dynamic vectors (Eq. 4)
-	std::vector<GridVector> finalVectors;  //!< staticMap then dynamicMap vectors, state set
+	std::vector<GridVector> finalVectors;  //!< staticMap then dynamicMap vectors, state set (door leaves dynamic)
+	std::vector<Door> doors;  //!< Sec. 5.4 on finalVectors (Door::leaves index it)
 	double finalMapSeconds = 0;
 	size_t keyframes = 0;  //!< scans EM worked on (the others follow their odometry)
 };

@@ -89,6 +89,7 @@ struct MapOptions
 struct EStepOptions
 {
 	double staticThreshold = 0.50;  //!< profile value at or above which a piece is static
+	double finalStaticThreshold = 0.70;  //!< the same for the final map, after EM converged
 	double minPieceLength = 0.30;  //!< smallest sub-vector kept by the split-and-merge [m]
 	bool usePeakRow = true;  //!< profile = largest cell probability across the width (false: the mean)
 	double minVisits = 3.0;  //!< peak-row profile: cells observed fewer times than this do not count
@@ -101,6 +102,7 @@ struct EStepOptions
 	void visit(V&& v)
 	{
 		v("static_threshold", staticThreshold, "Occupancy-profile threshold: above is static, below dynamic");
+		v("final_static_threshold", finalStaticThreshold, "Final map only (after EM): static children are split again at this profile value; a static place is occupied in nearly every observation");
 		v("min_piece_length", minPieceLength, "Smallest static/dynamic sub-vector; shorter pieces merge into neighbours [m]");
 		v("use_peak_row", usePeakRow, "Profile value of a column: the largest cell probability across the width (true) or the mean across the width (false)");
 		v("free_weight", freeWeight, "Peak-row profile: a beam through a cell weighs this many hits (1: the counting model's n_occupy/n_visit; >1: what has been seen through is dynamic sooner)");
@@ -234,7 +236,7 @@ struct DoorOptions
 	double maxCornerGap = 0.30;  //!< a static and a dynamic vector form a corner when their ends are this close [m]
 	double minCornerAngleDeg = 10.0;  //!< ... and their directions differ by at least this [deg]
 	double maxVertexDistance = 0.25;  //!< corners' vertices closer than this share a hinge [m]
-	double maxLengthDiff = 0.15;  //!< dynamic vectors of equal length within this [m]
+	double maxLengthDiff = 0.25;  //!< door leaves of equal length within this [m]
 	double minDoorLength = 0.6;  //!< door leaf length range [m]
 	double maxDoorLength = 1.4;
 	double minStateDiffDeg = 10.0;  //!< two door states differ by at least this [deg]
@@ -245,7 +247,7 @@ struct DoorOptions
 		v("max_corner_gap", maxCornerGap, "A static and a dynamic vector form a corner when an end of each is this close [m]");
 		v("min_corner_angle_deg", minCornerAngleDeg, "A corner's two vectors differ in direction by at least this [deg]");
 		v("max_vertex_distance", maxVertexDistance, "Corners whose vertices are closer than this share a hinge [m]");
-		v("max_length_diff", maxLengthDiff, "Dynamic vectors whose lengths differ by less than this are one door [m]");
+		v("max_length_diff", maxLengthDiff, "Door leaves (states) whose lengths differ by less than this are one door [m]");
 		v("min_door_length", minDoorLength, "Shortest door leaf [m]");
 		v("max_door_length", maxDoorLength, "Longest door leaf [m]");
 		v("min_state_diff_deg", minStateDiffDeg, "Two door states (leaf angles) differ by at least this [deg]");

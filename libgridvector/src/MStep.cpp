@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
-#include <unordered_map>
 
 namespace gridvector
 {
@@ -31,14 +30,72 @@ Matrix3d toWorld(const Matrix3d& info, double framePhi)
 		std::cos(framePhi);
 	return R * info * R.transpose();
 }
+
+/** Earlier poses near the current one, grouped into passes (runs of poses at
+ * most `runGap` apart in time), poses added one by one in time order. */
+class PassFinder
+{
+   public:
+	struct Pass
+	{
+		uint32_t lo = 0, hi = 0, nearest = 0;
+	};
+	explicit PassFinder(double cell) : cell_(cell) {}
+
+	/** Passes of poses j + gap < i with within(j) true; then adds pose i. */
+	template <class Within>
+	const std::vector<Pass>& next(uint32_t i, const std::vector<TPose2D>& poses, uint32_t gap,
+								  uint32_t runGap, Within within)
+	{
+		const Key c = keyOf(poses[i]);
+		near_.clear();
+		for (long dx = -1; dx <= 1; ++dx)
+			for (long dy = -1; dy <= 1; ++dy)
+			{
+				auto g = grid_.find({c.first + dx, c.second + dy});
+				if (g == grid_.end()) continue;
+				for (uint32_t j : g->second)
+					if (j + gap < i && within(j)) near_.push_back(j);
+			}
+		grid_[c].push_back(i);
+		std::sort(near_.begin(), near_.end());
+		passes_.clear();
+		for (size_t a = 0; a < near_.size();)
+		{
+			size_t b = a + 1;
+			while (b < near_.size() && near_[b] - near_[b - 1] <= runGap) ++b;
+			Pass p{near_[a], near_[b - 1], near_[a]};
+			for (size_t k = a; k < b; ++k)
+				if (se2::distance(poses[i], poses[near_[k]]) < se2::distance(poses[i], poses[p.nearest]))
+					p.nearest = near_[k];
+			passes_.push_back(p);
+			a = b;
+		}
+		return passes_;
+	}
+
+   private:
+	using Key = std::pair<long, long>;
+	Key keyOf(const TPose2D& p) const { return {long(std::floor(p.x / cell_)), long(std::floor(p.y / cell_))}; }
+	double cell_;
+	std::map<Key, std::vector<uint32_t>> grid_;
+	std::vector<uint32_t> near_;
+	std::vector<Pass> passes_;
+};
 }  // namespace
 
 MStep::MStep(const GridVectorConfig& cfg)
-	: cfg_(cfg), matcher_(cfg.matcher), graph_(cfg.posegraph)
+	: cfg_(cfg), matcher_(cfg.matcher), loops_(cfg.matcher, cfg.mstep), graph_(cfg.posegraph)
 {
 }
 
-void MStep::setOdometry(std::vector<TPose2D> odometry) { odometry_ = std::move(odometry); }
+void MStep::setOdometry(std::vector<TPose2D> odometry)
+{
+	odometry_ = std::move(odometry);
+	path_.assign(odometry_.size(), 0.0);
+	for (size_t t = 1; t < odometry_.size(); ++t)
+		path_[t] = path_[t - 1] + se2::distance(odometry_[t - 1], odometry_[t]);
+}
 
 bool MStep::registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans& scans,
 						 const TPose2D& guess, Constraint& out, MStepReport& rep) const
@@ -52,21 +109,28 @@ bool MStep::registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans&
 		++rep.failedRegistrations;
 		return false;
 	}
-	out.from = from;
-	out.to = to;
-	out.kind = kind;
-	out.z = r.pose;
-	out.information = r.information;
-	out.correspondences = r.pairs;
-	out.rms = r.rms;
-	out.matchedLength = r.matchedLength;
-	out.matchedShare = r.matchedShare;
-	out.degeneracy = r.translationDegeneracy;
-	out.rejected = false;
-	out.sigFrom = sigs_[from];
-	out.sigTo = sigs_[to];
-	out.checkedAt = guess;
+	out = constraintOf({from, to}, kind, r, guess);
 	return true;
+}
+
+Constraint MStep::constraintOf(const EdgeKey& key, EdgeKind kind, const MatchResult& r,
+							   const TPose2D& checkedAt) const
+{
+	Constraint c;
+	c.from = key.first;
+	c.to = key.second;
+	c.kind = kind;
+	c.z = r.pose;
+	c.information = r.information;
+	c.correspondences = r.pairs;
+	c.rms = r.rms;
+	c.matchedLength = r.matchedLength;
+	c.matchedShare = r.matchedShare;
+	c.degeneracy = r.translationDegeneracy;
+	c.sigFrom = sigs_[key.first];
+	c.sigTo = sigs_[key.second];
+	c.checkedAt = checkedAt;
+	return c;
 }
 
 double MStep::overlapLength(uint32_t from, uint32_t to, const Scans& scans, const Poses& poses) const
@@ -146,8 +210,10 @@ void MStep::updateExisting(const Scans& scans, const Poses& poses, MStepReport& 
 		Constraint& c = it->second;
 		const TPose2D rel = se2::relative(poses[c.from], poses[c.to]);
 		const bool nonSeq = c.kind != EdgeKind::Sequential;
+		// (a loop-search edge was accepted on its own criteria, not on the overlap length)
 		if (nonSeq && (se2::distance(poses[c.from], poses[c.to]) > far ||
-					   overlapLength(c.from, c.to, scans, poses) < 0.5 * cfg_.mstep.overlapMinLength))
+					   (c.kind == EdgeKind::Overlap &&
+						overlapLength(c.from, c.to, scans, poses) < 0.5 * cfg_.mstep.overlapMinLength)))
 		{
 			it = constraints_.erase(it);  // no longer overlapping: drop (Sec. 4.3)
 			++rep.removed;
@@ -234,53 +300,23 @@ std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, 
 	std::vector<EdgeKey> fresh;
 	const double d = cfg_.mstep.overlapDistance;
 	if (d <= 0) return fresh;
-	auto cellOf = [d](const TPose2D& p) {
-		return std::pair<long, long>(long(std::floor(p.x / d)), long(std::floor(p.y / d)));
-	};
-	struct Hash
-	{
-		size_t operator()(const std::pair<long, long>& k) const
-		{
-			return std::hash<long>()(k.first * 73856093L ^ k.second * 19349663L);
-		}
-	};
-	std::unordered_map<std::pair<long, long>, std::vector<uint32_t>, Hash> grid;
 	const uint32_t gap = uint32_t(std::max(1, cfg_.mstep.sequentialWindow));
-	std::vector<uint32_t> near;
+	PassFinder finder(d);
 	for (uint32_t i = 0; i < scans.size(); ++i)
 	{
 		report("overlap registration", i, scans.size());
-		const auto [cx, cy] = cellOf(poses[i]);
-		near.clear();
-		for (long dx = -1; dx <= 1; ++dx)
-			for (long dy = -1; dy <= 1; ++dy)
-			{
-				auto g = grid.find({cx + dx, cy + dy});
-				if (g == grid.end()) continue;
-				for (uint32_t j : g->second)
-					if (j + gap < i && se2::distance(poses[i], poses[j]) < d) near.push_back(j);
-			}
-		grid[{cx, cy}].push_back(i);
-		if (scans[i].empty() || near.empty()) continue;
-		std::sort(near.begin(), near.end());
-		// split the candidates into passes; in each pass take the nearest pose
-		for (size_t a = 0; a < near.size();)
+		const auto& passes = finder.next(i, poses, gap, uint32_t(cfg_.mstep.overlapRunGap),
+										 [&](uint32_t j) { return se2::distance(poses[i], poses[j]) < d; });
+		if (scans[i].empty()) continue;
+		for (const auto& p : passes)
 		{
-			size_t b = a + 1;
-			while (b < near.size() && near[b] - near[b - 1] <= uint32_t(cfg_.mstep.overlapRunGap)) ++b;
-			const uint32_t lo = near[a], hi = near[b - 1];
-			uint32_t best = lo;
-			for (size_t k = a; k < b; ++k)
-				if (se2::distance(poses[i], poses[near[k]]) < se2::distance(poses[i], poses[best]))
-					best = near[k];
-			a = b;
-			if (hasEdgeNear(i, lo, hi)) continue;
-			const EdgeKey key{best, i};
-			const TPose2D rel = se2::relative(poses[best], poses[i]);
+			if (hasEdgeNear(i, p.lo, p.hi)) continue;
+			const EdgeKey key{p.nearest, i};
+			const TPose2D rel = se2::relative(poses[p.nearest], poses[i]);
 			if (!retry(key, rel)) continue;
-			if (overlapLength(best, i, scans, poses) < cfg_.mstep.overlapMinLength) continue;
+			if (overlapLength(p.nearest, i, scans, poses) < cfg_.mstep.overlapMinLength) continue;
 			Constraint c;
-			if (registerPair(best, i, EdgeKind::Overlap, scans, rel, c, rep))
+			if (registerPair(p.nearest, i, EdgeKind::Overlap, scans, rel, c, rep))
 			{
 				constraints_[key] = std::move(c);
 				failed_.erase(key);
@@ -290,6 +326,87 @@ std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, 
 			else
 				failed_[key] = {rel, sigs_[key.first], sigs_[key.second]};
 		}
+	}
+	return fresh;
+}
+
+// Was pose i searched against a pose j of [jlo, jhi] from (nearly) the same relative pose?
+bool MStep::searchedNear(uint32_t i, uint32_t jlo, uint32_t jhi, const Poses& poses) const
+{
+	for (auto it = searched_.lower_bound({jlo, 0}); it != searched_.end() && it->first.first <= jhi; ++it)
+	{
+		if (it->first.second != i) continue;
+		const TPose2D rel = se2::relative(poses[it->first.first], poses[i]);
+		if (se2::distance(it->second, rel) < 0.5 &&
+			std::abs(mrpt::math::wrapToPi(it->second.phi - rel.phi)) < 10 * M_PI / 180)
+			return true;
+	}
+	return false;
+}
+
+LoopWindow MStep::windowOf(uint32_t from, uint32_t to) const
+{
+	const auto& o = cfg_.posegraph;
+	const double len = path_[to] - path_[from];
+	const double k = cfg_.mstep.loopSearchSigmas;
+	LoopWindow w;
+	w.translation = std::clamp(k * o.odometrySigmaXYPerM * len, 1.0, cfg_.mstep.loopSearchMaxRadius);
+	const double sr = o.odometrySigmaPhiPerM * len + o.odometrySigmaPhi * std::sqrt(double(to - from));
+	w.rotation = std::clamp(k * sr, 10 * M_PI / 180, M_PI);
+	return w;
+}
+
+bool MStep::linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi) const
+{
+	auto it = constraints_.lower_bound({jlo, 0});
+	for (; it != constraints_.end() && it->first.first <= jhi; ++it)
+		if (it->first.second >= ilo && it->first.second <= ihi) return true;
+	return false;
+}
+
+// Loop search: for each pose, every earlier pass within the window (its nearest
+// pose) that no edge links to the pose's neighbourhood yet.
+std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, MStepReport& rep)
+{
+	std::vector<EdgeKey> fresh;
+	const double R = cfg_.mstep.loopSearchMaxRadius;
+	if (!cfg_.mstep.loopSearch || R <= 0) return fresh;
+	const uint32_t gap = uint32_t(std::max(1, cfg_.mstep.sequentialWindow));
+	const uint32_t K = uint32_t(std::max(1, cfg_.mstep.overlapRunGap));
+	PassFinder finder(R);
+	std::vector<Constraint> found;
+	for (uint32_t i = 0; i < scans.size(); ++i)
+	{
+		report("loop search", i, scans.size());
+		const auto& passes = finder.next(i, poses, gap, K, [&](uint32_t j) {
+			return se2::distance(poses[i], poses[j]) < windowOf(j, i).translation;
+		});
+		if (scans[i].empty()) continue;
+		for (const auto& p : passes)
+		{
+			if (linked(p.lo > K ? p.lo - K : 0, p.hi + K, i > K ? i - K : 0, i)) continue;
+			if (searchedNear(i, p.lo, p.hi, poses)) continue;
+			const EdgeKey key{p.nearest, i};
+			const TPose2D rel = se2::relative(poses[p.nearest], poses[i]);
+			searched_[key] = rel;
+			++rep.loopSearches;
+			++rep.registrations;
+			const MatchResult r = loops_.search(scans[key.first], scans[i], rel, windowOf(key.first, i));
+			if (!r.ok())
+			{
+				++rep.failedRegistrations;
+				continue;
+			}
+			found.push_back(constraintOf(key, EdgeKind::Loop, r, rel));
+		}
+	}
+	// added after the search, so that every pose near a found loop is searched too
+	// (its neighbours' edges then support it in verifyOverlaps)
+	for (Constraint& c : found)
+	{
+		fresh.push_back({c.from, c.to});
+		constraints_[fresh.back()] = std::move(c);
+		++rep.added;
 	}
 	return fresh;
 }
@@ -390,7 +507,10 @@ MStepReport MStep::run(const Scans& scans, Poses& poses)
 		updateExisting(scans, poses, rep);
 		addSequential(scans, poses, rep);
 	}
-	verifyOverlaps(poses, addOverlaps(scans, poses, rep), rep);
+	auto fresh = addOverlaps(scans, poses, rep);
+	const auto found = searchLoops(scans, poses, rep);
+	fresh.insert(fresh.end(), found.begin(), found.end());
+	verifyOverlaps(poses, fresh, rep);
 	rep.registrationSeconds = secondsSince(t0);
 	if (rep.added + rep.removed + rep.recomputed > 0) optimise(poses, rep);  // else: still optimal
 	rep.constraints = constraints_.size();

@@ -121,8 +121,13 @@ OptimizeStats PoseGraph::optimizeGaussNewton()
 	// a start where (nearly) every registration already fits needs no graduation
 	std::vector<double> chi;
 	updateResiduals(nodes_, false);
+	bool farLoop = false;  // a loop-search edge that needs a large correction
 	for (const auto& e : edges_)
-		if (e.active && e.kind != EdgeKind::Odometry) chi.push_back(e.chi2);
+		if (e.active && e.kind != EdgeKind::Odometry)
+		{
+			chi.push_back(e.chi2);
+			farLoop = farLoop || (e.kind == EdgeKind::Loop && e.chi2 > 10 * target);
+		}
 	double p95 = 0;
 	if (!chi.empty())
 	{
@@ -130,7 +135,7 @@ OptimizeStats PoseGraph::optimizeGaussNewton()
 		std::nth_element(chi.begin(), k, chi.end());
 		p95 = *k;
 	}
-	const double phi0 = p95 < 10 * target ? target : std::max(target, 1e4);
+	const double phi0 = p95 < 10 * target && !farLoop ? target : std::max(target, 1e4);
 	for (double phi = phi0;; phi = std::max(target, phi * 0.01))
 	{
 		phi_ = phi;

@@ -191,6 +191,14 @@ struct MStepOptions
 	double consistencyChi2 = 16.0;  //!< gate of the pairwise loop-closure consistency test
 	double recheckGateFactor = 1.5;  //!< gates x this when testing whether an edge's correspondences changed
 	double minChangedShare = 0.0;  //!< converged when the share of changed constraints is at most this
+	bool loopSearch = true;  //!< search loop closures from vector corners within a window growing with the pose uncertainty
+	double loopSearchSigmas = 3.0;  //!< window half-size in odometry-model standard deviations of the path between the poses
+	double loopSearchMaxRadius = 8.0;  //!< the translation window never exceeds this [m]
+	int loopSearchVectors = 10;  //!< longest static vectors per scan whose corners give hypotheses
+	int loopSearchHypotheses = 4;  //!< best-ranked hypotheses refined by the matcher
+	double loopSearchMinShare = 0.4;  //!< matched share of the shorter scan's static length for a loop edge
+	double loopSearchAmbiguity = 0.7;  //!< a distinct solution matching this share of the best's length makes the place ambiguous
+	double loopSearchDistinct = 0.3;  //!< solutions further apart than this are distinct [m]
 
 	template <class V>
 	void visit(V&& v)
@@ -206,6 +214,14 @@ struct MStepOptions
 		v("consistency_chi2", consistencyChi2, "Two overlap edges near each other support each other when their cycle closes within this chi2");
 		v("recheck_gate_factor", recheckGateFactor, "Gates are widened by this when testing whether an edge's correspondences changed (Eq. 24-25)");
 		v("min_changed_share", minChangedShare, "EM has converged when at most this share of constraints changed");
+		v("loop_search", loopSearch, "Search loop closures from vector corners within a window growing with the pose uncertainty");
+		v("loop_search_sigmas", loopSearchSigmas, "Loop-search window half-size in odometry-model standard deviations of the path between the two poses");
+		v("loop_search_max_radius", loopSearchMaxRadius, "Largest loop-search translation window (and candidate distance) [m]");
+		v("loop_search_vectors", loopSearchVectors, "Longest static vectors per scan whose corners give loop hypotheses");
+		v("loop_search_hypotheses", loopSearchHypotheses, "Best-ranked loop hypotheses refined by the matcher");
+		v("loop_search_min_share", loopSearchMinShare, "Matched share of the shorter scan's static length needed for a loop edge");
+		v("loop_search_ambiguity", loopSearchAmbiguity, "A loop edge is rejected as ambiguous when a distinct solution matches at least this share of the best one's length");
+		v("loop_search_distinct", loopSearchDistinct, "Loop-search solutions further apart than this are distinct [m]");
 	}
 };
 

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <gridvector/GridVectorConfig.h>
+#include <gridvector/LoopSearch.h>
 #include <gridvector/PoseGraph.h>
 #include <gridvector/VectorMatcher.h>
 
@@ -39,7 +40,8 @@ struct MStepReport
 	size_t sequential = 0, overlap = 0, loop = 0;  //!< active edges by kind
 	size_t added = 0, removed = 0, recomputed = 0;  //!< Eq. 24: the changed constraints
 	size_t registrations = 0, failedRegistrations = 0;
-	size_t unverified = 0;  //!< overlap edges dropped by the pairwise consistency check
+	size_t unverified = 0;  //!< overlap and loop edges dropped by the pairwise consistency check
+	size_t loopSearches = 0;  //!< pairs given to the loop search
 	double changedShare = 0;  //!< (added + removed + recomputed) / constraints
 	OptimizeStats optimisation;
 	double registrationSeconds = 0, seconds = 0;
@@ -87,6 +89,15 @@ class MStep
 	void addSequential(const Scans& scans, const Poses& poses, MStepReport& rep);
 	/** Returns the keys of the edges it added. */
 	std::vector<EdgeKey> addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep);
+	/** Loop search (LoopSearch) between poses near each other with no edge between
+	 * their passes yet; returns the keys of the edges it added. */
+	std::vector<EdgeKey> searchLoops(const Scans& scans, const Poses& poses, MStepReport& rep);
+	/** Loop-search window of the pair from the odometry model along the path between them. */
+	LoopWindow windowOf(uint32_t from, uint32_t to) const;
+	/** Was i searched against a j in [jlo, jhi] from (nearly) its current relative pose? */
+	bool searchedNear(uint32_t i, uint32_t jlo, uint32_t jhi, const Poses& poses) const;
+	/** Is there an edge (j, i) with j in [jlo, jhi] and i in [ilo, ihi]? */
+	bool linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi) const;
 	void verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh, MStepReport& rep);
 	void optimise(Poses& poses, MStepReport& rep);
 
@@ -95,6 +106,8 @@ class MStep
 	/** Registers scan `to` against scan `from` from `guess`; true if accepted. */
 	bool registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans& scans,
 					  const mrpt::math::TPose2D& guess, Constraint& out, MStepReport& rep) const;
+	Constraint constraintOf(const EdgeKey& key, EdgeKind kind, const MatchResult& r,
+							const mrpt::math::TPose2D& checkedAt) const;
 	bool sameScans(const Constraint& c) const;
 	/** Retry a failed registration? (poses moved or static vectors changed) */
 	bool retry(const EdgeKey& key, const mrpt::math::TPose2D& rel) const;
@@ -106,6 +119,9 @@ class MStep
 
 	GridVectorConfig cfg_;
 	VectorMatcher matcher_;
+	LoopSearch loops_;
+	std::vector<double> path_;  //!< odometry path length from the first pose
+	std::map<EdgeKey, mrpt::math::TPose2D> searched_;  //!< loop searches tried (at this relative pose)
 	PoseGraph graph_;
 	Poses odometry_;
 	std::map<EdgeKey, Constraint> constraints_;

@@ -152,6 +152,30 @@ TEST(EStep, FinalSplitDemotesPlacesOccupiedPartOfTheTime)
 	EXPECT_EQ(out[2].state, VectorState::Dynamic);
 }
 
+TEST(EStep, FinalSplitFindsAStretchClearlyBelowItsWall)
+{
+	// a wall read 0.98 with a door closed 80 % of the time in it: above the final
+	// threshold, but 0.18 below the rest of its vector
+	EStepOptions o;
+	o.finalStaticThreshold = 0.7;
+	o.finalRelativeDrop = 0.1;
+	GridVector child = withProfile(runs({{10, 0.98}, {9, 0.8}, {11, 0.98}}));
+	child.state = VectorState::Static;
+	const auto out = EStep(o).finalSplit({child});
+	ASSERT_EQ(out.size(), 3u);
+	EXPECT_EQ(out[1].state, VectorState::Dynamic);
+	EXPECT_NEAR(out[1].length(), 0.9, 1e-9);
+	// without the relative test it stays one static vector; a uniformly noisy wall (0.8) too
+	o.finalRelativeDrop = 0;
+	EXPECT_EQ(EStep(o).finalSplit({child}).size(), 1u);
+	o.finalRelativeDrop = 0.1;
+	GridVector noisy = withProfile(runs({{30, 0.8}}));
+	noisy.state = VectorState::Static;
+	const auto n = EStep(o).finalSplit({noisy});
+	ASSERT_EQ(n.size(), 1u);
+	EXPECT_EQ(n[0].state, VectorState::Static);
+}
+
 namespace
 {
 // A merged-looking vector: columns [a, b) covered by no part (all counts zero).

@@ -142,12 +142,10 @@ EStepResult EStep::run(const std::vector<GridVector>& parents, const EStepResult
 	return r;
 }
 
-// Eq. 14 on the converged map: static children must be occupied in nearly every observation.
+// Eq. 14 on the converged map: static children must be occupied in nearly every observation,
+// and a stretch reading clearly less than the rest of its vector is a place that changed.
 std::vector<GridVector> EStep::finalSplit(const std::vector<GridVector>& children) const
 {
-	EStepOptions o = opts_;
-	o.staticThreshold = opts_.finalStaticThreshold;
-	const EStep strict(o, grid_);
 	std::vector<GridVector> out;
 	out.reserve(children.size());
 	for (const GridVector& c : children)
@@ -157,7 +155,15 @@ std::vector<GridVector> EStep::finalSplit(const std::vector<GridVector>& childre
 			out.push_back(c);
 			continue;
 		}
-		for (auto& k : strict.split(c)) out.push_back(std::move(k));
+		EStepOptions o = opts_;
+		o.staticThreshold = opts_.finalStaticThreshold;
+		if (opts_.finalRelativeDrop > 0)
+		{
+			std::vector<double> prof = profile(c);
+			std::nth_element(prof.begin(), prof.begin() + long(prof.size() / 2), prof.end());
+			o.staticThreshold = std::max(o.staticThreshold, prof[prof.size() / 2] - opts_.finalRelativeDrop);
+		}
+		for (auto& k : EStep(o, grid_).split(c)) out.push_back(std::move(k));
 	}
 	return out;
 }

@@ -59,8 +59,10 @@ class EStep
 	 * static child is split again at estep.final_static_threshold (dynamic
 	 * children stay dynamic). A static place must be occupied in nearly every
 	 * observation (Eq. 6 near 1): a door closed most of the time or an object
-	 * that stood still for half the run reads 0.5-0.85. New children get
-	 * childId(child.id, k). */
+	 * that stood still for half the run reads 0.5-0.85. With
+	 * estep.final_relative_drop > 0 the threshold of a child is raised to its
+	 * profile's median minus that drop: a door closed most of the time reads
+	 * 0.8 inside a wall that reads 0.98. New children get childId(child.id, k). */
 	std::vector<GridVector> finalSplit(const std::vector<GridVector>& children) const;
 
 	/** Column runs of a merged vector that hold observations, split where

@@ -90,6 +90,7 @@ struct EStepOptions
 {
 	double staticThreshold = 0.50;  //!< profile value at or above which a piece is static
 	double finalStaticThreshold = 0.70;  //!< the same for the final map, after EM converged
+	double finalRelativeDrop = 0.10;  //!< final map: columns this far below their vector's median are dynamic too
 	double minPieceLength = 0.30;  //!< smallest sub-vector kept by the split-and-merge [m]
 	bool usePeakRow = true;  //!< profile = largest cell probability across the width (false: the mean)
 	double minVisits = 3.0;  //!< peak-row profile: cells observed fewer times than this do not count
@@ -103,6 +104,7 @@ struct EStepOptions
 	{
 		v("static_threshold", staticThreshold, "Occupancy-profile threshold: above is static, below dynamic");
 		v("final_static_threshold", finalStaticThreshold, "Final map only (after EM): static children are split again at this profile value; a static place is occupied in nearly every observation");
+		v("final_relative_drop", finalRelativeDrop, "Final map only: a column whose profile lies this far below the median of its vector is dynamic too (a door closed most of the time in a wall read ~1); 0: off");
 		v("min_piece_length", minPieceLength, "Smallest static/dynamic sub-vector; shorter pieces merge into neighbours [m]");
 		v("use_peak_row", usePeakRow, "Profile value of a column: the largest cell probability across the width (true) or the mean across the width (false)");
 		v("free_weight", freeWeight, "Peak-row profile: a beam through a cell weighs this many hits (1: the counting model's n_occupy/n_visit; >1: what has been seen through is dynamic sooner)");

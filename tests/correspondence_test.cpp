@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 using namespace gridvector;
 using mrpt::math::TPoint2D;
@@ -85,4 +86,27 @@ TEST(Correspondence, SearchMarginGrowsWithLength)
 	const MapOptions o;
 	EXPECT_NEAR(correspondenceSearchMargin(0, o), o.maxRhoDiff, 1e-12);
 	EXPECT_GT(correspondenceSearchMargin(10, o), correspondenceSearchMargin(1, o));
+}
+
+TEST(Correspondence, CheapRejectionsDecideAsTheFullTest)
+{
+	// corresponds() rejects on cosines and squared distances before the full
+	// test: on random pairs near each other both decide the same.
+	std::mt19937 rng(3);
+	std::uniform_real_distribution<double> X(-3, 3), L(0.2, 4), A(-M_PI, M_PI), dA(-0.3, 0.3), off(-0.3, 0.3);
+	const MapOptions o;
+	int matches = 0;
+	for (int i = 0; i < 20000; ++i)
+	{
+		const double x = X(rng), y = X(rng), a = A(rng), la = L(rng), lb = L(rng);
+		const GridVector va = vec(x, y, x + la * std::cos(a), y + la * std::sin(a));
+		const double b = a + (i % 7 == 0 ? A(rng) : dA(rng)), s = X(rng) * 0.5, w = off(rng);
+		const double bx = x + s * std::cos(a) - w * std::sin(a), by = y + s * std::sin(a) + w * std::cos(a);
+		const GridVector vb = vec(bx, by, bx + lb * std::cos(b), by + lb * std::sin(b));
+		const bool full = testCorrespondence(va, vb, o).match;
+		ASSERT_EQ(corresponds(va, vb, o), full) << i;
+		matches += full;
+	}
+	EXPECT_GT(matches, 1000);
+	EXPECT_LT(matches, 19000);
 }

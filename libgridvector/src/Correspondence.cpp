@@ -40,6 +40,20 @@ CorrespondenceTest testCorrespondence(const TPoint2D& sa, const TPoint2D& ea, co
 	return t;
 }
 
+bool corresponds(const GridVector& a, const GridVector& b, const MapOptions& opt)
+{
+	const TPoint2D da = a.direction(), db = b.direction();
+	const double cosPsi = da.x * db.x + da.y * db.y;
+	if (cosPsi <= 0) return false;  // opposite directions
+	// margins keep the decisions of the exact test at the boundaries
+	if (cosPsi < std::cos(opt.maxDirectionDiffDeg * M_PI / 180.0) - 1e-9) return false;  // criterion 1
+	const TPoint2D ca = a.centre(), cb = b.centre();
+	const double d2 = (ca.x - cb.x) * (ca.x - cb.x) + (ca.y - cb.y) * (ca.y - cb.y);
+	const double h = (a.length() + b.length()) / 2;
+	if (d2 > h * h * (1 + 1e-9)) return false;  // criterion 3
+	return testCorrespondence(a, b, opt).match;
+}
+
 double correspondenceSearchMargin(double length, const MapOptions& opt)
 {
 	return opt.maxRhoDiff + 0.5 * length * std::sin(opt.maxDirectionDiffDeg * M_PI / 180.0);

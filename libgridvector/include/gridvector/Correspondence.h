@@ -44,9 +44,10 @@ inline CorrespondenceTest testCorrespondence(const GridVector& a, const GridVect
  * most l/2 sin(max_direction_diff) over the vector's half length. */
 double correspondenceSearchMargin(double length, const MapOptions& opt);
 
-inline bool corresponds(const GridVector& a, const GridVector& b, const MapOptions& opt)
-{
-	return testCorrespondence(a, b, opt).match;
-}
+/** testCorrespondence(a, b, opt).match, with the cheap rejections first
+ * (opposite directions, criterion 3 on squared distances, criterion 1 on the
+ * cosine of the directions): the same decisions, without the trigonometry for
+ * the many pairs of a dense neighbourhood that fail early. */
+bool corresponds(const GridVector& a, const GridVector& b, const MapOptions& opt);
 
 }  // namespace gridvector

@@ -9,7 +9,7 @@
 //  - the batch path (buildPerScan + mergeAll) used by the EM loop;
 //  - n_g/n_v as in Table 1 (final static map): the batch per-scan vectors
 //    classified by the E-step (Eq. 14-15) at these poses, the dynamic ones
-//    removed, the static ones merged (Eq. 4), as EM-SLAM's final map.
+//    removed, the static ones merged (Eq. 4), as EmSlam's final static map.
 //
 //   gv-bench-map [--config FILE.ini] [--max-scans N] [--band M] [--repeat R] LOG...
 #include <gridvector/EStep.h>
@@ -208,12 +208,14 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 	const auto b1 = Clock::now();
 	const MergeResult merged = GlobalMap::mergeAll(perScan, cfg);
 	const auto b2 = Clock::now();
-	// Table 1's maps are EM's final maps: the E-step's static children, merged
-	const EStepResult split = EStep(cfg.estep, cfg.grid).run(perScan);
+	// Table 1's maps are EM's final maps, built as EmSlam builds its final static
+	// map: E-step, final split, static children merged, unobserved stretches cut
+	const EStep estep(cfg.estep, cfg.grid);
+	const EStepResult split = estep.run(perScan);
 	std::vector<GridVector> statics;
-	for (const auto& v : split.children)
+	for (const auto& v : estep.finalSplit(split.children))
 		if (v.state != VectorState::Dynamic) statics.push_back(v);
-	const MergeResult staticMap = GlobalMap::mergeAll(statics, cfg);
+	const MergeResult staticMap = estep.cutUnobserved(GlobalMap::mergeAll(statics, cfg), statics);
 
 	const Timing te = perScanTiming(tExtract), ti = perScanTiming(tInsert), tm = perScanTiming(tMrpt);
 	const MemoryReport mem = MemoryAccounting::account(map.vectors(), 0.1);
@@ -230,7 +232,7 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 				mem.bytesGrid, mem.bytesGridVector);
 	std::printf("batch:      %zu vectors, %.1f m; n_g/n_v %.2f; buildPerScan %.3f s, mergeAll %.3f s\n",
 				memB.vectorCount, memB.vectorLength, memB.ratio, seconds(b0, b1), seconds(b1, b2));
-	std::printf("static map (Table 1: E-step at these poses, dynamic removed, static merged): %zu vectors, %.1f m (dynamic %.1f m of per-scan vectors removed); n_g/n_v %.2f\n",
+	std::printf("static map (Table 1: E-step at these poses, dynamic removed, static merged): %zu vectors, %.1f m (E-step: dynamic %.1f m of per-scan vectors); n_g/n_v %.2f\n",
 				memS.vectorCount, memS.vectorLength, split.dynamicLength, memS.ratio);
 	std::printf("agreement with MRPT grid (cells within %.2f m of a vector, known in both): sequential %.2f %% (%zu/%zu of %zu; occupied %zu/%zu), batch %.2f %% (%zu/%zu)\n",
 				band, ag.pct(), ag.same, ag.both, ag.band, ag.occSame, ag.occBoth, agB.pct(), agB.same, agB.both);

@@ -10,7 +10,7 @@ import os
 import re
 import sys
 
-COLUMNS = [('gv', 'gv-em-slam'), ('icp-classic', 'icp classic'), ('icp-grid', 'icp grid'),
+COLUMNS = [('gv', 'gv-em-slam'), ('gv-rawlog', 'gv-em-slam, peers\' rawlog'), ('icp-classic', 'icp classic'), ('icp-grid', 'icp grid'),
            ('rbpf-filtered', 'rbpf filtered'), ('rbpf-best', 'rbpf best')]
 METRICS = [('rel_loop_t_m', 'loop t [m]', '%.4f'), ('ate_rmse_m', 'ATE [m]', '%.4f'),
            ('time_s', 'time [s]', '%.1f'), ('scans_per_s', 'scans/s', '%.0f')]

@@ -5,7 +5,8 @@
 #     --seeds "1 2 3"       mkbench seeds (default 1; positional SEEDS do the same)
 #     --logs "intel aces"   benchmark logs by name (default: every ../shared/data/*-corrected.log.gz)
 #     --systems LIST        comma-separated systems to run on the real logs:
-#                           gv,icp-classic,icp-grid,rbpf (default: all)
+#                           gv,gv-rawlog,icp-classic,icp-grid,rbpf (default: all); gv-rawlog is
+#                           gv-em-slam on the peers' rawlog (gv-carmen2rawlog --max-range auto)
 #     --reuse               keep MRPT peer results already in OUT_DIR (per log, seed, system)
 #                           instead of re-running them; gv-em-slam always runs when selected
 #     --no-sim / --no-real  skip the simulated worlds / the real logs
@@ -22,7 +23,7 @@
 # Prints markdown tables; each run's outputs stay in OUT_DIR.
 set -euo pipefail
 BIN=$1; OUT=$2; shift 2
-SEEDS="" LOGS="" SYSTEMS="gv,icp-classic,icp-grid,rbpf" REUSE=0 SIM=1 REAL=1 CORE=0
+SEEDS="" LOGS="" SYSTEMS="gv,gv-rawlog,icp-classic,icp-grid,rbpf" REUSE=0 SIM=1 REAL=1 CORE=0
 while [ $# -gt 0 ]; do
   case $1 in
     --seeds) SEEDS=$2; shift 2 ;;
@@ -42,7 +43,7 @@ SHARED=${GV_SHARED_DIR:-$HERE/../../../shared}
 export GV_SHARED_DIR=$SHARED
 [ -n "$LOGS" ] || LOGS=$(for gz in "$SHARED"/data/*-corrected.log.gz; do basename "$gz" -corrected.log.gz; done)
 for s in ${SYSTEMS//,/ }; do
-  case $s in gv|icp-classic|icp-grid|rbpf) ;; *) echo "unknown system '$s'" >&2; exit 2 ;; esac
+  case $s in gv|gv-rawlog|icp-classic|icp-grid|rbpf) ;; *) echo "unknown system '$s'" >&2; exit 2 ;; esac
 done
 selected() { [[ ",$SYSTEMS," == *",$1,"* ]]; }
 mkdir -p "$OUT"
@@ -70,6 +71,25 @@ gv_row() {
   echo "| $name | $seed | $(echo "$r" | field n) | $it | $conv | $(secs "$t0" "$t1") | $(echo "$r" | field ate_rmse_m) | $(echo "$r" | field rel_local_t_m) | $(echo "$r" | field rel_loop_t_m) | $(echo "$r" | field rel_loop_r_deg) |"
 }
 
+# gv-em-slam on the very rawlog the icp-slam peers read (same input, no-return range included).
+gv_rawlog() {
+  local name=$1 seed=$2 b=$3 res=$4 w="$OUT/peers/${1}_s$2/gv-rawlog" t0 t1 r
+  mkdir -p "$w"
+  if ! "$BIN/gv-carmen2rawlog" "$b.log" "$w/bench.obs.rawlog" --max-range auto --quiet 2> "$w/convert.err"; then
+    echo "failed: gv-carmen2rawlog: $(head -1 "$w/convert.err")" > "$res/gv-rawlog.txt"; return
+  fi
+  t0=$(date +%s.%N)
+  if ! taskset -c "$CORE" "$BIN/gv-em-slam" --input "$w/bench.obs.rawlog" --out "$w/out" --quiet 2> "$w/run.err"; then
+    echo "failed: gv-em-slam: $(tail -1 "$w/run.err")" > "$res/gv-rawlog.txt"; return
+  fi
+  t1=$(date +%s.%N)
+  if ! r=$(python3 "$SHARED/bench/evaltraj.py" "$w/out/trajectory.txt" "$b.ref.txt" 2>&1); then
+    echo "failed: evaltraj: $(echo "$r" | tail -1)" > "$res/gv-rawlog.txt"; return
+  fi
+  echo "$r time_s=$(secs "$t0" "$t1") scans=$(wc -l < "$b.ref.txt")" > "$res/gv-rawlog.txt"
+  note "$name s$seed gv-rawlog: $r"
+}
+
 # An MRPT peer, unless --reuse and its results are already there.
 peer() {
   local sys=$1 name=$2 seed=$3 b=$4 res=$5 cols=$1 c have=1
@@ -92,6 +112,7 @@ if [ $REAL -eq 1 ]; then
       mkdir -p "$res"
       python3 "$SHARED/bench/mkbench.py" "$SHARED/data/$name-corrected.log.gz" "$b" --seed "$seed" > /dev/null
       if selected gv; then note "$name s$seed gv-em-slam ..."; gv_row "$name" "$seed" "$b" "$res"; fi
+      if selected gv-rawlog; then gv_rawlog "$name" "$seed" "$b" "$res"; fi
       for sys in icp-classic icp-grid rbpf; do
         if selected "$sys"; then peer "$sys" "$name" "$seed" "$b" "$res"; fi
       done

@@ -89,6 +89,34 @@ TEST(MapEval, KnownAnswers)
 	const std::string json = eval::formatJson(m);
 	EXPECT_NE(json.find("\"door_recall\": 1.000000"), std::string::npos) << json;
 	EXPECT_NE(eval::formatText(m).find("door recall:       1.0000 (1 of 1 swinging doors)"), std::string::npos);
+	EXPECT_EQ(m.observedSwingingDoors, 0u);  // no door hits in the truth
+}
+
+TEST(MapEval, DoorRecallOverDoorsSeenSwinging)
+{
+	sim::Truth t = truth();
+	sim::DoorTruth third = t.doors[0];
+	third.hinge = {40, 0};
+	t.doors.push_back(third);  // door 2 swings too
+	auto hit = [](int id, double x1, double y1, double x2, double y2) {
+		sim::HitRun h;
+		h.kind = sim::HitKind::Door, h.id = id, h.seg = {x1, y1, x2, y2}, h.beams = 8;
+		return h;
+	};
+	t.hits.push_back(hit(0, 20.1, 0, 20.9, 0));  // door 0 closed ...
+	t.hits.push_back(hit(0, 20, 0.9, 20, 0.2));  // ... and open: seen swinging
+	t.hits.push_back(hit(2, 40.1, 0, 40.9, 0));  // door 2 closed ...
+	t.hits.push_back(hit(2, 40.1, 0.03, 40.8, 0.04));  // ... closed again (3 deg): not seen swinging
+	t.hits.push_back(hit(2, 40, 0.1, 40, 0.2));  // a 0.1 m run: too short to tell
+	const std::vector<sim::DoorTruth> detected = {{{20.1, 0.1}, 0.9, 0, 0, 0}};
+	const auto m = eval::evaluateMap({vec(0, 0, 10, 0, true)}, t, &detected);
+	EXPECT_EQ(m.movingDoors, 2u);
+	EXPECT_EQ(m.doorsFound, 1u);
+	EXPECT_DOUBLE_EQ(m.doorRecall, 0.5);
+	EXPECT_EQ(m.observedSwingingDoors, 1u);
+	EXPECT_EQ(m.observedDoorsFound, 1u);
+	EXPECT_DOUBLE_EQ(m.doorRecallObserved, 1.0);
+	EXPECT_NE(eval::formatJson(m).find("\"door_recall_observed\": 1.000000"), std::string::npos);
 }
 
 TEST(MapEval, ReadsVectorsFilesStrictly)

@@ -49,22 +49,54 @@ std::string f(double v, const char* fmt = "%.4f")
 	return b;
 }
 
-void evaluateDoors(MapMetrics& m, const sim::Truth& truth, const std::vector<sim::DoorTruth>& detected, double tol)
+/** Per true door: did the laser see its leaf at two angles >= minDiff apart (truth hit runs)? */
+std::vector<bool> doorsSeenSwinging(const sim::Truth& truth, const MapEvalOptions& opt)
 {
+	std::vector<double> lo(truth.doors.size(), 1e9), hi(truth.doors.size(), -1e9);
+	for (const auto& h : truth.hits)
+	{
+		if (h.kind != sim::HitKind::Door || h.id < 0 || size_t(h.id) >= truth.doors.size()) continue;
+		if (h.seg.length() < opt.doorMinRunLength) continue;
+		// leaf direction from the hinge, so that the angle does not wrap with the run's order
+		const Vec2 hinge = truth.doors[size_t(h.id)].hinge;
+		const Vec2 far = (h.seg.a - hinge).norm() > (h.seg.b - hinge).norm() ? h.seg.a : h.seg.b;
+		const double a = std::atan2(far.y - hinge.y, far.x - hinge.x);
+		const double ref = truth.doors[size_t(h.id)].closedAngle;
+		const double rel = std::atan2(std::sin(a - ref), std::cos(a - ref));
+		lo[size_t(h.id)] = std::min(lo[size_t(h.id)], rel), hi[size_t(h.id)] = std::max(hi[size_t(h.id)], rel);
+	}
+	std::vector<bool> seen(truth.doors.size(), false);
+	for (size_t i = 0; i < seen.size(); ++i) seen[i] = hi[i] - lo[i] >= opt.doorMinStateDiffDeg * M_PI / 180.0;
+	return seen;
+}
+
+void evaluateDoors(MapMetrics& m, const sim::Truth& truth, const std::vector<sim::DoorTruth>& detected,
+				   const MapEvalOptions& opt)
+{
+	const double tol = opt.doorTolerance;
+	const std::vector<bool> seenSwinging = doorsSeenSwinging(truth, opt);
 	m.doorsEvaluated = true;
 	m.detectedDoors = detected.size();
 	const auto near = [&](const Vec2& a, const Vec2& b) { return (a - b).norm() <= tol; };
-	for (const auto& d : truth.doors)
+	for (size_t i = 0; i < truth.doors.size(); ++i)
 	{
+		const auto& d = truth.doors[i];
 		if (d.swings == 0) continue;
 		m.movingDoors++;
+		m.observedSwingingDoors += seenSwinging[i];
 		for (const auto& q : detected)
-			if (near(q.hinge, d.hinge)) { m.doorsFound++; break; }
+			if (near(q.hinge, d.hinge))
+			{
+				m.doorsFound++;
+				m.observedDoorsFound += seenSwinging[i];
+				break;
+			}
 	}
 	for (const auto& q : detected)
 		for (const auto& d : truth.doors)
 			if (near(q.hinge, d.hinge)) { m.detectedCorrect++; break; }
 	m.doorRecall = ratio(double(m.doorsFound), double(m.movingDoors));
+	m.doorRecallObserved = ratio(double(m.observedDoorsFound), double(m.observedSwingingDoors));
 	m.doorPrecision = ratio(double(m.detectedCorrect), double(m.detectedDoors));
 }
 }  // namespace
@@ -136,7 +168,7 @@ MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& 
 	m.staticRecall = ratio(m.seenCovered, m.seenWallLength);
 	m.ghostShare = ratio(m.ghostLength, m.staticLength);
 	m.dynamicDetection = ratio(m.dynamicHitDetected, m.dynamicHitLength);
-	if (detectedDoors) evaluateDoors(m, truth, *detectedDoors, opt.doorTolerance);
+	if (detectedDoors) evaluateDoors(m, truth, *detectedDoors, opt);
 	return m;
 }
 
@@ -155,7 +187,9 @@ std::string formatText(const MapMetrics& m)
 	if (m.doorsEvaluated)
 		os << "door recall:       " << f(m.doorRecall) << " (" << m.doorsFound << " of " << m.movingDoors
 		   << " swinging doors), precision " << f(m.doorPrecision) << " (" << m.detectedCorrect << " of "
-		   << m.detectedDoors << " detected)\n";
+		   << m.detectedDoors << " detected)\n"
+		   << "door recall (seen swinging): " << f(m.doorRecallObserved) << " (" << m.observedDoorsFound << " of "
+		   << m.observedSwingingDoors << " doors whose leaf the laser saw in two states)\n";
 	return os.str();
 }
 
@@ -171,7 +205,10 @@ std::string formatJson(const MapMetrics& m)
 	if (m.doorsEvaluated)
 		os << ", \"moving_doors\": " << m.movingDoors << ", \"doors_found\": " << m.doorsFound
 		   << ", \"door_recall\": " << f(m.doorRecall, "%.6f") << ", \"detected_doors\": " << m.detectedDoors
-		   << ", \"door_precision\": " << f(m.doorPrecision, "%.6f");
+		   << ", \"door_precision\": " << f(m.doorPrecision, "%.6f")
+		   << ", \"observed_swinging_doors\": " << m.observedSwingingDoors
+		   << ", \"observed_doors_found\": " << m.observedDoorsFound
+		   << ", \"door_recall_observed\": " << f(m.doorRecallObserved, "%.6f");
 	os << "}";
 	return os.str();
 }

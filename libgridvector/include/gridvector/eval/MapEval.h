@@ -33,6 +33,10 @@ struct MapEvalOptions
 	double wallTolerance = 0.10;  //!< a vector point "on a wall" is within this of it [m]
 	double dynamicTolerance = 0.10;  //!< ... on a dynamic hit / object / door sweep [m]
 	double doorTolerance = 0.30;  //!< a detected hinge matches a true one within this [m]
+	/** A swinging door counts as observed swinging when the laser hit its leaf
+	 * (runs of at least doorMinRunLength) at angles this far apart [deg]. */
+	double doorMinStateDiffDeg = 10.0;
+	double doorMinRunLength = 0.30;  //!< [m]
 	double sampleStep = 0.01;  //!< length integrals are sampled this finely [m]
 };
 
@@ -55,6 +59,12 @@ struct MapMetrics
 	size_t doorsFound = 0;  //!< ... with a detected hinge within doorTolerance
 	size_t detectedDoors = 0, detectedCorrect = 0;
 	double doorRecall = 0, doorPrecision = 0;
+	/** Sec. 5.4 can only find doors whose motion is in the data ("if a door never
+	 * changes its state, it will be regarded as part of the static environment"):
+	 * the swinging doors whose leaf the laser saw in two states, and how many of
+	 * them were found. */
+	size_t observedSwingingDoors = 0, observedDoorsFound = 0;
+	double doorRecallObserved = 0;
 };
 
 /** detectedDoors may be null (door recall not evaluated). */

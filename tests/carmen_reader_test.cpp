@@ -3,6 +3,7 @@
 #include <gridvector/io/CarmenReader.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/LogReader.h>
+#include <gridvector/io/NoReturnRange.h>
 
 #include <gtest/gtest.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -308,4 +309,46 @@ TEST(AtomicFile, NothingAppearsUntilCommit)
 		EXPECT_EQ(std::string(e.what()).rfind("/proc/gv-no-such-dir/x.txt: cannot write (", 0), 0u);
 	}
 	fs::remove(p);
+}
+
+TEST(NoReturnRange, SaturationBelowTheDeclaredMaximumIsNoReturn)
+{
+	// 81 m declared (as mkbench writes it), but the scanner reports "no return" as 50.00 m
+	std::string text = "PARAM robot_front_laser_max 81 h 0\n";
+	for (int t = 0; t < 200; ++t)
+		text += "FLASER 3 1.5 " + std::string(t % 4 == 0 ? "50.00" : "20.25") + " 2.5 0 0 0 0 0 0 " +
+				std::to_string(10 + t) + ".5 host 0\n";
+	const std::string path = tempPath("saturation.log");
+	writeFileAtomically(path, [&](std::ostream& os) { os << text; });
+	const LogData d = readLog(path);
+	ASSERT_EQ(d.scans.size(), 200u);
+	EXPECT_FLOAT_EQ(d.scans[0].scan->maxRange, 50.f);
+	EXPECT_FALSE(d.scans[0].scan->getScanRangeValidity(1));  // 50 m: no return
+	EXPECT_TRUE(d.scans[1].scan->getScanRangeValidity(1));  // 20.25 m: a hit
+	ASSERT_EQ(d.warnings.size(), 1u);
+	EXPECT_NE(d.warnings[0].find("no-return value: max range 50.00 m instead of 81.00 m"), std::string::npos);
+	// off: the declared maximum stands
+	ReadOptions keep;
+	keep.detectNoReturnRange = false;
+	const LogData k = readLog(path, keep);
+	EXPECT_FLOAT_EQ(k.scans[0].scan->maxRange, 81.f);
+	EXPECT_TRUE(k.scans[0].scan->getScanRangeValidity(1));
+	fs::remove(path);
+}
+
+TEST(NoReturnRange, RareLargestReadingIsAWall)
+{
+	std::string text = "PARAM robot_front_laser_max 81 h 0\n";
+	for (int t = 0; t < 200; ++t)
+		text += "FLASER 3 1.5 " + std::string(t == 7 ? "50.00" : "20.25") + " 2.5 0 0 0 0 0 0 " +
+				std::to_string(10 + t) + ".5 host 0\n";
+	const LogData d = parse(text);
+	EXPECT_FALSE(saturationRange(d).has_value());  // 1 of 200 scans: below 1 %
+	const std::string path = tempPath("rare.log");
+	writeFileAtomically(path, [&](std::ostream& os) { os << text; });
+	const LogData r = readLog(path);
+	EXPECT_FLOAT_EQ(r.scans[7].scan->maxRange, 81.f);
+	EXPECT_TRUE(r.scans[7].scan->getScanRangeValidity(1));
+	EXPECT_TRUE(r.warnings.empty());
+	fs::remove(path);
 }

@@ -4,7 +4,7 @@
 #include <gridvector/io/LogReader.h>
 #include <gridvector/io/RawlogWriter.h>
 
-#include "NoReturnRange.h"
+#include <gridvector/io/NoReturnRange.h>
 
 #include <cstdio>
 #include <iostream>
@@ -41,10 +41,10 @@ int main(int argc, char** argv)
 		if (args.has("max-range"))
 		{
 			const bool autoRange = args.get("max-range") == "auto";
-			const auto range = autoRange ? gridvector::carmen2rawlog::saturationRange(log)
+			const auto range = autoRange ? gridvector::io::saturationRange(log)
 										 : std::optional<double>(args.getDouble("max-range", 0));
 			if (!autoRange && !(*range > 0)) args.fail("--max-range must be a positive number or 'auto'");
-			if (range) gridvector::carmen2rawlog::applyMaxRange(log, *range);
+			if (range) gridvector::io::applyMaxRange(log, *range);
 			char buf[64];
 			std::snprintf(buf, sizeof buf, "; max range set to %.2f m", range.value_or(0));
 			rangeNote = range ? buf : "; declared max range kept";

@@ -1,9 +1,11 @@
 #include <gridvector/io/CarmenReader.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/LogReader.h>
+#include <gridvector/io/NoReturnRange.h>
 #include <gridvector/io/RawlogReader.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cctype>
 
 namespace gridvector::io
@@ -26,6 +28,25 @@ bool looksLikeText(const std::vector<char>& bytes)
 }
 }  // namespace
 
+namespace
+{
+// CARMEN declares one maximum for the log; a saturating scanner's real "no return" is lower.
+void applyNoReturnRange(LogData& log)
+{
+	const auto range = saturationRange(log);
+	if (!range) return;
+	float declared = 0;
+	for (const auto& r : log.scans) declared = std::max(declared, r.scan->maxRange);
+	if (*range >= double(declared) - 0.011) return;  // already the declared maximum
+	applyMaxRange(log, *range);
+	char buf[160];
+	std::snprintf(buf, sizeof buf, "readings of exactly %.2f m (the largest, in >= 1 %% of the scans) are the scanner's no-return value: max range %.2f m instead of %.2f m",
+				  *range, *range, double(declared));
+	log.warnings.push_back(buf);
+	log.summary += std::string("; ") + buf;
+}
+}  // namespace
+
 LogData readLog(const std::string& path, const ReadOptions& opt)
 {
 	std::string name = path;
@@ -34,7 +55,10 @@ LogData readLog(const std::string& path, const ReadOptions& opt)
 	const std::vector<char> bytes = readFileBytes(path);
 	const bool rawlog = endsWith(name, ".rawlog") ||
 						(!endsWith(name, ".log") && !endsWith(name, ".clf") && !looksLikeText(bytes));
-	return rawlog ? parseRawlog(bytes, path, opt) : parseCarmenLog(bytes, path, opt);
+	if (rawlog) return parseRawlog(bytes, path, opt);
+	LogData log = parseCarmenLog(bytes, path, opt);
+	if (opt.detectNoReturnRange) applyNoReturnRange(log);
+	return log;
 }
 
 Trajectory trajectoryOf(const LogData& log, bool logPose)

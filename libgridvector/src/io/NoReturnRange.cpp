@@ -1,11 +1,11 @@
 // Sensor max range of a CARMEN log from its readings (the "no return" value, see NoReturnRange.h).
-#include "NoReturnRange.h"
+#include <gridvector/io/NoReturnRange.h>
 
 #include <algorithm>
 
-namespace gridvector::carmen2rawlog
+namespace gridvector::io
 {
-std::optional<double> saturationRange(const io::LogData& log, double minShare)
+std::optional<double> saturationRange(const LogData& log, double minShare)
 {
 	float top = 0;
 	for (const auto& r : log.scans)
@@ -24,7 +24,7 @@ std::optional<double> saturationRange(const io::LogData& log, double minShare)
 	return double(top);
 }
 
-void applyMaxRange(io::LogData& log, double range)
+void applyMaxRange(LogData& log, double range)
 {
 	for (auto& r : log.scans)
 	{
@@ -34,4 +34,4 @@ void applyMaxRange(io::LogData& log, double range)
 			if (s.getScanRange(k) >= float(range)) s.setScanRangeValidity(k, false);
 	}
 }
-}  // namespace gridvector::carmen2rawlog
+}  // namespace gridvector::io

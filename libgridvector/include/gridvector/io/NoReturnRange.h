@@ -6,12 +6,12 @@
 
 #include <optional>
 
-namespace gridvector::carmen2rawlog
+namespace gridvector::io
 {
 /** The largest valid reading of the log, when at least `minShare` of the scans contain it
  * exactly (a saturation value, not a wall); nullopt when the declared maxima stand. */
-std::optional<double> saturationRange(const io::LogData& log, double minShare = 0.01);
+std::optional<double> saturationRange(const LogData& log, double minShare = 0.01);
 
 /** Every scan's maxRange becomes `range`; readings at or beyond it are invalid. */
-void applyMaxRange(io::LogData& log, double range);
-}  // namespace gridvector::carmen2rawlog
+void applyMaxRange(LogData& log, double range);
+}  // namespace gridvector::io

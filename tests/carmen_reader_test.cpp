@@ -323,6 +323,7 @@ TEST(NoReturnRange, SaturationBelowTheDeclaredMaximumIsNoReturn)
 	const LogData d = readLog(path);
 	ASSERT_EQ(d.scans.size(), 200u);
 	EXPECT_FLOAT_EQ(d.scans[0].scan->maxRange, 50.f);
+	EXPECT_DOUBLE_EQ(d.noReturnRange, 50.0);
 	EXPECT_FALSE(d.scans[0].scan->getScanRangeValidity(1));  // 50 m: no return
 	EXPECT_TRUE(d.scans[1].scan->getScanRangeValidity(1));  // 20.25 m: a hit
 	ASSERT_EQ(d.warnings.size(), 1u);

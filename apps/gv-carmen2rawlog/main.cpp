@@ -11,6 +11,21 @@
 
 using namespace gridvector::io;
 
+namespace
+{
+/** What the scans' max range is now, for the summary line. */
+std::string rangeNoteOf(const LogData& log, const std::string& mode)
+{
+	if (mode == "declared") return "; declared max range kept";
+	if (mode == "auto" && log.noReturnRange <= 0) return "; declared max range kept";
+	float r = 0;
+	for (const auto& s : log.scans) r = std::max(r, s.scan->maxRange);
+	char buf[64];
+	std::snprintf(buf, sizeof buf, "; max range set to %.2f m", double(r));
+	return buf;
+}
+}  // namespace
+
 int main(int argc, char** argv)
 {
 	ArgParser args("gv-carmen2rawlog", "IN.log[.gz] OUT.rawlog [options]");
@@ -19,10 +34,11 @@ int main(int argc, char** argv)
 				"sf: actions + sensory frames (for rbpf-slam)");
 	args.flag("no-compress", "write an uncompressed rawlog (default: gzip, as MRPT does)");
 	args.flag("front-only", "drop rear-laser scans (RLASER, RAWLASER2)");
-	args.option("max-range", "M|auto",
-				"readings at or beyond M metres are 'no return' (invalid) and every scan's maxRange is M; "
-				"auto: the largest reading when at least 1 % of the scans contain it exactly (a scanner "
-				"that saturates below the log's declared maximum), else the declared maximum (default: declared)");
+	args.option("max-range", "auto|declared|M",
+				"auto (default): a reading shared exactly by >= 1 % of the scans at the log's maximum, below the "
+				"declared maximum, is the scanner's no-return value (as the CARMEN reader does for every tool); "
+				"declared: keep the log's declared maximum; M: readings at or beyond M metres are 'no return' "
+				"(invalid) and every scan's maxRange is M");
 	args.flag("quiet", "no progress and no summary");
 	try
 	{
@@ -32,23 +48,18 @@ int main(int argc, char** argv)
 		if (format != "obs" && format != "sf") args.fail("--format must be obs or sf, got '" + format + "'");
 		const bool quiet = args.has("quiet");
 
+		const std::string rangeMode = args.get("max-range", "auto");
+		const bool fixedRange = rangeMode != "auto" && rangeMode != "declared";
+		const double range = fixedRange ? args.getDouble("max-range", 0) : 0;
+		if (fixedRange && !(range > 0)) args.fail("--max-range must be auto, declared or a positive number");
 		ReadOptions ro;
 		ro.quiet = quiet;
 		ro.includeRearLaser = !args.has("front-only");
+		ro.detectNoReturnRange = rangeMode == "auto";
 		LogData log = readLog(args.positional()[0], ro);
 		if (log.scans.empty()) throw std::runtime_error(args.positional()[0] + ": no laser scans to convert");
-		std::string rangeNote;
-		if (args.has("max-range"))
-		{
-			const bool autoRange = args.get("max-range") == "auto";
-			const auto range = autoRange ? gridvector::io::saturationRange(log)
-										 : std::optional<double>(args.getDouble("max-range", 0));
-			if (!autoRange && !(*range > 0)) args.fail("--max-range must be a positive number or 'auto'");
-			if (range) gridvector::io::applyMaxRange(log, *range);
-			char buf[64];
-			std::snprintf(buf, sizeof buf, "; max range set to %.2f m", range.value_or(0));
-			rangeNote = range ? buf : "; declared max range kept";
-		}
+		if (fixedRange) gridvector::io::applyMaxRange(log, range);
+		const std::string rangeNote = rangeNoteOf(log, rangeMode);
 
 		RawlogWriteOptions wo;
 		wo.format = format == "sf" ? RawlogFormat::SensoryFrames : RawlogFormat::Observations;

@@ -29,7 +29,11 @@ fi
 # mkbench's declared 81 m) gets that as its no-return range; other logs keep the declared one.
 python3 "$GV_SHARED_DIR/bench/mkbench.py" "$DATA/aces-corrected.log.gz" "$T/aces" --seed 1 > /dev/null
 "$BIN/gv-carmen2rawlog" "$T/aces.log" "$T/aces.rawlog" --max-range auto > "$T/out.txt"
-grep -q "max range 81.00 m; 440 ODOM, 3 PARAM; max range set to 50.00 m" "$T/out.txt" || fail "aces auto: $(head -1 "$T/out.txt")"
+grep -q "no-return value: max range 50.00 m instead of 81.00 m; max range set to 50.00 m" "$T/out.txt" || fail "aces auto: $(head -1 "$T/out.txt")"
+"$BIN/gv-carmen2rawlog" "$T/aces.log" "$T/aces_default.rawlog" > "$T/out.txt"  # auto is the default
+grep -q "; max range set to 50.00 m" "$T/out.txt" || fail "aces default: $(head -1 "$T/out.txt")"
+"$BIN/gv-carmen2rawlog" "$T/aces.log" "$T/aces_declared.rawlog" --max-range declared > "$T/out.txt"
+grep -q "max range 81.00 m; 440 ODOM, 3 PARAM; declared max range kept" "$T/out.txt" || fail "aces declared: $(head -1 "$T/out.txt")"
 "$BIN/gv-carmen2rawlog" "$DATA/intel-corrected.log.gz" "$T/i.rawlog" --max-range auto > "$T/out.txt"
 grep -q "; declared max range kept" "$T/out.txt" || fail "intel auto: $(head -1 "$T/out.txt")"
 if command -v rawlog-edit >/dev/null; then
@@ -43,7 +47,7 @@ fi
 set +e
 "$BIN/gv-carmen2rawlog" "$T/aces.log" "$T/x.rawlog" --max-range -3 2> "$T/err.txt"; rc=$?
 set -e
-[ $rc -eq 2 ] && grep -q "max-range must be a positive number or 'auto'" "$T/err.txt" || fail "bad --max-range: exit $rc, $(cat "$T/err.txt")"
+[ $rc -eq 2 ] && grep -q "max-range must be auto, declared or a positive number" "$T/err.txt" || fail "bad --max-range: exit $rc, $(cat "$T/err.txt")"
 
 # errors: one line on stderr, exit 1 for bad input, 2 for bad usage, no output file left behind
 printf 'FLASER 3 1.0 nan 2.0 0 0 0 0 0 0 5.0 h 5.0\n' > "$T/bad.log"

@@ -39,6 +39,7 @@ void applyNoReturnRange(LogData& log)
 	for (const auto& r : log.scans) declared = std::max(declared, r.scan->maxRange);
 	if (*range >= double(declared) - 0.011) return;  // already the declared maximum
 	applyMaxRange(log, *range);
+	log.noReturnRange = *range;
 	char buf[160];
 	std::snprintf(buf, sizeof buf, "readings of exactly %.2f m (the largest, in >= 1 %% of the scans) are the scanner's no-return value: max range %.2f m instead of %.2f m",
 				  *range, *range, double(declared));

@@ -31,6 +31,7 @@ struct LogData
 	std::string source;  //!< the path read
 	std::string summary;  //!< one line: what was read (counts, laser geometry, warnings)
 	std::vector<std::string> warnings;  //!< oddities that are not errors (also in summary)
+	double noReturnRange = 0;  //!< > 0: the scanner's no-return value found and applied (ReadOptions)
 };
 
 struct ReadOptions

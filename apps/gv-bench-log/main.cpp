@@ -16,9 +16,7 @@ int main(int argc, char** argv)
 	args.option("drift-deg-per-m", "X", "systematic yaw drift (default 0.8)");
 	args.option("dt", "S", "synthetic seconds between scans (default 0.2)");
 	args.flag("quiet", "no summary line");
-	try
-	{
-		if (!args.parse(argc, argv)) return std::cout << args.usage(), 0;
+	return io::runTool(args, argc, argv, [&] {
 		args.requirePositional(2, 2);
 		sim::BenchmarkOptions o;
 		o.seed = args.getInt("seed", 1, 0, 0x7fffffffffffffffL);
@@ -33,15 +31,5 @@ int main(int argc, char** argv)
 			std::cout << "gv-bench-log: " << s.scans << " scans from " << args.positional()[0] << " (seed " << o.seed
 					  << ") -> " << s.logPath << ", " << s.refPath << "\n";
 		return 0;
-	}
-	catch (const io::UsageError& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 2;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 1;
-	}
+	});
 }

@@ -268,33 +268,22 @@ int main(int argc, char** argv)
 	args.option("band", "M", "compare cells within M metres of a vector (default 0.2)");
 	args.option("repeat", "R", "sequential insertion R times, each scan's fastest time kept (default 1)");
 	args.option("samples", "N", "Eq. 6 sub-samples per axis of a grid cell (default: automatic)");
-	try
-	{
-		if (!args.parse(argc, argv))
-		{
-			std::cout << args.usage();
+	io::ToolErrorStyle style;
+	style.prefix = "gv-bench-map: ";
+	return io::runTool(
+		args, argc, argv,
+		[&] {
+			args.requirePositional(1, 100);
+			GridVectorConfig cfg;
+			if (args.has("config")) cfg.loadFromFile(args.get("config"));
+			const long maxScans = args.getInt("max-scans", 0, 0, 100000000);
+			const double band = args.getDouble("band", 0.2);
+			gRepeat = int(args.getInt("repeat", 1, 1, 100));
+			gSamples = int(args.getInt("samples", cfg.occupancy.samplesPerAxis, 0, 16));
+			gMaxPooling = cfg.occupancy.maxPooling;
+			std::printf("| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/n_v static | n_g/cells | agree seq | agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+			for (const auto& log : args.positional()) benchLog(log, cfg, maxScans, band);
 			return 0;
-		}
-		args.requirePositional(1, 100);
-		GridVectorConfig cfg;
-		if (args.has("config")) cfg.loadFromFile(args.get("config"));
-		const long maxScans = args.getInt("max-scans", 0, 0, 100000000);
-		const double band = args.getDouble("band", 0.2);
-		gRepeat = int(args.getInt("repeat", 1, 1, 100));
-		gSamples = int(args.getInt("samples", cfg.occupancy.samplesPerAxis, 0, 16));
-		gMaxPooling = cfg.occupancy.maxPooling;
-		std::printf("| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/n_v static | n_g/cells | agree seq | agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-		for (const auto& log : args.positional()) benchLog(log, cfg, maxScans, band);
-	}
-	catch (const io::UsageError& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 2;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << "gv-bench-map: " << e.what() << "\n";
-		return 1;
-	}
-	return 0;
+		},
+		style);
 }

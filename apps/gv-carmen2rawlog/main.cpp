@@ -40,9 +40,7 @@ int main(int argc, char** argv)
 				"declared: keep the log's declared maximum; M: readings at or beyond M metres are 'no return' "
 				"(invalid) and every scan's maxRange is M");
 	args.flag("quiet", "no progress and no summary");
-	try
-	{
-		if (!args.parse(argc, argv)) return std::cout << args.usage(), 0;
+	return runTool(args, argc, argv, [&] {
 		args.requirePositional(2, 2);
 		const std::string format = args.get("format", "obs");
 		if (format != "obs" && format != "sf") args.fail("--format must be obs or sf, got '" + format + "'");
@@ -77,15 +75,5 @@ int main(int argc, char** argv)
 					  << (wo.compress ? ", gzip" : "") << ")\n";
 		}
 		return 0;
-	}
-	catch (const UsageError& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 2;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 1;
-	}
+	});
 }

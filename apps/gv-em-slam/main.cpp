@@ -13,7 +13,6 @@
 
 #include <gridvector/DoorDetector.h>
 #include <gridvector/EmSlam.h>
-#include <gridvector/ErrorText.h>
 #include <gridvector/MapExport.h>
 #include <gridvector/MemoryAccounting.h>
 #include <gridvector/OccupancyConversion.h>
@@ -163,28 +162,21 @@ int main(int argc, char** argv)
 	args.option("init", "TRAJ", "start from this 't x y theta' trajectory (e.g. gv-graphslam's) instead of raw odometry");
 	args.option("max-iterations", "N", "EM iterations at most (overrides [gridvector_mstep] max_iterations)");
 	args.flag("quiet", "no progress or summary output");
-	try
-	{
-		if (!args.parse(argc, argv))
-		{
-			std::cout << args.usage();
-			return 0;
-		}
-		if (!args.has("input") || !args.has("out")) args.fail("--input and --out are required");
-		args.requirePositional(0, 0);
-	}
-	catch (const io::UsageError& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 2;
-	}
-	try
-	{
-		return run(args);
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << oneLineError(e) << "\n";
-		return 1;
-	}
+	io::ToolErrorStyle style;
+	style.oneLine = true;
+	return io::runTool(
+		args, argc, argv,
+		[&] {
+			if (!args.has("input") || !args.has("out")) args.fail("--input and --out are required");
+			args.requirePositional(0, 0);
+			try
+			{
+				return run(args);
+			}
+			catch (const io::UsageError& e)  // a bad option value found while running (--max-iterations): status 1
+			{
+				throw std::runtime_error(e.what());
+			}
+		},
+		style);
 }

@@ -84,23 +84,11 @@ int main(int argc, char** argv)
 	args.option("doors", "FILE", "map: detected doors 'hinge_x hinge_y length ...' to score door recall");
 	args.option("tolerance", "M", "map: distance for 'on a wall' / 'on a dynamic object' (default 0.1 m)");
 	args.option("door-tolerance", "M", "map: hinge match distance (default 0.3 m)");
-	try
-	{
-		if (!args.parse(argc, argv)) return std::cout << args.usage(), 0;
+	return io::runTool(args, argc, argv, [&]() -> int {
 		if (args.positional().empty()) args.fail("missing command (traj or map)");
 		const std::string cmd = args.positional()[0];
 		if (cmd == "traj") return trajectoryCommand(args);
 		if (cmd == "map") return mapCommand(args);
 		args.fail("unknown command '" + cmd + "' (expected traj or map)");
-	}
-	catch (const io::UsageError& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 2;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 1;
-	}
+	});
 }

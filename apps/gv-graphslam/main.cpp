@@ -323,24 +323,18 @@ int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-graphslam", "--2d -i INI -r RAWLOG [-g GT] [-n NRD] [-e ERD] [-o GSO] [options]");
 	declare(args);
-	try
-	{
-		const auto argvLong = longOptions(argc, argv);
-		std::vector<const char*> cargv;
-		for (const auto& a : argvLong) cargv.push_back(a.c_str());
-		if (!args.parse(int(cargv.size()), cargv.data())) return std::cout << args.usage(), 0;
-		DeciderRegistry reg;
-		if (listings(args, reg)) return 0;
-		return run(settingsFrom(args, reg), reg);
-	}
-	catch (const io::UsageError& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 2;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << "gv-graphslam: " << oneLineError(e) << "\n";
-		return 1;
-	}
+	const auto argvLong = longOptions(argc, argv);
+	std::vector<const char*> cargv;
+	for (const auto& a : argvLong) cargv.push_back(a.c_str());
+	io::ToolErrorStyle style;
+	style.prefix = "gv-graphslam: ";
+	style.oneLine = true;
+	return io::runTool(
+		args, int(cargv.size()), cargv.data(),
+		[&] {
+			DeciderRegistry reg;
+			if (listings(args, reg)) return 0;
+			return run(settingsFrom(args, reg), reg);
+		},
+		style);
 }

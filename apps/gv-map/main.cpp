@@ -8,7 +8,6 @@
 // Writes to DIR: map.gvmap (serialized mrpt::maps::CGridVectorMap), vectors.txt,
 // vectors.svg, occupancy.png, occupancy.pgm + occupancy.yaml (ROS map_server),
 // map.3Dscene (MRPT viewers) and memory.json (Table 1).
-#include <gridvector/ErrorText.h>
 #include <gridvector/MapExport.h>
 #include <gridvector/MemoryAccounting.h>
 #include <gridvector/OccupancyConversion.h>
@@ -141,26 +140,15 @@ int main(int argc, char** argv)
 	args.option("out", "DIR", "output directory (created if missing)");
 	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_*] sections)");
 	args.flag("quiet", "no progress and no summary");
-	try
-	{
-		if (!args.parse(argc, argv))
-		{
-			std::cout << args.usage();
-			return 0;
-		}
-		args.requirePositional(0, 0);
-		for (const char* req : {"input", "poses", "out"})
-			if (!args.has(req)) args.fail(std::string("missing --") + req);
-		return run(args);
-	}
-	catch (const io::UsageError& e)
-	{
-		std::cerr << oneLineError(e) << "\n";
-		return 2;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << oneLineError(e) << "\n";
-		return 1;
-	}
+	io::ToolErrorStyle style;
+	style.oneLine = style.oneLineUsage = true;
+	return io::runTool(
+		args, argc, argv,
+		[&] {
+			args.requirePositional(0, 0);
+			for (const char* req : {"input", "poses", "out"})
+				if (!args.has(req)) args.fail(std::string("missing --") + req);
+			return run(args);
+		},
+		style);
 }

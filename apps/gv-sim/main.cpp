@@ -126,9 +126,7 @@ int main(int argc, char** argv)
 		def << std::boolalpha << std::setprecision(12) << v;
 		args.option(dashed(k), typeName(v), std::string(help) + " (default " + def.str() + ")");
 	});
-	try
-	{
-		if (!args.parse(argc, argv)) return std::cout << args.usage(), 0;
+	return io::runTool(args, argc, argv, [&] {
 		args.requirePositional(0, 0);
 		if (args.has("list-worlds"))
 		{
@@ -168,15 +166,5 @@ int main(int argc, char** argv)
 						simSecs, r.scans.size(), timeMrptLaserSimulator(r));
 		}
 		return 0;
-	}
-	catch (const io::UsageError& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 2;
-	}
-	catch (const std::exception& e)
-	{
-		std::cerr << e.what() << "\n";
-		return 1;
-	}
+	});
 }

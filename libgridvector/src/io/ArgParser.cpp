@@ -1,9 +1,11 @@
+#include <gridvector/ErrorText.h>
 #include <gridvector/io/ArgParser.h>
 
 #include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <iostream>
 #include <sstream>
 
 namespace gridvector::io
@@ -114,6 +116,41 @@ void ArgParser::requirePositional(size_t lo, size_t hi) const
 {
 	if (positional_.size() < lo) fail("missing arguments");
 	if (positional_.size() > hi) fail("unexpected argument '" + positional_[hi] + "'");
+}
+
+int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body,
+			const ToolErrorStyle& style, std::ostream& out, std::ostream& err)
+{
+	try
+	{
+		if (!args.parse(argc, argv))
+		{
+			out << args.usage();
+			return 0;
+		}
+		return body();
+	}
+	catch (const UsageError& e)
+	{
+		err << (style.oneLineUsage ? oneLineError(e) : std::string(e.what())) << "\n";
+		return 2;
+	}
+	catch (const std::exception& e)
+	{
+		err << style.prefix << (style.oneLine ? oneLineError(e) : std::string(e.what())) << "\n";
+		return 1;
+	}
+	catch (...)
+	{
+		err << style.prefix << "unknown error\n";
+		return 1;
+	}
+}
+
+int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body,
+			const ToolErrorStyle& style)
+{
+	return runTool(args, argc, argv, body, style, std::cout, std::cerr);
 }
 
 }  // namespace gridvector::io

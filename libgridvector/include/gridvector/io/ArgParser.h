@@ -1,7 +1,9 @@
 // Command-line parsing for the tools: declared options only, every problem is
-// one clear line ("prog: unknown option --x (see --help)").
+// one clear line ("prog: unknown option --x (see --help)"); runTool is the main() they share.
 #pragma once
 
+#include <functional>
+#include <iosfwd>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -50,5 +52,25 @@ class ArgParser
 	std::map<std::string, std::string> values_;
 	std::vector<std::string> positional_;
 };
+
+/** How runTool words a tool's errors (part of each tool's interface: scripts grep them). */
+struct ToolErrorStyle
+{
+	/** Before the message of an error that is not a UsageError, e.g. "gv-bench-map: ". */
+	std::string prefix;
+	/** oneLineError(e) (ErrorText.h: the message of an MRPT exception, without its backtrace) instead of e.what(). */
+	bool oneLine = false;
+	/** The same for a UsageError. */
+	bool oneLineUsage = false;
+};
+
+/** A tool's main(): args.parse(argc, argv), then body().
+ *  --help: args.usage() on out, 0. Otherwise body()'s return value, except:
+ *  a UsageError: its message on err, 2; any other exception: style.prefix + its message on err, 1. */
+int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body,
+			const ToolErrorStyle& style, std::ostream& out, std::ostream& err);
+/** The same on std::cout and std::cerr. */
+int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body,
+			const ToolErrorStyle& style = {});
 
 }  // namespace gridvector::io

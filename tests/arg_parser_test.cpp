@@ -1,0 +1,163 @@
+// io::ArgParser and io::runTool, the main() every tool shares.
+#include <gridvector/io/ArgParser.h>
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <new>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using namespace gridvector;
+
+namespace
+{
+struct ToolRun
+{
+	int status = -1;
+	std::string out, err;
+	bool bodyRan = false;
+};
+
+/** runTool on "tool ARGS..." with a --n option, capturing stdout and stderr. */
+ToolRun runTool(const std::vector<std::string>& args, const std::function<int(const io::ArgParser&)>& body,
+			const io::ToolErrorStyle& style = {})
+{
+	io::ArgParser parser("tool", "[--n N] [ARG]");
+	parser.option("n", "N", "a number");
+	std::vector<const char*> argv{"tool"};
+	for (const auto& a : args) argv.push_back(a.c_str());
+	std::ostringstream out, err;
+	ToolRun r;
+	r.status = io::runTool(
+		parser, int(argv.size()), argv.data(),
+		[&] {
+			r.bodyRan = true;
+			return body(parser);
+		},
+		style, out, err);
+	r.out = out.str();
+	r.err = err.str();
+	return r;
+}
+
+int ok(const io::ArgParser&) { return 0; }
+
+const char* kMrptError =
+	"==== MRPT exception ====\n"
+	"Message: bad.rawlog: entry 3: unreadable\n"
+	"Location: CRawlog.cpp:42\n"
+	"Call stack backtrace:\n"
+	"[0 ] 0x1234 mrpt::obs::CRawlog::read()\n";
+}  // namespace
+
+TEST(ArgParser, OptionsFlagsAndPositionals)
+{
+	io::ArgParser a("tool", "ARG");
+	a.option("n", "N", "a number");
+	a.flag("quiet", "quiet");
+	const char* argv[] = {"tool", "--n=3", "x", "--quiet", "--", "--y"};
+	ASSERT_TRUE(a.parse(6, argv));
+	EXPECT_EQ(a.getInt("n", 0, 0, 10), 3);
+	EXPECT_TRUE(a.has("quiet"));
+	EXPECT_EQ(a.positional(), (std::vector<std::string>{"x", "--y"}));
+	EXPECT_THROW(a.getInt("n", 0, 4, 10), io::UsageError);
+}
+
+TEST(RunTool, HelpPrintsUsageOnStdoutAndReturnsZero)
+{
+	const ToolRun r = runTool({"--help"}, [](const io::ArgParser&) { return 7; });
+	EXPECT_EQ(r.status, 0);
+	EXPECT_FALSE(r.bodyRan);
+	EXPECT_EQ(r.out.rfind("usage: tool [--n N] [ARG]\n", 0), 0u) << r.out;
+	EXPECT_NE(r.out.find("--n N"), std::string::npos);
+	EXPECT_EQ(r.err, "");
+}
+
+TEST(RunTool, BodysStatusPassedThrough)
+{
+	for (int status : {0, 1, 3, 42})
+	{
+		const ToolRun r = runTool({"--n", "5", "x"}, [&](const io::ArgParser& a) {
+			EXPECT_EQ(a.get("n"), "5");
+			EXPECT_EQ(a.positional().at(0), "x");
+			return status;
+		});
+		EXPECT_TRUE(r.bodyRan);
+		EXPECT_EQ(r.status, status);
+		EXPECT_EQ(r.out, "");
+		EXPECT_EQ(r.err, "");
+	}
+}
+
+TEST(RunTool, UsageErrorIsOneLineAndStatusTwo)
+{
+	// from parsing: the body does not run
+	ToolRun r = runTool({"--peeple", "3"}, ok);
+	EXPECT_FALSE(r.bodyRan);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_EQ(r.err, "tool: unknown option --peeple (see --help)\n");
+	EXPECT_EQ(r.out, "");
+	// from the body, also with an error prefix (that is for other errors only)
+	io::ToolErrorStyle style;
+	style.prefix = "tool: ";
+	r = runTool({"--n", "x"}, [](const io::ArgParser& a) { return int(a.getInt("n", 0, 0, 9)); }, style);
+	EXPECT_TRUE(r.bodyRan);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_EQ(r.err, "tool: --n needs an integer, got 'x' (see --help)\n");
+	r = runTool({"a", "b"}, [](const io::ArgParser& a) { return a.requirePositional(0, 1), 0; });
+	EXPECT_EQ(r.status, 2);
+	EXPECT_EQ(r.err, "tool: unexpected argument 'b' (see --help)\n");
+}
+
+TEST(RunTool, OtherErrorIsOneLineAndStatusOne)
+{
+	const auto fails = [](const io::ArgParser&) -> int { throw std::runtime_error("in.log:3: no scan"); };
+	ToolRun r = runTool({}, fails);
+	EXPECT_EQ(r.status, 1);
+	EXPECT_EQ(r.err, "in.log:3: no scan\n");
+	EXPECT_EQ(r.out, "");
+
+	io::ToolErrorStyle style;
+	style.prefix = "tool: ";
+	r = runTool({}, fails, style);
+	EXPECT_EQ(r.status, 1);
+	EXPECT_EQ(r.err, "tool: in.log:3: no scan\n");
+
+	// an MRPT exception: what() as it is, or its message alone (oneLine)
+	const auto mrpt = [](const io::ArgParser&) -> int { throw std::runtime_error(kMrptError); };
+	r = runTool({}, mrpt);
+	EXPECT_EQ(r.status, 1);
+	EXPECT_EQ(r.err, std::string(kMrptError) + "\n");
+	style.oneLine = true;
+	r = runTool({}, mrpt, style);
+	EXPECT_EQ(r.status, 1);
+	EXPECT_EQ(r.err, "tool: bad.rawlog: entry 3: unreadable\n");
+}
+
+TEST(RunTool, OneLineUsageErrors)
+{
+	io::ToolErrorStyle style;
+	style.oneLineUsage = true;
+	const ToolRun r = runTool({"a\n\nb", "c"}, [](const io::ArgParser& a) { return a.requirePositional(0, 0), 0; }, style);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_EQ(r.err, "tool: unexpected argument 'a b' (see --help)\n");
+}
+
+TEST(RunTool, NeverACrash)
+{
+	ToolRun r = runTool({}, [](const io::ArgParser&) -> int { throw 42; });
+	EXPECT_EQ(r.status, 1);
+	EXPECT_EQ(r.err, "unknown error\n");
+	r = runTool({}, [](const io::ArgParser&) -> int { throw std::bad_alloc(); });
+	EXPECT_EQ(r.status, 1);
+	EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;
+	// --help with a bad rest of the line is a usage error
+	r = runTool({"--help", "--n"}, ok);
+	EXPECT_EQ(r.status, 2);
+	EXPECT_EQ(r.err, "tool: option --n needs a value N (see --help)\n");
+	EXPECT_EQ(r.out, "");
+	EXPECT_FALSE(r.bodyRan);
+}

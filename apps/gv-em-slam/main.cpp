@@ -169,14 +169,7 @@ int main(int argc, char** argv)
 		[&] {
 			if (!args.has("input") || !args.has("out")) args.fail("--input and --out are required");
 			args.requirePositional(0, 0);
-			try
-			{
-				return run(args);
-			}
-			catch (const io::UsageError& e)  // a bad option value found while running (--max-iterations): status 1
-			{
-				throw std::runtime_error(e.what());
-			}
+			return run(args);  // a bad option value found there (--max-iterations 0) is bad usage: status 2
 		},
 		style);
 }

@@ -2,9 +2,7 @@
 
 #include <gridvector/io/AtomicFile.h>
 
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CGridVectorMap.h>
-#include <mrpt/serialization/CArchive.h>
 
 #include <algorithm>
 #include <cmath>
@@ -78,14 +76,7 @@ void writeGvmap(const std::string& path, const GridVectorConfig& cfg, const std:
 {
 	mrpt::maps::CGridVectorMap map(cfg);
 	map.globalMap().setVectors(vectors);
-	io::AtomicFile f(path, io::AtomicFile::Mode::External);
-	{
-		mrpt::io::CFileGZOutputStream gz;
-		if (!gz.open(f.tempPath())) throw std::runtime_error(path + ": cannot write");
-		auto a = mrpt::serialization::archiveFrom(gz);
-		a << map;
-	}
-	f.commit();
+	map.saveToFile(path);
 }
 
 namespace

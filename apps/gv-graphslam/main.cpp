@@ -15,7 +15,6 @@
 #include <mrpt/graphslam/CGraphSlamEngine.h>
 #include <mrpt/graphslam/levmarq.h>
 #include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/obs/CRawlog.h>
 #include <mrpt/serialization/CArchive.h>
@@ -190,14 +189,7 @@ size_t loopClosures(const graph_t& g, int minDiff)
 
 void writeGridVectorMap(const std::string& dir, const mrpt::maps::CGridVectorMap& map)
 {
-	io::AtomicFile gv(dir + "/map.gvmap", io::AtomicFile::Mode::External);
-	{
-		mrpt::io::CFileGZOutputStream f;
-		if (!f.open(gv.tempPath())) throw std::runtime_error(gv.path() + ": cannot write");
-		auto a = mrpt::serialization::archiveFrom(f);
-		a << map;
-	}
-	gv.commit();
+	map.saveToFile(dir + "/map.gvmap");
 	MapExport::writeVectorsText(map.vectors(), dir + "/vectors.txt");
 	MapExport::writeSvg(map.vectors(), dir + "/vectors.svg");
 }

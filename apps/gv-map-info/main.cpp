@@ -5,7 +5,6 @@
 //   gv-map-info --from-simplemap FILE.simplemap [--config FILE.ini] [--save OUT.gvmap]
 #include <gridvector/ErrorText.h>
 #include <mrpt/io/CFileGZInputStream.h>
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/serialization/CArchive.h>
@@ -47,17 +46,6 @@ void readObject(const std::string& path, T& obj)
 	}
 }
 
-void saveAtomic(const std::string& path, const mrpt::maps::CGridVectorMap& map)
-{
-	const std::string tmp = path + ".tmp";
-	{
-		mrpt::io::CFileGZOutputStream f;
-		if (!f.open(tmp)) fail(path + ": cannot write");
-		auto a = mrpt::serialization::archiveFrom(f);
-		a << map;
-	}
-	if (std::rename(tmp.c_str(), path.c_str()) != 0) fail(path + ": cannot write (rename failed)");
-}
 }  // namespace
 
 int main(int argc, char** argv)
@@ -101,6 +89,16 @@ int main(int argc, char** argv)
 		fail(gridvector::oneLineError(e));
 	}
 	std::cout << map.asString() << "\n";
-	if (!save.empty()) saveAtomic(save, map);
+	if (!save.empty())
+	{
+		try
+		{
+			map.saveToFile(save);
+		}
+		catch (const std::exception& e)
+		{
+			fail(gridvector::oneLineError(e));
+		}
+	}
 	return 0;
 }

@@ -12,14 +12,12 @@
 #include <gridvector/MemoryAccounting.h>
 #include <gridvector/OccupancyConversion.h>
 #include <gridvector/io/ArgParser.h>
-#include <gridvector/io/Progress.h>
 #include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/Progress.h>
 #include <gridvector/io/LogReader.h>
 
-#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/poses/CPose3D.h>
-#include <mrpt/serialization/CArchive.h>
 
 
 #include <algorithm>
@@ -65,18 +63,6 @@ std::vector<std::optional<mrpt::math::TPose2D>> posesFor(const io::LogData& log,
 	return out;
 }
 
-void saveMap(const std::string& path, const mrpt::maps::CGridVectorMap& map)
-{
-	io::AtomicFile f(path, io::AtomicFile::Mode::External);
-	{
-		mrpt::io::CFileGZOutputStream gz;
-		if (!gz.open(f.tempPath())) throw std::runtime_error(path + ": cannot write");
-		auto a = mrpt::serialization::archiveFrom(gz);
-		a << map;
-	}
-	f.commit();
-}
-
 int run(const io::ArgParser& args)
 {
 	const std::string input = args.get("input"), poseSource = args.get("poses"), out = args.get("out");
@@ -112,7 +98,7 @@ int run(const io::ArgParser& args)
 	const auto& vectors = map.vectors();
 	const auto grid = OccupancyConversion::toOccupancyGrid(vectors, cfg.occupancy);
 	const std::string dir = out + "/";
-	saveMap(dir + "map.gvmap", map);
+	map.saveToFile(dir + "map.gvmap");
 	MapExport::writeVectorsText(vectors, dir + "vectors.txt");
 	MapExport::writeSvg(vectors, dir + "vectors.svg");
 	MapExport::writePng(grid, dir + "occupancy.png");

@@ -1,5 +1,7 @@
 // CGridVectorMap: serialization (versioned) and text/SVG representation.
 #include <gridvector/MapExport.h>
+#include <gridvector/io/AtomicFile.h>
+#include <mrpt/io/CFileGZOutputStream.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/serialization/CArchive.h>
 
@@ -103,6 +105,18 @@ void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ve
 	setConfig(cfg);
 	map_.setVectors(std::move(vectors));
 	insertedScans_ = size_t(scans);
+}
+
+void CGridVectorMap::saveToFile(const std::string& path) const
+{
+	gridvector::io::AtomicFile f(path, gridvector::io::AtomicFile::Mode::External);
+	{
+		mrpt::io::CFileGZOutputStream gz;
+		if (!gz.open(f.tempPath())) throw std::runtime_error(path + ": cannot write");
+		auto a = mrpt::serialization::archiveFrom(gz);
+		a << *this;
+	}
+	f.commit();
 }
 
 void CGridVectorMap::saveMetricMapRepresentationToFile(const std::string& prefix) const

@@ -71,6 +71,9 @@ class CGridVectorMap : public CMetricMap
 	/** Writes `<prefix>_vectors.txt` (x1 y1 x2 y2 p_static per line),
 	 * `<prefix>_vectors.svg` and the Eq. 6 grid as `<prefix>_occupancy.png`. */
 	void saveMetricMapRepresentationToFile(const std::string& prefix) const override;
+	/** Writes the serialized map, gzip-compressed (a `.gvmap`), atomically;
+	 * throws std::runtime_error("path: cannot write ..."). */
+	void saveToFile(const std::string& path) const;
 	std::string asString() const override;
 	/** Vectors as line segments coloured by p_static (blue static .. red dynamic). */
 	void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;

@@ -1,5 +1,6 @@
 // LoopSearch (Sec. 4.2, issue 5): corner hypotheses, far-off priors, corridor and aliasing rejection.
 #include "em_world.h"
+#include "match_world.h"
 
 #include <gridvector/LoopSearch.h>
 
@@ -13,29 +14,12 @@ using emtest::TPose2D;
 
 namespace
 {
-struct Seg
-{
-	double x1, y1, x2, y2;
-};
+using Seg = matchtest::WorldSeg;
 
+/** `world` seen exactly from `pose`. */
 std::vector<MatchSegment> inFrame(const std::vector<Seg>& world, const TPose2D& pose, uint64_t firstId)
 {
-	std::vector<MatchSegment> out;
-	const double c = std::cos(pose.phi), s = std::sin(pose.phi);
-	auto local = [&](double x, double y) {
-		const double dx = x - pose.x, dy = y - pose.y;
-		return Eigen::Vector2d(c * dx + s * dy, -s * dx + c * dy);
-	};
-	for (const auto& w : world)
-	{
-		MatchSegment m;
-		m.s = local(w.x1, w.y1);
-		m.e = local(w.x2, w.y2);
-		m.length = (m.e - m.s).norm();
-		m.id = firstId++;
-		out.push_back(m);
-	}
-	return out;
+	return matchtest::observe(world, pose, 0.0, 0, firstId);
 }
 
 // An L-shaped room with an alcove: unique corners.

@@ -1,4 +1,6 @@
 // VectorMatcher (Sec. 4.2): registration accuracy, corridor degeneracy, rejection, speed.
+#include "match_world.h"
+
 #include <gridvector/VectorMatcher.h>
 
 #include <Eigen/Eigenvalues>
@@ -13,34 +15,8 @@ using mrpt::math::TPose2D;
 
 namespace
 {
-struct WorldSeg
-{
-	double x1, y1, x2, y2;
-};
-
-// Express world segments (open side on the left) in the frame of `pose`, with noise.
-std::vector<MatchSegment> observe(const std::vector<WorldSeg>& world, const TPose2D& pose,
-								  double noise, unsigned seed, uint64_t firstId)
-{
-	std::mt19937 rng(seed);
-	std::normal_distribution<double> n(0, noise);
-	const double c = std::cos(pose.phi), s = std::sin(pose.phi);
-	auto local = [&](double x, double y) {
-		const double dx = x - pose.x, dy = y - pose.y;
-		return Eigen::Vector2d(c * dx + s * dy + n(rng), -s * dx + c * dy + n(rng));
-	};
-	std::vector<MatchSegment> out;
-	for (const auto& w : world)
-	{
-		MatchSegment m;
-		m.s = local(w.x1, w.y1);
-		m.e = local(w.x2, w.y2);
-		m.length = (m.e - m.s).norm();
-		m.id = firstId++;
-		out.push_back(m);
-	}
-	return out;
-}
+using matchtest::observe;
+using matchtest::WorldSeg;
 
 TPose2D relative(const TPose2D& a, const TPose2D& b)
 {

@@ -77,6 +77,8 @@ TEST(MapEval, KnownAnswers)
 	EXPECT_NEAR(m.staticRecall, (4.0 + std::sqrt(0.0075)) / 8.0, kTol);
 	EXPECT_NEAR(m.ghostLength, 2.6, kTol);
 	EXPECT_NEAR(m.ghostShare, 2.6 / 7.6, kTol);
+	// the door's leaf was never hit, so it was not seen in two states: its sector is static there
+	EXPECT_NEAR(m.ghostLengthSeenSwinging, 2.0, kTol);
 	EXPECT_NEAR(m.dynamicHitLength, 2.0, 1e-9);
 	EXPECT_NEAR(m.dynamicDetection, (1.0 + std::sqrt(0.0075)) / 2.0, kTol);
 	EXPECT_NEAR(m.dynamicOnWalls, 1.0, kTol);
@@ -117,6 +119,37 @@ TEST(MapEval, DoorRecallOverDoorsSeenSwinging)
 	EXPECT_EQ(m.observedDoorsFound, 1u);
 	EXPECT_DOUBLE_EQ(m.doorRecallObserved, 1.0);
 	EXPECT_NE(eval::formatJson(m).find("\"door_recall_observed\": 1.000000"), std::string::npos);
+}
+
+TEST(MapEval, SecondGhostFigureLeavesOutDoorsSeenInOneState)
+{
+	sim::Truth t = truth();
+	sim::DoorTruth third = t.doors[0];
+	third.hinge = {40, 0};
+	t.doors.push_back(third);  // door 2 swings too, but is seen closed only
+	auto hit = [](sim::HitKind kind, int id, double x1, double y1, double x2, double y2) {
+		sim::HitRun h;
+		h.kind = kind, h.id = id, h.seg = {x1, y1, x2, y2}, h.beams = 8;
+		return h;
+	};
+	t.hits.push_back(hit(sim::HitKind::Door, 0, 20.1, 0, 20.9, 0));  // door 0 closed ...
+	t.hits.push_back(hit(sim::HitKind::Door, 0, 20, 0.9, 20, 0.2));  // ... and open: seen swinging
+	t.hits.push_back(hit(sim::HitKind::Door, 2, 40.1, 0, 40.9, 0));  // door 2 closed, at every pass
+	t.hits.push_back(hit(sim::HitKind::Person, 3, 40.5, 1, 41.5, 1));  // a person in front of door 2
+	const std::vector<eval::MapVector> v = {
+		vec(0, 0, 10, 0, true),  // the wall: 10 m
+		vec(20.2, 0, 20.8, 0, true),  // door 0's closed leaf, static: 0.6 m ghost in both figures
+		vec(40.2, 0, 40.8, 0, true),  // door 2's closed leaf: a ghost only in the first figure
+		vec(41, 1, 41.4, 1, true),  // the person's track: 0.4 m ghost in both
+	};
+	const auto m = eval::evaluateMap(v, t, nullptr);
+	EXPECT_NEAR(m.staticLength, 11.6, 1e-9);
+	EXPECT_NEAR(m.ghostLength, 1.6, kTol);  // unchanged: every door that swung is a dynamic place
+	EXPECT_NEAR(m.ghostLengthSeenSwinging, 1.0, kTol);
+	EXPECT_NEAR(m.ghostShareSeenSwinging, 1.0 / 11.6, kTol);
+	EXPECT_NE(eval::formatJson(m).find("\"ghost_length_seen_swinging_m\": 1.0"), std::string::npos) << eval::formatJson(m);
+	EXPECT_NE(eval::formatText(m).find("ghost length (doors seen in one state are static): 1.00 m"), std::string::npos)
+		<< eval::formatText(m);
 }
 
 TEST(MapEval, ReadsVectorsFilesStrictly)

@@ -136,10 +136,23 @@ MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& 
 					   const std::vector<sim::DoorTruth>* detectedDoors, const MapEvalOptions& opt)
 {
 	std::vector<Segment> staticVecs, dynamicVecs, dynamicPlaces = doorSweeps(truth.doors), hitSegs;
+	// the second ghost figure's places: doors seen in one state only are static (Sec. 5.4)
+	const std::vector<bool> seenSwinging = doorsSeenSwinging(truth, opt);
+	std::vector<sim::DoorTruth> swungDoors;
+	for (size_t i = 0; i < truth.doors.size(); ++i)
+		if (seenSwinging[i]) swungDoors.push_back(truth.doors[i]);
+	std::vector<Segment> swungPlaces = doorSweeps(swungDoors);
 	for (const auto& v : vectors) (v.isStatic ? staticVecs : dynamicVecs).push_back(v.seg);
-	for (const auto& e : truth.objectEdges) dynamicPlaces.push_back(e.edge);
-	for (const auto& h : truth.hits) dynamicPlaces.push_back(h.seg), hitSegs.push_back(h.seg);
-	const SegmentIndex walls(truth.walls), statics(staticVecs), dynamics(dynamicVecs), places(dynamicPlaces);
+	for (const auto& e : truth.objectEdges) dynamicPlaces.push_back(e.edge), swungPlaces.push_back(e.edge);
+	for (const auto& h : truth.hits)
+	{
+		dynamicPlaces.push_back(h.seg), hitSegs.push_back(h.seg);
+		const bool oneStateDoor = h.kind == sim::HitKind::Door &&
+								  !(h.id >= 0 && size_t(h.id) < seenSwinging.size() && seenSwinging[size_t(h.id)]);
+		if (!oneStateDoor) swungPlaces.push_back(h.seg);
+	}
+	const SegmentIndex walls(truth.walls), statics(staticVecs), dynamics(dynamicVecs), places(dynamicPlaces),
+		placesSwung(swungPlaces);
 	const double tw = opt.wallTolerance, td = opt.dynamicTolerance, step = opt.sampleStep;
 
 	MapMetrics m;
@@ -148,6 +161,8 @@ MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& 
 		m.staticLength += s.length();
 		m.staticOnWalls += lengthWhere(s, step, [&](const Vec2& p) { return walls.within(p, tw); });
 		m.ghostLength += lengthWhere(s, step, [&](const Vec2& p) { return !walls.within(p, tw) && places.within(p, td); });
+		m.ghostLengthSeenSwinging +=
+			lengthWhere(s, step, [&](const Vec2& p) { return !walls.within(p, tw) && placesSwung.within(p, td); });
 	}
 	for (const auto& s : dynamicVecs)
 	{
@@ -167,6 +182,7 @@ MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& 
 	m.staticPrecision = ratio(m.staticOnWalls, m.staticLength);
 	m.staticRecall = ratio(m.seenCovered, m.seenWallLength);
 	m.ghostShare = ratio(m.ghostLength, m.staticLength);
+	m.ghostShareSeenSwinging = ratio(m.ghostLengthSeenSwinging, m.staticLength);
 	m.dynamicDetection = ratio(m.dynamicHitDetected, m.dynamicHitLength);
 	if (detectedDoors) evaluateDoors(m, truth, *detectedDoors, opt);
 	return m;
@@ -180,6 +196,8 @@ std::string formatText(const MapMetrics& m)
 	   << "static recall:     " << f(m.staticRecall) << " (" << f(m.seenCovered, "%.2f") << " of "
 	   << f(m.seenWallLength, "%.2f") << " m of seen wall covered)\n"
 	   << "ghost length:      " << f(m.ghostLength, "%.2f") << " m (" << f(m.ghostShare) << " of static length)\n"
+	   << "ghost length (doors seen in one state are static): " << f(m.ghostLengthSeenSwinging, "%.2f") << " m ("
+	   << f(m.ghostShareSeenSwinging) << " of static length)\n"
 	   << "dynamic vectors:   " << f(m.dynamicLength, "%.2f") << " m (" << f(m.dynamicOnWalls, "%.2f")
 	   << " m of it on true walls)\n"
 	   << "dynamic detection: " << f(m.dynamicDetection) << " (" << f(m.dynamicHitDetected, "%.2f") << " of "
@@ -199,6 +217,8 @@ std::string formatJson(const MapMetrics& m)
 	os << "{\"static_length_m\": " << f(m.staticLength, "%.6f") << ", \"static_precision\": " << f(m.staticPrecision, "%.6f")
 	   << ", \"seen_wall_length_m\": " << f(m.seenWallLength, "%.6f") << ", \"static_recall\": " << f(m.staticRecall, "%.6f")
 	   << ", \"ghost_length_m\": " << f(m.ghostLength, "%.6f") << ", \"ghost_share\": " << f(m.ghostShare, "%.6f")
+	   << ", \"ghost_length_seen_swinging_m\": " << f(m.ghostLengthSeenSwinging, "%.6f")
+	   << ", \"ghost_share_seen_swinging\": " << f(m.ghostShareSeenSwinging, "%.6f")
 	   << ", \"dynamic_length_m\": " << f(m.dynamicLength, "%.6f") << ", \"dynamic_on_walls_m\": " << f(m.dynamicOnWalls, "%.6f")
 	   << ", \"dynamic_hit_length_m\": " << f(m.dynamicHitLength, "%.6f")
 	   << ", \"dynamic_detection\": " << f(m.dynamicDetection, "%.6f");

@@ -50,6 +50,13 @@ struct MapMetrics
 	double staticRecall = 0;  //!< seenCovered / seenWallLength
 	double ghostLength = 0;  //!< static length off the walls, on dynamic objects / moved object / door sweeps [m]
 	double ghostShare = 0;  //!< ghostLength / staticLength
+	/** A second, separately labelled ghost figure: the same, but a door whose
+	 * leaf the laser saw in one state only (not in two states, see
+	 * observedSwingingDoors) is no dynamic place (Sec. 5.4: "if a door never
+	 * changes its state, it will be regarded as part of the static
+	 * environment"): its sector and leaf hits are left out. ghostLength is unchanged. */
+	double ghostLengthSeenSwinging = 0;
+	double ghostShareSeenSwinging = 0;  //!< ghostLengthSeenSwinging / staticLength
 	double dynamicHitLength = 0;  //!< total length of runs of dynamic hits (truth_dynamic.txt) [m]
 	double dynamicHitDetected = 0;  //!< ... of it within tolerance of a dynamic vector [m]
 	double dynamicDetection = 0;  //!< dynamicHitDetected / dynamicHitLength

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -95,4 +96,50 @@ TEST(GridVectorConfig, ParameterTableListsEveryKey)
 			EXPECT_NE(md.find(std::string("`") + key + "`"), std::string::npos) << key;
 		});
 	});
+}
+
+TEST(GridVectorConfig, NamedValuesListEveryKeyAndSetThemBack)
+{
+	GridVectorConfig a;
+	a.grid.halfWidth = 3;
+	a.map.mergeOnInsert = false;
+	a.extraction.minLength = 0.21;
+	const auto named = a.namedValues();
+	size_t keys = 0;
+	a.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto&, const char*) { ++keys; }); });
+	ASSERT_EQ(named.size(), keys);
+	EXPECT_EQ(named.front().first, "extraction.min_range");
+	GridVectorConfig b;
+	for (const auto& [name, value] : named) EXPECT_TRUE(b.setNamedValue(name, value)) << name;
+	EXPECT_EQ(b.namedValues(), named);
+	EXPECT_EQ(b.grid.halfWidth, 3);
+	EXPECT_FALSE(b.map.mergeOnInsert);
+}
+
+TEST(GridVectorConfig, SetNamedValueRejectsUnknownKeysAndValuesOfTheWrongType)
+{
+	GridVectorConfig c;
+	EXPECT_FALSE(c.setNamedValue("grid.resolutoin", 0.2));
+	EXPECT_FALSE(c.setNamedValue("resolution", 0.2));
+	EXPECT_FALSE(c.setNamedValue("gridx.resolution", 0.2));
+	EXPECT_THROW(c.setNamedValue("grid.half_width", 1.5), std::invalid_argument);
+	EXPECT_THROW(c.setNamedValue("map.merge_on_insert", 0.5), std::invalid_argument);
+	EXPECT_THROW(c.setNamedValue("grid.half_width", std::nan("")), std::invalid_argument);
+	EXPECT_TRUE(c.setNamedValue("occupancy.resolution", 0.25));
+	EXPECT_DOUBLE_EQ(c.occupancy.resolution, 0.25);
+	EXPECT_DOUBLE_EQ(c.grid.resolution, GridVectorConfig().grid.resolution);  // same key name, other group
+}
+
+TEST(GridVectorConfig, JsonHasEveryGroupAndKey)
+{
+	GridVectorConfig c;
+	c.extraction.minLength = 0.12;
+	const std::string j = c.toJson();
+	EXPECT_EQ(j.front(), '{');
+	EXPECT_EQ(j.back(), '}');
+	EXPECT_NE(j.find("\"extraction\": {\"min_range\": 0.02,"), std::string::npos) << j;
+	EXPECT_NE(j.find("\"min_length\": 0.12,"), std::string::npos) << j;
+	EXPECT_NE(j.find("\"merge_on_insert\": true"), std::string::npos) << j;
+	for (const auto& [name, value] : c.namedValues())
+		EXPECT_NE(j.find("\"" + name.substr(name.find('.') + 1) + "\": "), std::string::npos) << name;
 }

@@ -3,6 +3,8 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/CGridVectorMap.h>
 
+#include <stdexcept>
+
 #include <sstream>
 
 using namespace mrpt::maps;
@@ -48,6 +50,11 @@ COccupancyGridMap2D CGridVectorMap::getAsOccupancyGrid() const
 void CGridVectorMap::setConfig(const gridvector::GridVectorConfig& cfg)
 {
 	cfg.validate();
+	const auto& old = map_.config().grid;
+	if (!map_.empty() && (cfg.grid.resolution != old.resolution || cfg.grid.halfWidth != old.halfWidth))
+		throw std::invalid_argument(
+			"CGridVectorMap::setConfig: grid.resolution and grid.half_width of a non-empty map cannot change (its "
+			"vectors' grids are laid out with them)");
 	map_.setConfig(cfg);
 	extractor_ = gridvector::VectorExtractor(cfg.extraction, cfg.grid);
 }

@@ -2,7 +2,10 @@
 
 #include <mrpt/config/CConfigFile.h>
 
+#include <cmath>
+#include <cstring>
 #include <fstream>
+#include <charconv>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -140,6 +143,85 @@ void GridVectorConfig::validate() const
 			"posegraph.robust_kernel_width must be > 0, max_iterations >= 1");
 	require(doors.minDoorLength > 0 && doors.maxDoorLength >= doors.minDoorLength,
 			"doors: need 0 < min_door_length <= max_door_length");
+}
+
+namespace
+{
+// The shortest text that reads back as the same double.
+std::string shortest(double v)
+{
+	char buf[32];
+	const auto r = std::to_chars(buf, buf + sizeof buf, v);
+	return std::string(buf, r.ptr);
+}
+
+template <class T>
+bool assignNamed(T& field, double value, const std::string& name)
+{
+	if constexpr (std::is_same_v<T, double>) field = value;
+	else if constexpr (std::is_same_v<T, bool>)
+	{
+		if (value != 0 && value != 1)
+			throw std::invalid_argument(name + " is a bool, got " + toText(value));
+		field = value != 0;
+	}
+	else
+	{
+		if (!(value == std::floor(value) && std::abs(value) <= 2147483647.0))
+			throw std::invalid_argument(name + " is an integer, got " + toText(value));
+		field = T(value);
+	}
+	return true;
+}
+}  // namespace
+
+std::vector<std::pair<std::string, double>> GridVectorConfig::namedValues() const
+{
+	std::vector<std::pair<std::string, double>> out;
+	auto self = *this;
+	self.visitGroups([&](const char* group, auto& g) {
+		g.visit([&](const char* key, auto& field, const char*) {
+			out.emplace_back(std::string(group) + "." + key, double(field));
+		});
+	});
+	return out;
+}
+
+bool GridVectorConfig::setNamedValue(const std::string& name, double value)
+{
+	bool found = false;
+	visitGroups([&](const char* group, auto& g) {
+		if (found || name.compare(0, std::strlen(group), group) != 0 || name.size() <= std::strlen(group) ||
+			name[std::strlen(group)] != '.')
+			return;
+		const std::string key = name.substr(std::strlen(group) + 1);
+		g.visit([&](const char* k, auto& field, const char*) {
+			if (!found && key == k) found = assignNamed(field, value, name);
+		});
+	});
+	return found;
+}
+
+std::string GridVectorConfig::toJson() const
+{
+	std::ostringstream out;
+	out << "{";
+	auto self = *this;
+	const char* groupSep = "";
+	self.visitGroups([&](const char* group, auto& g) {
+		out << groupSep << "\"" << group << "\": {";
+		groupSep = ", ";
+		const char* sep = "";
+		g.visit([&](const char* key, auto& field, const char*) {
+			out << sep << "\"" << key << "\": ";
+			if constexpr (std::is_same_v<std::decay_t<decltype(field)>, bool>) out << (field ? "true" : "false");
+			else out << shortest(double(field));
+			sep = ", ";
+		});
+		out << "}";
+	});
+	out << "}";
+	return out.str();
 }
 
 }  // namespace gridvector

@@ -10,6 +10,8 @@
 #include <cmath>
 #include <iosfwd>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace gridvector
 {
@@ -314,6 +316,15 @@ struct GridVectorConfig
 	static std::string parameterTableMarkdown(const std::string& prefix = "gridvector");
 	/** Throws std::invalid_argument if a value is out of its valid range. */
 	void validate() const;
+
+	// --- by-name access (the .gvmap config record, report.json, profiles) ---
+	/** Every key as "group.key" with its value (ints and bools as 0/1), in visit() order. */
+	std::vector<std::pair<std::string, double>> namedValues() const;
+	/** Sets "group.key" (e.g. "grid.resolution"). Returns false if this version has no such key;
+	 * throws std::invalid_argument if the value does not fit the key's type (int, bool). */
+	bool setNamedValue(const std::string& name, double value);
+	/** {"extraction": {"min_range": 0.02, ...}, ...}: every key, bools as true/false. */
+	std::string toJson() const;
 };
 
 }  // namespace gridvector

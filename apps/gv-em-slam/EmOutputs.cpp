@@ -110,7 +110,7 @@ void writeReport(const std::string& path, const RunFigures& run, const EmResult&
 			(v.state == VectorState::Dynamic ? nd : ns)++, (v.state == VectorState::Dynamic ? ld : ls) += v.length();
 		std::string in = run.input;
 		for (size_t p = 0; (p = in.find_first_of("\"\\", p)) != std::string::npos; p += 2) in.insert(p, "\\");
-		o << "{\n  \"input\": \"" << in << "\",\n  \"scans\": " << run.scans
+		o << "{\n  \"input\": \"" << in << "\",\n  \"config\": " << run.configJson << ",\n  \"scans\": " << run.scans
 		  << ",\n  \"local_vectors\": " << run.localVectors << ",\n  \"iterations_run\": " << res.iterations.size()
 		  << ",\n  \"converged\": " << (res.converged ? "true" : "false") << ",\n  \"iterations\": [\n";
 		for (size_t k = 0; k < res.iterations.size(); ++k)

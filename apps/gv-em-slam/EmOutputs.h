@@ -28,6 +28,7 @@ struct RunFigures
 	double readSeconds = 0, extractSeconds = 0, emSeconds = 0, outputSeconds = 0, totalSeconds = 0;
 	size_t doors = 0;
 	MemoryReport memory;
+	std::string configJson;  //!< the full effective configuration (GridVectorConfig::toJson)
 };
 void writeReport(const std::string& path, const RunFigures& run, const EmResult& res);
 

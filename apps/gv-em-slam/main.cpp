@@ -70,6 +70,7 @@ int run(const io::ArgParser& args)
 
 	app::RunFigures fig;
 	fig.input = input;
+	fig.configJson = cfg.toJson();
 	io::ReadOptions ro;
 	ro.quiet = quiet;
 	const io::LogData log = io::readLog(input, ro);

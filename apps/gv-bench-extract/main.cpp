@@ -3,8 +3,8 @@
 // same scans in the same run (a peer every MRPT user already pays for).
 //
 //   gv-bench-extract LOG [--repeat N] [--config FILE.ini]
-#include <gridvector/ErrorText.h>
 #include <gridvector/VectorExtractor.h>
+#include <gridvector/io/ArgParser.h>
 #include <gridvector/io/LogReader.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 
@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -21,12 +22,6 @@ using Clock = std::chrono::steady_clock;
 
 namespace
 {
-[[noreturn]] void fail(const std::string& m)
-{
-	std::cerr << "gv-bench-extract: " << m << "\n";
-	std::exit(1);
-}
-
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
 // RMS orthogonal residual of each fitted segment (not timed).
@@ -52,35 +47,15 @@ void residuals(const VectorExtractor& ex, const mrpt::obs::CObservation2DRangeSc
 }
 }  // namespace
 
-int main(int argc, char** argv)
+int run(const io::ArgParser& args)
 {
-	std::string log, config;
-	int repeat = 5;
-	for (int i = 1; i < argc; ++i)
-	{
-		const std::string a = argv[i];
-		auto next = [&]() -> std::string {
-			if (i + 1 >= argc) fail("option " + a + " needs a value");
-			return argv[++i];
-		};
-		if (a == "--repeat") repeat = std::max(1, std::atoi(next().c_str()));
-		else if (a == "--config") config = next();
-		else if (a[0] == '-') fail("unknown option " + a);
-		else log = a;
-	}
-	if (log.empty()) fail("usage: gv-bench-extract LOG [--repeat N] [--config FILE.ini]");
+	args.requirePositional(1, 1);
+	const std::string log = args.positional()[0];
+	const int repeat = int(args.getInt("repeat", 5, 1, 1'000'000));
 	GridVectorConfig cfg;
-	io::LogData data;
-	try
-	{
-		if (!config.empty()) cfg.loadFromFile(config);
-		data = io::readLog(log);
-	}
-	catch (const std::exception& e)
-	{
-		fail(oneLineError(e));
-	}
-	if (data.scans.empty()) fail(log + ": no laser scans");
+	if (args.has("config")) cfg.loadFromFile(args.get("config"));
+	const io::LogData data = io::readLog(log);
+	if (data.scans.empty()) throw std::runtime_error(log + ": no laser scans");
 	const VectorExtractor ex(cfg.extraction, cfg.grid);
 
 	size_t vectors = 0, beams = 0;
@@ -111,4 +86,15 @@ int main(int argc, char** argv)
 	std::printf("fit residual (RMS per segment): median %.4f m, 90th pct %.4f m over %zu segments\n",
 				res.empty() ? 0.0 : res[res.size() / 2], res.empty() ? 0.0 : res[res.size() * 9 / 10], res.size());
 	return 0;
+}
+
+int main(int argc, char** argv)
+{
+	io::ArgParser args("gv-bench-extract", "LOG [--repeat N] [--config FILE.ini]");
+	args.option("repeat", "N", "passes over the log for each timing (default 5)");
+	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_extraction], [gridvector_grid])");
+	io::ToolErrorStyle style;
+	style.prefix = "gv-bench-extract: ";
+	style.oneLine = true;
+	return io::runTool(args, argc, argv, [&] { return run(args); }, style);
 }

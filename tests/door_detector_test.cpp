@@ -101,3 +101,61 @@ TEST(DoorDetector, UnequalLeavesOrOneStateAreNoDoor)
 	// vertices too far apart
 	EXPECT_TRUE(det.detect({vec(0, 0, 3, 0, S), vec(3, 0, 3, 0.9, D), vec(0, 0, 0.64, 0.64, D)}).empty());
 }
+
+TEST(DoorDetector, ClosedLeafReachingIntoTheWallStartsAtTheWallEnd)
+{
+	// the merged wall overshoots the hinge (3, 0) by 0.2 m and the merged closed state
+	// reaches 0.1 m into the wall and 0.2 m beyond the leaf: measured from the wall's end
+	// it is 0.9 m, like the open state
+	const std::vector<GridVector> v = {vec(0, 0, 3.2, 0, S), vec(3.1, 0, 4.3, 0, D), vec(3.0, 0, 3.0, -0.9, S)};
+	const auto doors = DoorDetector().detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_NEAR(doors[0].hinge.x, 3.1, 0.05);
+	EXPECT_NEAR(doors[0].hinge.y, 0.0, 0.05);
+	EXPECT_NEAR(doors[0].length, 1.0, 0.05);
+	ASSERT_EQ(doors[0].angles.size(), 2u);
+	EXPECT_NEAR(doors[0].angles[0], -M_PI / 2, 0.1);
+	EXPECT_NEAR(doors[0].angles[1], 0.0, 0.05);
+}
+
+TEST(DoorDetector, HingeInsideAWallMergedAcrossTheDoorway)
+{
+	// the wall was merged across the doorway (the door closed most of the time): the closed
+	// state (dynamic) lies on the wall, the open state (static) leaves the wall's interior
+	const std::vector<GridVector> v = {vec(0, 0, 6, 0, S), vec(3.0, 0, 4.1, 0, D), vec(3.0, 0.9, 3.0, 0.01, S),
+									   vec(1.5, 0.05, 1.5, 0.35, D)};  // a person by the wall: no door
+	const DoorDetector det;
+	const auto doors = det.detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_NEAR(doors[0].hinge.x, 3.0, 0.05);
+	EXPECT_NEAR(doors[0].hinge.y, 0.0, 0.05);
+	ASSERT_EQ(doors[0].angles.size(), 2u);
+	// the closed state on the wall: that stretch of the wall belongs to the door
+	const auto spans = det.stateSpans(doors, v[0]);
+	ASSERT_EQ(spans.size(), 1u);
+	EXPECT_NEAR(spans[0].first, 3.0, 0.05);
+	EXPECT_NEAR(spans[0].second, 3.0 + doors[0].length, 0.05);
+	EXPECT_TRUE(det.stateSpans(doors, vec(0, 0.3, 6, 0.3, S)).empty());  // a parallel wall 0.3 m away
+	EXPECT_TRUE(det.stateSpans(doors, vec(5, 0, 8, 0, S)).empty());  // the same line, past the leaf
+	// one state alone inside a wall is no door; T corners off: no door either
+	EXPECT_TRUE(det.detect({vec(0, 0, 6, 0, S), vec(3.0, 0, 4.1, 0, D)}).empty());
+	DoorOptions endsOnly;
+	endsOnly.maxTeeOffset = 0;
+	EXPECT_TRUE(DoorDetector(endsOnly).detect(v).empty());
+}
+
+TEST(DoorDetector, VectorsFromTheHingeIntoTheSweptArcJoinTheDoor)
+{
+	DoorOptions o;
+	o.maxCornerGap = 0.1;  // the extra leaves below make no corner with the wall
+	const std::vector<GridVector> v = {
+		vec(0, 0, 3, 0, S), vec(3, 0, 3.9, 0, D), vec(3, 0, 3, 0.9, S),  // wall, closed and open states
+		vec(3.15, 0.05, 3.93, 0.5, S),  // opened to 30 deg once: 0.16 m from the hinge
+		vec(3.15, -0.05, 3.15, -0.95, S)};  // from the hinge but away from the swept arc
+	const auto doors = DoorDetector(o).detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	std::vector<size_t> leaves = doors[0].leaves;
+	std::sort(leaves.begin(), leaves.end());
+	EXPECT_EQ(leaves, (std::vector<size_t>{1, 2, 3}));
+	EXPECT_EQ(doors[0].angles.size(), 3u);
+}

@@ -239,3 +239,27 @@ TEST(EStep, CutUnobservedSplitsMergedVectorsAndTheirSources)
 	EXPECT_EQ(same.sources[0], std::vector<uint64_t>{5});
 	EXPECT_EQ(same.vectors[0].cols(), 10);
 }
+
+TEST(EStep, SplitSpansMakesTheGivenStretchesDynamic)
+{
+	// a 3 m static wall (30 columns) with a door's closed state lying on it from 1.0 to 1.9 m
+	const GridVector wall = withProfile(std::vector<double>(30, 0.95));
+	const EStep e;
+	const auto kids = e.splitSpans(wall, {{1.0, 1.9}});
+	ASSERT_EQ(kids.size(), 3u);
+	EXPECT_EQ(kids[0].state, VectorState::Static);
+	EXPECT_EQ(kids[1].state, VectorState::Dynamic);
+	EXPECT_EQ(kids[2].state, VectorState::Static);
+	EXPECT_NEAR(kids[0].length(), 1.0, 1e-9);
+	EXPECT_NEAR(kids[1].length(), 0.9, 1e-9);  // the columns whose centres lie in [1.0, 1.9]
+	EXPECT_NEAR(kids[1].start().x, 2.0, 1e-9);  // the wall starts at x = 1
+	EXPECT_NEAR(kids[2].length(), 1.1, 1e-9);
+	EXPECT_EQ(kids[0].id, wall.id);  // the first child keeps the id, the caller numbers the others
+	EXPECT_EQ(kids[1].id, 0u);
+	EXPECT_NEAR(kids[0].totalOccupy() + kids[1].totalOccupy() + kids[2].totalOccupy(), wall.totalOccupy(), 1e-3);
+	// no stretch on the vector: itself, unchanged
+	const auto same = e.splitSpans(wall, {{5.0, 6.0}});
+	ASSERT_EQ(same.size(), 1u);
+	EXPECT_EQ(same[0].state, VectorState::Static);
+	EXPECT_NEAR(same[0].length(), 3.0, 1e-9);
+}

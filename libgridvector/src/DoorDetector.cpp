@@ -19,7 +19,9 @@ DoorDetector::DoorDetector(const DoorOptions& opts) : opts_(opts) {}
 // Fig. 10: a corner is built by a static vector (the wall) and a door candidate meeting at an end.
 // The candidate is dynamic; a static one of door length counts too, as a state that Eq. 6 could
 // not see change (an open leaf nobody looked through after it closed) — detect() only keeps doors
-// with a dynamic state. A dynamic candidate may continue the wall's line (a closed leaf).
+// with a dynamic state. A dynamic candidate may continue the wall's line (a closed leaf). Where the
+// merged wall runs across the doorway (a door closed most of the time), the hinge lies inside the
+// wall: a candidate's end on a long wall's interior makes a T corner.
 std::vector<Corner> DoorDetector::corners(const std::vector<GridVector>& v) const
 {
 	std::vector<Corner> out;
@@ -28,44 +30,120 @@ std::vector<Corner> DoorDetector::corners(const std::vector<GridVector>& v) cons
 		const double len = v[d].length();
 		if (len < opts_.minDoorLength - opts_.maxLengthDiff || len > opts_.maxDoorLength + opts_.maxLengthDiff)
 			continue;
-		const bool dynamicLeaf = v[d].state == VectorState::Dynamic;
 		for (size_t s = 0; s < v.size(); ++s)
 		{
 			if (s == d || v[s].state != VectorState::Static) continue;
-			double best = opts_.maxCornerGap;
-			int end = -1;
-			for (int de = 0; de < 2; ++de)
-				for (const TPoint2D& se : {v[s].start(), v[s].end()})
-				{
-					const double g = dist(de ? v[d].end() : v[d].start(), se);
-					if (g <= best) best = g, end = de;
-				}
-			if (end < 0) continue;
-			Corner c;
-			c.wall = s;
-			c.leaf = d;
-			c.dynamicLeaf = dynamicLeaf;
-			c.vertex = end ? v[d].end() : v[d].start();
-			const TPoint2D tip = end ? v[d].start() : v[d].end();
-			c.leafAngle = std::atan2(tip.y - c.vertex.y, tip.x - c.vertex.x);
-			c.leafLength = len;
-			const double turn = std::abs(mrpt::math::wrapToPi(c.leafAngle - v[s].psi()));
-			const double bend = std::min(turn, M_PI - turn) * 180 / M_PI;
-			if (bend < opts_.minCornerAngleDeg && !(dynamicLeaf && collinearBeyond(v[s], c.vertex, tip)))
-				continue;
-			out.push_back(c);
+			if (endCorner(v, s, d, out)) continue;
+			if (v[s].length() > opts_.maxDoorLength) teeCorners(v, s, d, out);
 		}
 	}
 	return out;
 }
 
+namespace
+{
+/** Position of p along the wall from its centre, and its distance from the wall's line. */
+std::pair<double, double> alongAndOff(const GridVector& wall, const TPoint2D& p)
+{
+	const TPoint2D d = wall.direction(), c = wall.centre();
+	return {(p.x - c.x) * d.x + (p.y - c.y) * d.y, std::abs((p.x - c.x) * d.y - (p.y - c.y) * d.x)};
+}
+
+double bendDeg(double leafAngle, const GridVector& wall)
+{
+	const double turn = std::abs(mrpt::math::wrapToPi(leafAngle - wall.psi()));
+	return std::min(turn, M_PI - turn) * 180 / M_PI;
+}
+}  // namespace
+
+// An end of the candidate near an end of the wall. A closed leaf continuing the wall's line that
+// overlaps the wall (merged closed states reach into it) starts at the wall's end: vertex and
+// length are taken there.
+bool DoorDetector::endCorner(const std::vector<GridVector>& v, size_t s, size_t d, std::vector<Corner>& out) const
+{
+	double best = opts_.maxCornerGap;
+	int end = -1;
+	for (int de = 0; de < 2; ++de)
+		for (const TPoint2D& se : {v[s].start(), v[s].end()})
+		{
+			const double g = dist(de ? v[d].end() : v[d].start(), se);
+			if (g <= best) best = g, end = de;
+		}
+	if (end < 0) return false;
+	Corner c;
+	c.wall = s;
+	c.leaf = d;
+	c.dynamicLeaf = v[d].state == VectorState::Dynamic;
+	c.vertex = end ? v[d].end() : v[d].start();
+	const TPoint2D tip = end ? v[d].start() : v[d].end();
+	c.leafAngle = std::atan2(tip.y - c.vertex.y, tip.x - c.vertex.x);
+	c.leafLength = v[d].length();
+	if (bendDeg(c.leafAngle, v[s]) < opts_.minCornerAngleDeg)
+	{
+		if (!(c.dynamicLeaf && collinearBeyond(v[s], c.vertex, tip))) return false;
+		const double half = v[s].length() / 2;
+		if (std::abs(alongAndOff(v[s], c.vertex).first) < half)  // the leaf overlaps the wall
+		{
+			c.vertex = alongAndOff(v[s], tip).first > 0 ? v[s].end() : v[s].start();  // it starts at the wall's end
+			c.leafLength = dist(c.vertex, tip);
+		}
+	}
+	out.push_back(c);
+	return true;
+}
+
+// A hinge inside the wall: an end of the candidate on the wall's line, between its ends. The
+// candidate leaves the wall (open state) or, dynamic, lies along it (closed state inside a wall
+// merged across the doorway: each of its ends may be the hinge).
+void DoorDetector::teeCorners(const std::vector<GridVector>& v, size_t s, size_t d, std::vector<Corner>& out) const
+{
+	const double half = v[s].length() / 2;
+	const bool dynamicLeaf = v[d].state == VectorState::Dynamic;
+	for (int de = 0; de < 2; ++de)
+	{
+		const TPoint2D vertex = de ? v[d].end() : v[d].start(), tip = de ? v[d].start() : v[d].end();
+		const auto [along, off] = alongAndOff(v[s], vertex);
+		if (off > opts_.maxTeeOffset || std::abs(along) >= half) continue;
+		Corner c;
+		c.wall = s;
+		c.leaf = d;
+		c.dynamicLeaf = dynamicLeaf;
+		c.vertex = vertex;
+		c.leafAngle = std::atan2(tip.y - vertex.y, tip.x - vertex.x);
+		c.leafLength = v[d].length();
+		if (bendDeg(c.leafAngle, v[s]) < opts_.minCornerAngleDeg &&
+			!(dynamicLeaf && alongAndOff(v[s], tip).second <= opts_.maxTeeOffset))
+			continue;
+		out.push_back(c);
+	}
+}
+
 // A closed leaf: on the wall's line, pointing away from the wall (not lying along it).
 bool DoorDetector::collinearBeyond(const GridVector& wall, const TPoint2D& vertex, const TPoint2D& tip) const
 {
-	const TPoint2D d = wall.direction(), c = wall.centre();
-	auto along = [&](const TPoint2D& p) { return (p.x - c.x) * d.x + (p.y - c.y) * d.y; };
-	const double off = std::abs((tip.x - c.x) * d.y - (tip.y - c.y) * d.x);
-	return off <= opts_.maxCornerGap && std::abs(along(tip)) > std::abs(along(vertex));
+	const auto [tipAlong, off] = alongAndOff(wall, tip);
+	return off <= opts_.maxCornerGap && std::abs(tipAlong) > std::abs(alongAndOff(wall, vertex).first);
+}
+
+// Sec. 5.4: a door's states are dynamic, also where a static wall runs along one of them.
+std::vector<std::pair<double, double>> DoorDetector::stateSpans(const std::vector<Door>& doors,
+																const GridVector& v) const
+{
+	std::vector<std::pair<double, double>> out;
+	const double half = v.length() / 2;
+	for (const Door& d : doors)
+		for (double a : d.angles)
+		{
+			if (bendDeg(a, v) >= opts_.minCornerAngleDeg) continue;
+			const TPoint2D tip(d.hinge.x + d.length * std::cos(a), d.hinge.y + d.length * std::sin(a));
+			const auto [h, hOff] = alongAndOff(v, d.hinge);
+			const auto [t, tOff] = alongAndOff(v, tip);
+			if (hOff > opts_.maxTeeOffset || tOff > opts_.maxTeeOffset) continue;
+			const double u0 = std::clamp(std::min(h, t) + half, 0.0, v.length());
+			const double u1 = std::clamp(std::max(h, t) + half, 0.0, v.length());
+			if (u1 > u0) out.emplace_back(u0, u1);
+		}
+	return out;
 }
 
 bool DoorDetector::sameDoor(const Corner& a, const Corner& b) const
@@ -123,7 +201,52 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 		});
 		if (!dup) doors.push_back(d);
 	}
+	for (Door& d : doors) joinStates(v, d);
 	return doors;
+}
+
+// The smallest arc holding all states is the complement of the largest gap between them.
+bool DoorDetector::inSweep(const Door& d, double angle) const
+{
+	const std::vector<double>& as = d.angles;  // ascending
+	double gap = -1;
+	size_t from = 0;
+	for (size_t k = 0; k < as.size(); ++k)
+	{
+		const double g = k + 1 < as.size() ? as[k + 1] - as[k] : as[0] + 2 * M_PI - as[k];
+		if (g > gap) gap = g, from = k;
+	}
+	const double rel = mrpt::math::wrapTo2Pi(angle - as[from]), tol = opts_.minStateDiffDeg * M_PI / 180;
+	return !(rel > tol && rel < gap - tol);
+}
+
+// Every other vector of the door's length from its hinge into the swept arc is one more state
+// (a door opened to different angles; a state whose corner went to another wall piece).
+void DoorDetector::joinStates(const std::vector<GridVector>& v, Door& d) const
+{
+	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
+	for (size_t k = 0; k < v.size(); ++k)
+	{
+		if (std::find(d.leaves.begin(), d.leaves.end(), k) != d.leaves.end()) continue;
+		if (std::abs(v[k].length() - d.length) > opts_.maxLengthDiff) continue;
+		for (int e = 0; e < 2; ++e)
+		{
+			const TPoint2D vertex = e ? v[k].end() : v[k].start(), tip = e ? v[k].start() : v[k].end();
+			if (dist(vertex, d.hinge) > opts_.maxVertexDistance ||
+				std::abs(dist(tip, d.hinge) - d.length) > opts_.maxLengthDiff)
+				continue;
+			const double a = std::atan2(tip.y - d.hinge.y, tip.x - d.hinge.x);
+			if (!inSweep(d, a)) continue;
+			d.leaves.push_back(k);
+			if (std::all_of(d.angles.begin(), d.angles.end(),
+							[&](double b) { return std::abs(mrpt::math::wrapToPi(a - b)) >= minDiff; }))
+			{
+				d.angles.push_back(a);
+				std::sort(d.angles.begin(), d.angles.end());
+			}
+			break;
+		}
+	}
 }
 
 }  // namespace gridvector

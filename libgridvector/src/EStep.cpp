@@ -168,6 +168,36 @@ std::vector<GridVector> EStep::finalSplit(const std::vector<GridVector>& childre
 	return out;
 }
 
+// Sec. 5.4 on Eq. 14's children: the given stretches of a vector are dynamic.
+std::vector<GridVector> EStep::splitSpans(const GridVector& v,
+										  const std::vector<std::pair<double, double>>& dynamicSpans) const
+{
+	const bool vStatic = v.state != VectorState::Dynamic;
+	std::vector<ProfilePiece> ps;
+	for (int c = 0; c < v.cols(); ++c)
+	{
+		const double u = (c + 0.5) * v.resolution();
+		const bool inSpan = std::any_of(dynamicSpans.begin(), dynamicSpans.end(),
+										[&](const auto& s) { return u >= s.first && u <= s.second; });
+		const bool st = vStatic && !inSpan;
+		if (ps.empty() || ps.back().isStatic != st) ps.push_back({c, c + 1, st});
+		else ps.back().last = c + 1;
+	}
+	if (ps.size() <= 1)
+	{
+		GridVector one = v;
+		if (!ps.empty()) one.state = ps[0].isStatic ? VectorState::Static : VectorState::Dynamic;
+		return {one};
+	}
+	std::vector<GridVector> out;
+	for (const ProfilePiece& p : ps)
+	{
+		out.push_back(subVector(v, p));
+		out.back().id = out.size() == 1 ? v.id : 0;
+	}
+	return out;
+}
+
 // Runs of columns with observations; gaps of >= minGapColumns empty columns separate them.
 std::vector<ProfilePiece> EStep::observedRuns(const GridVector& v, int minGapColumns)
 {

@@ -251,9 +251,24 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 			res.finalVectors.push_back(std::move(v));
 		}
 	// Sec. 5.4: doors; a leaf state Eq. 6 kept static is a door state, so dynamic
-	res.doors = DoorDetector(cfg_.doors).detect(res.finalVectors);
+	const DoorDetector doorDetector(cfg_.doors);
+	res.doors = doorDetector.detect(res.finalVectors);
 	for (const Door& d : res.doors)
 		for (size_t leaf : d.leaves) res.finalVectors[leaf].state = VectorState::Dynamic;
+	// ... also where a static wall runs across a state (merged over the doorway); a cut wall keeps its index
+	for (size_t i = 0, n = res.finalVectors.size(); i < n; ++i)
+	{
+		if (res.finalVectors[i].state != VectorState::Static) continue;
+		const auto spans = doorDetector.stateSpans(res.doors, res.finalVectors[i]);
+		if (spans.empty()) continue;
+		auto parts = estep.splitSpans(res.finalVectors[i], spans);
+		res.finalVectors[i] = std::move(parts[0]);
+		for (size_t k = 1; k < parts.size(); ++k)
+		{
+			parts[k].id = res.finalVectors.size() + 1;
+			res.finalVectors.push_back(std::move(parts[k]));
+		}
+	}
 	res.finalMapSeconds = since(t0);
 	return res;
 }

@@ -6,6 +6,7 @@
 
 #include <mrpt/math/TPoint2D.h>
 
+#include <utility>
 #include <vector>
 
 namespace gridvector
@@ -38,7 +39,14 @@ struct Door
  * (Sec. 5.4: the dynamic vector is the door candidate); a static leaf joining
  * it is a state Eq. 6 could not see change (an open leaf whose place was never
  * seen through after the door closed) and is a door state all the same.
- * A dynamic leaf may continue the wall's line: the closed state. */
+ * A dynamic leaf may continue the wall's line: the closed state (if it
+ * reaches into the wall, it starts at the wall's end). Where the static wall
+ * was merged across the doorway, the hinge lies on the wall's interior: a
+ * candidate's end within doors.max_tee_offset of a wall longer than a door
+ * makes a T corner (open states leave the wall, a dynamic closed state lies
+ * along it). Once a door is found, every other vector of its length from
+ * its hinge into the arc its states sweep is one more state (a door opened to
+ * different angles). */
 class DoorDetector
 {
    public:
@@ -46,9 +54,18 @@ class DoorDetector
 
 	std::vector<Corner> corners(const std::vector<GridVector>& vectors) const;
 	std::vector<Door> detect(const std::vector<GridVector>& vectors) const;
+	/** Where the doors' states lie on v: [from, to] in metres from v's start,
+	 * for every state parallel to v (within min_corner_angle_deg) whose hinge
+	 * and tip are within max_tee_offset of v's line (a closed leaf inside a
+	 * wall merged across the doorway: part of the door, so dynamic). */
+	std::vector<std::pair<double, double>> stateSpans(const std::vector<Door>& doors, const GridVector& v) const;
 
    private:
+	bool endCorner(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
+	void teeCorners(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	bool sameDoor(const Corner& a, const Corner& b) const;
+	bool inSweep(const Door& d, double angle) const;
+	void joinStates(const std::vector<GridVector>& v, Door& d) const;
 	bool collinearBeyond(const GridVector& wall, const mrpt::math::TPoint2D& vertex,
 						 const mrpt::math::TPoint2D& tip) const;
 	DoorOptions opts_;

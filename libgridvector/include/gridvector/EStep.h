@@ -6,6 +6,7 @@
 #include <gridvector/GridVectorConfig.h>
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 namespace gridvector
@@ -76,6 +77,14 @@ class EStep
 	 * each piece keeps the state of the vector and the sources (ids of
 	 * `inputs`, the vectors given to mergeAll) whose centre projects into it. */
 	MergeResult cutUnobserved(const MergeResult& merged, const std::vector<GridVector>& inputs) const;
+
+	/** Children of v (Eq. 14) in which the stretches `dynamicSpans` ([from, to]
+	 * in metres from v's start) are dynamic and the rest keeps v's state: a
+	 * column is dynamic if its centre lies in a stretch. Used for a door's
+	 * states (Sec. 5.4) lying on a static wall. One child: v itself. The
+	 * first child keeps v's id; the others get id 0 (the caller numbers them). */
+	std::vector<GridVector> splitSpans(const GridVector& v,
+									   const std::vector<std::pair<double, double>>& dynamicSpans) const;
 
 	static uint64_t childId(uint64_t parentId, size_t k) { return parentId * 256 + k; }
 	static uint64_t parentIdOf(uint64_t childId) { return childId / 256; }

@@ -36,7 +36,7 @@ struct EmResult
 	std::vector<GridVector> perScan;  //!< last E-step's children m_{i,t} (global, state set)
 	MergeResult staticMap, dynamicMap;  //!< merged static / dynamic vectors (Eq. 4)
 	std::vector<GridVector> finalVectors;  //!< staticMap then dynamicMap vectors, state set (door leaves dynamic)
-	std::vector<Door> doors;  //!< Sec. 5.4 on finalVectors (Door::leaves index it)
+	std::vector<Door> doors;  //!< Sec. 5.4 on finalVectors (Door::leaves, Door::wall index it; a wall cut at a door state keeps its index for its first piece)
 	double finalMapSeconds = 0;
 	size_t keyframes = 0;  //!< scans EM worked on (the others follow their odometry)
 };

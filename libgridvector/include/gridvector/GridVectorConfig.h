@@ -260,6 +260,7 @@ struct DoorOptions
 	double minDoorLength = 0.6;  //!< door leaf length range [m]
 	double maxDoorLength = 1.4;
 	double minStateDiffDeg = 10.0;  //!< two door states differ by at least this [deg]
+	double maxTeeOffset = 0.10;  //!< a candidate's end this close to a wall's interior is a T corner [m]
 
 	template <class V>
 	void visit(V&& v)
@@ -271,6 +272,7 @@ struct DoorOptions
 		v("min_door_length", minDoorLength, "Shortest door leaf [m]");
 		v("max_door_length", maxDoorLength, "Longest door leaf [m]");
 		v("min_state_diff_deg", minStateDiffDeg, "Two door states (leaf angles) differ by at least this [deg]");
+		v("max_tee_offset", maxTeeOffset, "A door candidate's end this close to the interior of a static vector longer than max_door_length makes a T corner (a wall merged across the doorway) [m]; 0: end corners only");
 	}
 };
 

@@ -159,3 +159,16 @@ TEST(DoorDetector, VectorsFromTheHingeIntoTheSweptArcJoinTheDoor)
 	EXPECT_EQ(leaves, (std::vector<size_t>{1, 2, 3}));
 	EXPECT_EQ(doors[0].angles.size(), 3u);
 }
+
+TEST(DoorDetector, LeavesMakeNoSecondDoorAtTheLatchSide)
+{
+	// the closed and a slightly open state also meet the wall on the latch side (3.9, 0) with
+	// their tips: that is no second hinge, their leaves belong to the door hinged at (3, 0)
+	const std::vector<GridVector> v = {vec(0, 0, 3, 0, S), vec(3.9, 0, 6, 0, S), vec(3.0, 0, 3.9, 0, D),
+									   vec(3.0, 0, 3.87, -0.23, D), vec(3.0, 0, 3.0, -0.9, S)};
+	const auto doors = DoorDetector().detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_NEAR(doors[0].hinge.x, 3.0, 0.05);
+	EXPECT_NEAR(doors[0].hinge.y, 0.0, 0.05);
+	EXPECT_EQ(doors[0].leaves, (std::vector<size_t>{2, 3, 4}));
+}

@@ -161,13 +161,14 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 					 [&](const Corner& a, const Corner& b) { return v[a.wall].length() > v[b.wall].length(); });
 	std::vector<Door> doors;
 	std::vector<bool> used(cs.size(), false);
+	std::vector<bool> taken(v.size(), false);  // a leaf is a state of one door only
 	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
 	for (size_t i = 0; i < cs.size(); ++i)
 	{
-		if (used[i]) continue;
+		if (used[i] || taken[cs[i].leaf]) continue;
 		std::vector<size_t> group{i};
 		for (size_t j = i + 1; j < cs.size(); ++j)
-			if (!used[j] && sameDoor(cs[i], cs[j])) group.push_back(j);
+			if (!used[j] && !taken[cs[j].leaf] && sameDoor(cs[i], cs[j])) group.push_back(j);
 		// distinct states: leaf directions at least min_state_diff apart
 		std::vector<double> angles;
 		for (size_t k : group)
@@ -196,12 +197,17 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 		std::sort(angles.begin(), angles.end());
 		d.angles = angles;
 		// one hinge is one door, even if several walls/leaf copies meet there
-		const bool dup = std::any_of(doors.begin(), doors.end(), [&](const Door& o) {
+		const auto same = std::find_if(doors.begin(), doors.end(), [&](const Door& o) {
 			return dist(o.hinge, d.hinge) <= opts_.maxVertexDistance;
 		});
-		if (!dup) doors.push_back(d);
+		const bool isNew = same == doors.end();
+		if (!isNew) same->leaves.insert(same->leaves.end(), d.leaves.begin(), d.leaves.end());
+		Door& door = isNew ? doors.emplace_back(d) : *same;
+		std::sort(door.leaves.begin(), door.leaves.end());
+		door.leaves.erase(std::unique(door.leaves.begin(), door.leaves.end()), door.leaves.end());
+		for (size_t leaf : door.leaves) taken[leaf] = true;
+		joinStates(v, door, taken);
 	}
-	for (Door& d : doors) joinStates(v, d);
 	return doors;
 }
 
@@ -222,12 +228,12 @@ bool DoorDetector::inSweep(const Door& d, double angle) const
 
 // Every other vector of the door's length from its hinge into the swept arc is one more state
 // (a door opened to different angles; a state whose corner went to another wall piece).
-void DoorDetector::joinStates(const std::vector<GridVector>& v, Door& d) const
+void DoorDetector::joinStates(const std::vector<GridVector>& v, Door& d, std::vector<bool>& taken) const
 {
 	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
 	for (size_t k = 0; k < v.size(); ++k)
 	{
-		if (std::find(d.leaves.begin(), d.leaves.end(), k) != d.leaves.end()) continue;
+		if (taken[k]) continue;
 		if (std::abs(v[k].length() - d.length) > opts_.maxLengthDiff) continue;
 		for (int e = 0; e < 2; ++e)
 		{
@@ -238,6 +244,7 @@ void DoorDetector::joinStates(const std::vector<GridVector>& v, Door& d) const
 			const double a = std::atan2(tip.y - d.hinge.y, tip.x - d.hinge.x);
 			if (!inSweep(d, a)) continue;
 			d.leaves.push_back(k);
+			taken[k] = true;
 			if (std::all_of(d.angles.begin(), d.angles.end(),
 							[&](double b) { return std::abs(mrpt::math::wrapToPi(a - b)) >= minDiff; }))
 			{

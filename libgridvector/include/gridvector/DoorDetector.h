@@ -46,7 +46,9 @@ struct Door
  * makes a T corner (open states leave the wall, a dynamic closed state lies
  * along it). Once a door is found, every other vector of its length from
  * its hinge into the arc its states sweep is one more state (a door opened to
- * different angles). */
+ * different angles). A vector is a state of one door only: the corners a
+ * door's leaves make elsewhere (e.g. their tips at the latch-side frame) make
+ * no second door. */
 class DoorDetector
 {
    public:
@@ -65,7 +67,7 @@ class DoorDetector
 	void teeCorners(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	bool sameDoor(const Corner& a, const Corner& b) const;
 	bool inSweep(const Door& d, double angle) const;
-	void joinStates(const std::vector<GridVector>& v, Door& d) const;
+	void joinStates(const std::vector<GridVector>& v, Door& d, std::vector<bool>& taken) const;
 	bool collinearBeyond(const GridVector& wall, const mrpt::math::TPoint2D& vertex,
 						 const mrpt::math::TPoint2D& tip) const;
 	DoorOptions opts_;

@@ -151,13 +151,15 @@ TEST(DoorDetector, VectorsFromTheHingeIntoTheSweptArcJoinTheDoor)
 	const std::vector<GridVector> v = {
 		vec(0, 0, 3, 0, S), vec(3, 0, 3.9, 0, D), vec(3, 0, 3, 0.9, S),  // wall, closed and open states
 		vec(3.15, 0.05, 3.93, 0.5, S),  // opened to 30 deg once: 0.16 m from the hinge
-		vec(3.15, -0.05, 3.15, -0.95, S)};  // from the hinge but away from the swept arc
+		vec(3.15, -0.05, 3.15, -0.95, S),  // from the hinge but away from the swept arc
+		vec(3.1, 0.1, 3.4, 0.5, S),  // a leaf seen in part (0.5 m, at 53 deg): part of a state
+		vec(3.0, 0.1, 3.0, 1.5, S)};  // longer than the leaf: a wall, not a state
 	const auto doors = DoorDetector(o).detect(v);
 	ASSERT_EQ(doors.size(), 1u);
 	std::vector<size_t> leaves = doors[0].leaves;
 	std::sort(leaves.begin(), leaves.end());
-	EXPECT_EQ(leaves, (std::vector<size_t>{1, 2, 3}));
-	EXPECT_EQ(doors[0].angles.size(), 3u);
+	EXPECT_EQ(leaves, (std::vector<size_t>{1, 2, 3, 5}));
+	EXPECT_EQ(doors[0].angles.size(), 3u);  // the part is no state of its own
 }
 
 TEST(DoorDetector, LeavesMakeNoSecondDoorAtTheLatchSide)

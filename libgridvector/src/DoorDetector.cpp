@@ -226,27 +226,28 @@ bool DoorDetector::inSweep(const Door& d, double angle) const
 	return !(rel > tol && rel < gap - tol);
 }
 
-// Every other vector of the door's length from its hinge into the swept arc is one more state
-// (a door opened to different angles; a state whose corner went to another wall piece).
+// Every other vector from the hinge into the swept arc, no longer than the leaf, is one more
+// state (a door opened to different angles; a state whose corner went to another wall piece)
+// or a part of one (a leaf seen in part: occluded, or cut by the split of Fig. 4).
 void DoorDetector::joinStates(const std::vector<GridVector>& v, Door& d, std::vector<bool>& taken) const
 {
-	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
+	const double minDiff = opts_.minStateDiffDeg * M_PI / 180, reach = d.length + opts_.maxLengthDiff;
 	for (size_t k = 0; k < v.size(); ++k)
 	{
-		if (taken[k]) continue;
-		if (std::abs(v[k].length() - d.length) > opts_.maxLengthDiff) continue;
+		if (taken[k] || v[k].length() > reach) continue;
 		for (int e = 0; e < 2; ++e)
 		{
 			const TPoint2D vertex = e ? v[k].end() : v[k].start(), tip = e ? v[k].start() : v[k].end();
-			if (dist(vertex, d.hinge) > opts_.maxVertexDistance ||
-				std::abs(dist(tip, d.hinge) - d.length) > opts_.maxLengthDiff)
-				continue;
+			const double r = dist(tip, d.hinge);
+			if (dist(vertex, d.hinge) > opts_.maxVertexDistance || r > reach || r <= opts_.maxVertexDistance) continue;
 			const double a = std::atan2(tip.y - d.hinge.y, tip.x - d.hinge.x);
 			if (!inSweep(d, a)) continue;
 			d.leaves.push_back(k);
 			taken[k] = true;
-			if (std::all_of(d.angles.begin(), d.angles.end(),
-							[&](double b) { return std::abs(mrpt::math::wrapToPi(a - b)) >= minDiff; }))
+			const bool wholeLeaf = r >= d.length - opts_.maxLengthDiff;
+			if (wholeLeaf && std::all_of(d.angles.begin(), d.angles.end(), [&](double b) {
+					return std::abs(mrpt::math::wrapToPi(a - b)) >= minDiff;
+				}))
 			{
 				d.angles.push_back(a);
 				std::sort(d.angles.begin(), d.angles.end());

@@ -44,9 +44,9 @@ struct Door
  * was merged across the doorway, the hinge lies on the wall's interior: a
  * candidate's end within doors.max_tee_offset of a wall longer than a door
  * makes a T corner (open states leave the wall, a dynamic closed state lies
- * along it). Once a door is found, every other vector of its length from
- * its hinge into the arc its states sweep is one more state (a door opened to
- * different angles). A vector is a state of one door only: the corners a
+ * along it). Once a door is found, every other vector from its hinge into
+ * the arc its states sweep and no longer than the leaf is one more state (a
+ * door opened to different angles) or part of one (a leaf seen in part). A vector is a state of one door only: the corners a
  * door's leaves make elsewhere (e.g. their tips at the latch-side frame) make
  * no second door. */
 class DoorDetector

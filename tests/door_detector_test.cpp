@@ -174,3 +174,12 @@ TEST(DoorDetector, LeavesMakeNoSecondDoorAtTheLatchSide)
 	EXPECT_NEAR(doors[0].hinge.y, 0.0, 0.05);
 	EXPECT_EQ(doors[0].leaves, (std::vector<size_t>{2, 3, 4}));
 }
+
+TEST(DoorDetector, PeopleByAWallMakeNoDoor)
+{
+	// two people tracks of door length ending on a wall's interior at nearly one point, at
+	// different angles: T corners, but no state along the wall (the closed state a door inside
+	// a merged wall has), so no door
+	const std::vector<GridVector> v = {vec(0, 5, 0, 15, S), vec(0, 14.1, 0.75, 14.36, D), vec(0, 13.93, 0.72, 13.72, D)};
+	EXPECT_TRUE(DoorDetector().detect(v).empty());
+}

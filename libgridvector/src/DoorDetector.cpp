@@ -81,6 +81,7 @@ bool DoorDetector::endCorner(const std::vector<GridVector>& v, size_t s, size_t 
 	if (bendDeg(c.leafAngle, v[s]) < opts_.minCornerAngleDeg)
 	{
 		if (!(c.dynamicLeaf && collinearBeyond(v[s], c.vertex, tip))) return false;
+		c.alongWall = true;
 		const double half = v[s].length() / 2;
 		if (std::abs(alongAndOff(v[s], c.vertex).first) < half)  // the leaf overlaps the wall
 		{
@@ -111,9 +112,9 @@ void DoorDetector::teeCorners(const std::vector<GridVector>& v, size_t s, size_t
 		c.vertex = vertex;
 		c.leafAngle = std::atan2(tip.y - vertex.y, tip.x - vertex.x);
 		c.leafLength = v[d].length();
-		if (bendDeg(c.leafAngle, v[s]) < opts_.minCornerAngleDeg &&
-			!(dynamicLeaf && alongAndOff(v[s], tip).second <= opts_.maxTeeOffset))
-			continue;
+		c.tee = true;
+		c.alongWall = bendDeg(c.leafAngle, v[s]) < opts_.minCornerAngleDeg;
+		if (c.alongWall && !(dynamicLeaf && alongAndOff(v[s], tip).second <= opts_.maxTeeOffset)) continue;
 		out.push_back(c);
 	}
 }
@@ -181,6 +182,9 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 		// Sec. 5.4: the door candidate is a dynamic vector; static states only join one
 		const bool anyDynamic = std::any_of(group.begin(), group.end(), [&](size_t k) { return cs[k].dynamicLeaf; });
 		if (angles.size() < 2 || !anyDynamic) continue;
+		// a hinge inside a wall: the wall was merged across the doorway, so the door was seen closed
+		const bool allTee = std::all_of(group.begin(), group.end(), [&](size_t k) { return cs[k].tee; });
+		if (allTee && std::none_of(group.begin(), group.end(), [&](size_t k) { return cs[k].alongWall; })) continue;
 		Door d;
 		d.wall = cs[i].wall;
 		double len = 0;

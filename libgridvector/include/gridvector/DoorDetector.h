@@ -21,6 +21,8 @@ struct Corner
 	mrpt::math::TPoint2D vertex;
 	double leafAngle = 0;  //!< direction of the leaf from the vertex outwards [rad]
 	double leafLength = 0;
+	bool tee = false;  //!< the vertex lies on the wall's interior, not at an end
+	bool alongWall = false;  //!< the leaf continues or lies along the wall's line (a closed state)
 };
 
 /** A door: a hinge and the leaf states seen (Fig. 10). */
@@ -44,7 +46,8 @@ struct Door
  * was merged across the doorway, the hinge lies on the wall's interior: a
  * candidate's end within doors.max_tee_offset of a wall longer than a door
  * makes a T corner (open states leave the wall, a dynamic closed state lies
- * along it). Once a door is found, every other vector from its hinge into
+ * along it); a door of T corners only needs that closed state (people by a
+ * wall make T corners too, none along it). Once a door is found, every other vector from its hinge into
  * the arc its states sweep and no longer than the leaf is one more state (a
  * door opened to different angles) or part of one (a leaf seen in part). A vector is a state of one door only: the corners a
  * door's leaves make elsewhere (e.g. their tips at the latch-side frame) make

@@ -4,6 +4,7 @@
 #include <gridvector/VectorExtractor.h>
 
 #include <gtest/gtest.h>
+#include <mrpt/math/wrap2pi.h>
 
 #include <algorithm>
 #include <random>
@@ -349,6 +350,9 @@ TEST(GlobalMap, NoisyPassesOfOneWallEndAsOneVector)
 		const bool s = std::abs(v.centre().y + 1.2) < 0.2, n = std::abs(v.centre().y - 1.2) < 0.2;
 		south += s, north += n;
 		if (s || n) EXPECT_GT(v.length(), 11.5);
+		// no drift: the merged walls keep the walls' direction
+		if (s) EXPECT_LT(std::abs(mrpt::math::wrapToPi(v.psi())), 0.5 * M_PI / 180) << v.psi();
+		if (n) EXPECT_LT(std::abs(mrpt::math::wrapToPi(v.psi() - M_PI)), 0.5 * M_PI / 180) << v.psi();
 	}
 	EXPECT_EQ(south, 1);
 	EXPECT_EQ(north, 1);
@@ -373,4 +377,74 @@ TEST(GlobalMap, SetVectorsRebuildsTheIndex)
 	map.clear();
 	EXPECT_TRUE(map.empty());
 	EXPECT_EQ(map.index().size(), 0u);
+}
+
+namespace
+{
+/** A wall bending along the circle of radius R centred at (0, R), as polyline
+ * pieces of 0.2 m, from x0 to x1; distance of a point from that arc. */
+std::vector<gvtest::Seg> arcWall(double R, double x0, double x1)
+{
+	std::vector<gvtest::Seg> w;
+	auto y = [&](double x) { return R - std::sqrt(R * R - x * x); };
+	for (double x = x0; x < x1 - 1e-9; x += 0.2) w.push_back({x, y(x), x + 0.2, y(x + 0.2)});
+	return w;
+}
+double offArc(double R, const TPoint2D& p) { return std::abs(std::hypot(p.x, p.y - R) - R); }
+
+/** A robot driving twice along a 14 m wall bending with 0.7 m sagitta (R = 36 m, as
+ * Intel's corridor walls in its corrected poses), 1.5 m from it, a scan every 0.25 m. */
+Sequence curvedCorridor()
+{
+	const double R = 36;
+	std::vector<TPose2D> poses;
+	for (int pass = 0; pass < 2; ++pass)
+		for (double x = -6; x <= 6; x += 0.25)
+		{
+			const double a = std::asin(x / (R - 1.5));  // on the circle of radius R - 1.5
+			poses.emplace_back((R - 1.5) * std::sin(a), R - (R - 1.5) * std::cos(a), a);
+		}
+	return extractAll(poses, [](size_t) { return arcWall(36, -7, 7); });
+}
+
+/** Largest distance from the arc of a vector's ends and centre, over the vectors longer than 1 m
+ * (a 2 m chord of the arc is 0.014 m off at its centre). */
+double worstOffArc(const std::vector<GridVector>& vs)
+{
+	double worst = 0;
+	for (const auto& v : vs)
+		if (v.length() > 1)
+			for (const TPoint2D& p : {v.start(), v.centre(), v.end()}) worst = std::max(worst, offArc(36, p));
+	return worst;
+}
+}  // namespace
+
+TEST(GlobalMap, PiecesOfACurvedWallAreNotChainedIntoOneChord)
+{
+	// Each piece is within the criteria of the merge before it, so without the
+	// guard the pieces chain into chords whose ends leave the wall; with it
+	// every vector stays within its grid's band of the wall, in both modes.
+	const Sequence s = curvedCorridor();
+	GridVectorConfig paper;
+	paper.map.mergeHoldsWall = false;
+	GlobalMap chained(paper), guarded;
+	for (size_t t = 0; t < s.scans.size(); ++t)
+	{
+		chained.insertScan(s.poses[t], s.scans[t]);
+		guarded.insertScan(s.poses[t], s.scans[t]);
+	}
+	EXPECT_GT(worstOffArc(chained.vectors()), 0.3);  // the defect, reproduced (0.37 m)
+	EXPECT_LT(worstOffArc(guarded.vectors()), 0.2);  // the band, 0.15 m, at the columns; ends extrapolate
+	double pts = 0;
+	for (const auto& l : s.scans)
+		for (const auto& v : l.vectors) pts += v.totalPoints();
+	EXPECT_NEAR(totalPoints(guarded.vectors()), pts, 1e-3 * pts);
+	const auto perScan = GlobalMap::buildPerScan(s.poses, s.scans, GridVectorConfig{});
+	const MergeResult batch = GlobalMap::mergeAll(perScan, GridVectorConfig{});
+	EXPECT_LT(worstOffArc(batch.vectors), 0.2);
+	EXPECT_GT(worstOffArc(GlobalMap::mergeAll(perScan, paper).vectors), 0.3);
+	EXPECT_NEAR(totalPoints(batch.vectors), pts, 1e-3 * pts);
+	std::set<uint64_t> ids;
+	for (const auto& src : batch.sources) ids.insert(src.begin(), src.end());
+	EXPECT_EQ(ids.size(), perScan.size());  // every input in exactly one output
 }

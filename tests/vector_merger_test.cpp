@@ -287,3 +287,54 @@ TEST(VectorMerger, RejectsMixedResolutions)
 	EXPECT_THROW(VectorMerger().merge(a, b), std::invalid_argument);
 	EXPECT_THROW(VectorMerger().merge(std::vector<const GridVector*>{}), std::invalid_argument);
 }
+
+namespace
+{
+/** A piece of the circle of radius R centred at (0, R) (a wall bending
+ * upwards), from x0 to x1, with beam endpoints every 2 cm along the arc. */
+GridVector arcPiece(double R, double x0, double x1)
+{
+	auto y = [&](double x) { return R - std::sqrt(R * R - x * x); };
+	GridVector v({x0, y(x0)}, {x1, y(x1)}, GridOptions{});
+	for (double x = x0 + 0.01; x < x1; x += 0.02) v.addEndpoint({x, y(x)});
+	return v;
+}
+}  // namespace
+
+TEST(VectorMerger, GuardRefusesAChordAcrossACurvedWall)
+{
+	// an arc with 0.5 m sagitta over 12 m (R = 36 m, as Intel's corridor walls
+	// in its corrected poses): two 6 m pieces, each within its own grid, whose
+	// chord would leave the wall up to 0.25 m outside the new grid's band
+	const GridVector a = arcPiece(36, -6, 0), b = arcPiece(36, 0, 6);
+	const VectorMerger merger;
+	EXPECT_GT(merger.wallOffset({&a, &b}), 0.15);
+	GridVector out;
+	EXPECT_FALSE(merger.tryMerge({&a, &b}, out));
+	EXPECT_EQ(out.cols(), 0);  // untouched
+	GridVectorConfig paper;
+	paper.map.mergeHoldsWall = false;
+	EXPECT_TRUE(VectorMerger(paper).tryMerge({&a, &b}, out));
+	EXPECT_NEAR(out.length(), 12, 0.1);
+	// a gentler bend (2 m pieces of the same arc) and a straight noisy wall are merged
+	const GridVector c = arcPiece(36, -2, 0), d = arcPiece(36, 0, 2);
+	EXPECT_LT(merger.wallOffset({&c, &d}), 0.05);
+	EXPECT_TRUE(merger.tryMerge({&c, &d}, out));
+	const GridVector e = wall({0, 0}, {6, 0.05}, 0.02, 1), f = wall({4, 0.1}, {10, 0.0}, 0.02, 2);
+	EXPECT_TRUE(merger.tryMerge({&e, &f}, out));
+	expectTotalsConserved({&e, &f}, out);
+}
+
+TEST(VectorMerger, MergeGreedyTakesTheCandidatesThatHold)
+{
+	// the base piece of the arc holds with its neighbour but not with the far piece
+	const GridVector base = arcPiece(36, -1, 3), near = arcPiece(36, -4, -1), far = arcPiece(36, 3, 9);
+	const VectorMerger merger;
+	GridVector out;
+	const auto taken = merger.mergeGreedy(base, {&far, &near}, out);
+	ASSERT_EQ(taken.size(), 1u);
+	EXPECT_EQ(taken[0], 1u);
+	expectTotalsConserved({&base, &near}, out);
+	const auto none = merger.mergeGreedy(base, {}, out);
+	EXPECT_TRUE(none.empty());
+}

@@ -112,23 +112,37 @@ ScanWipe::Stats GlobalMap::wipe(const mrpt::math::TPose2D& robotPose, const Loca
 	return wiper_.apply(sensorPosition(robotPose, scan), segs, vectors_, index_, limit);
 }
 
-// Algorithm 2 with every correspondent, repeated while the merged vector finds new ones.
+// Algorithm 2 with every correspondent the guard allows, repeated while the merged vector finds new ones.
 void GlobalMap::insertVector(GridVector m)
 {
 	m.id = nextId_++;
 	if (cfg_.map.mergeOnInsert)
 	{
+		std::vector<uint64_t> refused;  // map vectors whose merge the guard refused
 		for (int round = 0; round < 8; ++round)
 		{
-			const std::vector<size_t> corr = correspondents(m);
+			std::vector<size_t> corr = correspondents(m);
+			corr.erase(std::remove_if(corr.begin(), corr.end(),
+									  [&](size_t s) {
+										  return std::find(refused.begin(), refused.end(), vectors_[s].id) !=
+												 refused.end();
+									  }),
+					   corr.end());
 			if (corr.empty()) break;
-			std::vector<const GridVector*> parts{&m};
-			for (size_t s : corr) parts.push_back(&vectors_[s]);
-			GridVector merged = merger_.merge(parts);
+			std::vector<const GridVector*> cand;
+			for (size_t s : corr) cand.push_back(&vectors_[s]);
+			GridVector merged;
+			const std::vector<size_t> taken = merger_.mergeGreedy(m, cand, merged);
+			std::vector<size_t> slots;
+			for (size_t k = 0, j = 0; k < corr.size(); ++k)
+				if (j < taken.size() && taken[j] == k) slots.push_back(corr[k]), ++j;
+				else refused.push_back(vectors_[corr[k]].id);
+			stats_.refused += corr.size() - slots.size();
+			if (slots.empty()) break;
 			merged.id = nextId_++;
 			++stats_.merges;
-			stats_.absorbed += corr.size();
-			removeSlots(corr);
+			stats_.absorbed += slots.size();
+			removeSlots(slots);
 			m = std::move(merged);
 		}
 	}

@@ -132,6 +132,57 @@ Group groupOf(const GridVector& v, uint32_t pos)
 	g.estimate();
 	return g;
 }
+
+/** A partial merge of a refused group: the vector and the input ids it stands for. */
+struct Partial
+{
+	GridVector v;
+	std::vector<uint64_t> ids;
+	bool merged = false;
+};
+
+// A group the guard refused: its members merged one by one (longest first), each with the
+// partial merges it corresponds to while the guard allows, cascading as in GlobalMap::insertVector.
+std::vector<Partial> mergeMemberwise(const std::vector<GridVector>& vectors, std::vector<uint32_t> members,
+									 const VectorMerger& merger, const MapOptions& opt)
+{
+	std::stable_sort(members.begin(), members.end(),
+					 [&](uint32_t a, uint32_t b) { return vectors[a].length() > vectors[b].length(); });
+	std::vector<Partial> parts;
+	for (uint32_t m : members)
+	{
+		Partial cur{vectors[m], {vectors[m].id}, false};
+		std::vector<size_t> refused;
+		for (int round = 0; round < 8; ++round)
+		{
+			std::vector<size_t> corr;
+			std::vector<const GridVector*> cand;
+			for (size_t k = 0; k < parts.size(); ++k)
+				if (!parts[k].ids.empty() && std::find(refused.begin(), refused.end(), k) == refused.end() &&
+					corresponds(cur.v, parts[k].v, opt))
+					corr.push_back(k), cand.push_back(&parts[k].v);
+			if (corr.empty()) break;
+			GridVector out;
+			const std::vector<size_t> taken = merger.mergeGreedy(cur.v, cand, out);
+			for (size_t k = 0, j = 0; k < corr.size(); ++k)
+				if (j < taken.size() && taken[j] == k)
+				{
+					cur.ids.insert(cur.ids.end(), parts[corr[k]].ids.begin(), parts[corr[k]].ids.end());
+					parts[corr[k]].ids.clear();  // absorbed
+					++j;
+				}
+				else
+					refused.push_back(corr[k]);
+			if (taken.empty()) break;
+			cur.v = std::move(out);
+			cur.merged = true;
+		}
+		parts.push_back(std::move(cur));
+	}
+	parts.erase(std::remove_if(parts.begin(), parts.end(), [](const Partial& p) { return p.ids.empty(); }),
+				parts.end());
+	return parts;
+}
 }  // namespace
 
 // Eq. 4: {m_{i,t}} -> {m_j}; groups by the Sec. 3.2 criteria, each merged once by Algorithm 2.
@@ -185,22 +236,25 @@ MergeResult GlobalMap::mergeAll(const std::vector<GridVector>& vectors, const Gr
 	out.vectors.reserve(live.size());
 	for (const Group* g : live)
 	{
-		std::vector<uint64_t> ids;
 		std::vector<const GridVector*> parts;
-		for (uint32_t m : g->members)
-		{
-			ids.push_back(vectors[m].id);
-			parts.push_back(&vectors[m]);
-		}
-		std::sort(ids.begin(), ids.end());
+		for (uint32_t m : g->members) parts.push_back(&vectors[m]);
+		std::vector<Partial> done(1);
 		if (parts.size() == 1)
-			out.vectors.push_back(*parts.front());
-		else
+			done[0] = {*parts.front(), {parts.front()->id}, false};
+		else if (merger.tryMerge(parts, done[0].v))  // Algorithm 2, once per group
 		{
-			out.vectors.push_back(merger.merge(parts));  // Algorithm 2, once per group
-			out.vectors.back().id = nextId++;
+			for (const GridVector* p : parts) done[0].ids.push_back(p->id);
+			done[0].merged = true;
 		}
-		out.sources.push_back(std::move(ids));
+		else
+			done = mergeMemberwise(vectors, g->members, merger, cfg.map);
+		for (Partial& p : done)
+		{
+			if (p.merged) p.v.id = nextId++;
+			std::sort(p.ids.begin(), p.ids.end());
+			out.vectors.push_back(std::move(p.v));
+			out.sources.push_back(std::move(p.ids));
+		}
 	}
 	return out;
 }

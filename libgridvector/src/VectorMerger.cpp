@@ -190,6 +190,37 @@ Line2D fitTemp(const TempGrid& t, const GridVector& ref, bool weighted)
 	return l;
 }
 
+// Guard: per column of the temporary grid, the mean offset of its points from the fitted line
+// (weights n_occupy/n_visit, as the fit of lines 12-18); the largest |mean| over the columns.
+double maxColumnOffset(const TempGrid& t, const Line2D& line)
+{
+	double worst = 0;
+	for (int c = 0; c < t.lat.cols; ++c)
+	{
+		double sw = 0, swd = 0;
+		for (int r = 0; r < t.lat.rows; ++r)
+		{
+			const TempCell& tc = t.cells[size_t(r) * t.lat.cols + c];
+			if (tc.n <= 0 || tc.visit <= 0) continue;
+			const double w = tc.occ / tc.visit;
+			sw += w;
+			swd += w * line.distance(TPoint2D(tc.sx / tc.n, tc.sy / tc.n));
+		}
+		if (sw > 0) worst = std::max(worst, std::abs(swd / sw));
+	}
+	return worst;
+}
+
+int maxHalfWidth(const std::vector<const GridVector*>& parts)
+{
+	int h = 0;
+	for (const GridVector* p : parts) h = std::max(h, p->halfWidth());
+	return h;
+}
+
+GridVector mergeFitted(const GridVectorConfig& cfg, const std::vector<const GridVector*>& parts,
+					   const TempGrid& temp, const Line2D& line);
+
 /** Line 20 on the reference's own lattice: the new vector (s, e) lies within
  * `tol` of the reference's axis and starts within `tol` of its start, so the
  * new grid is the reference's grid (extended at the end if needed) and only
@@ -258,14 +289,73 @@ Line2D VectorMerger::fitLine(const std::vector<const GridVector*>& parts, bool w
 	return fitTemp(buildTempGrid(parts), referenceOf(parts), weighted);
 }
 
-// Algorithm 2.
+double VectorMerger::wallOffset(const std::vector<const GridVector*>& parts) const
+{
+	checkParts(parts);
+	const TempGrid temp = buildTempGrid(parts);
+	return maxColumnOffset(temp, fitTemp(temp, referenceOf(parts), true));
+}
+
 GridVector VectorMerger::merge(const std::vector<const GridVector*>& parts) const
 {
 	checkParts(parts);
 	if (parts.size() == 1) return *parts.front();
-	const GridVector& ref = referenceOf(parts);
 	const TempGrid temp = buildTempGrid(parts);
-	const Line2D line = fitTemp(temp, ref, true);
+	return mergeFitted(cfg_, parts, temp, fitTemp(temp, referenceOf(parts), true));
+}
+
+bool VectorMerger::tryMerge(const std::vector<const GridVector*>& parts, GridVector& out) const
+{
+	checkParts(parts);
+	if (parts.size() == 1)
+	{
+		out = *parts.front();
+		return true;
+	}
+	const TempGrid temp = buildTempGrid(parts);
+	const Line2D line = fitTemp(temp, referenceOf(parts), true);
+	if (cfg_.map.mergeHoldsWall &&
+		maxColumnOffset(temp, line) > (maxHalfWidth(parts) + 0.5) * parts.front()->resolution())
+		return false;
+	out = mergeFitted(cfg_, parts, temp, line);
+	return true;
+}
+
+std::vector<size_t> VectorMerger::mergeGreedy(const GridVector& base, const std::vector<const GridVector*>& candidates,
+											  GridVector& out) const
+{
+	std::vector<const GridVector*> parts{&base};
+	parts.insert(parts.end(), candidates.begin(), candidates.end());
+	std::vector<size_t> taken;
+	if (candidates.empty()) return taken;
+	if (tryMerge(parts, out))  // the common case: everything holds
+	{
+		for (size_t k = 0; k < candidates.size(); ++k) taken.push_back(k);
+		return taken;
+	}
+	parts.resize(1);
+	GridVector trial;
+	for (size_t k = 0; k < candidates.size(); ++k)
+	{
+		parts.push_back(candidates[k]);
+		if (tryMerge(parts, trial))
+		{
+			taken.push_back(k);
+			out = std::move(trial);
+		}
+		else
+			parts.pop_back();
+	}
+	return taken;
+}
+
+// Algorithm 2, lines 19-20, after the temporary grid (lines 1-11) and the fit (lines 12-18).
+namespace
+{
+GridVector mergeFitted(const GridVectorConfig& cfg, const std::vector<const GridVector*>& parts, const TempGrid& temp,
+					   const Line2D& line)
+{
+	const GridVector& ref = referenceOf(parts);
 
 	// line 19: endpoints from the fitted line, the parts' ends and the occupied cells
 	const TPoint2D dir(-std::sin(line.theta), std::cos(line.theta));
@@ -285,13 +375,12 @@ GridVector VectorMerger::merge(const std::vector<const GridVector*>& parts) cons
 	TPoint2D s(p0.x + tmin * dir.x, p0.y + tmin * dir.y), e(p0.x + tmax * dir.x, p0.y + tmax * dir.y);
 
 	// line 20: the new grid, every part's counts and points moved into it
-	GridOptions go = cfg_.grid;
+	GridOptions go = cfg.grid;
 	go.resolution = ref.resolution();
-	go.halfWidth = 0;
-	for (const GridVector* p : parts) go.halfWidth = std::max(go.halfWidth, p->halfWidth());
+	go.halfWidth = maxHalfWidth(parts);
 	double refLen = 0;
 	const bool keep = go.halfWidth == ref.halfWidth() &&
-					  onReferenceLattice(ref, s, e, cfg_.map.mergeRegridTolerance, refLen) &&
+					  onReferenceLattice(ref, s, e, cfg.map.mergeRegridTolerance, refLen) &&
 					  ref.cols() <= columnsFor(refLen, go.resolution) + 1;
 	if (keep)  // the same grid up to the tolerance: the reference's start and axis
 	{
@@ -330,5 +419,7 @@ GridVector VectorMerger::merge(const std::vector<const GridVector*>& parts) cons
 	}
 	return out;
 }
+
+}  // namespace
 
 }  // namespace gridvector

@@ -31,6 +31,7 @@ struct MergeResult
  * vectors are compounded with the pose (m = x (+) v) and inserted, each merged
  * with its correspondents by Algorithm 2 when map.merge_on_insert is set.
  * Cost per scan: O(vectors near the robot), independent of the map's size.
+ * Merges go through VectorMerger::mergeGreedy (the guard map.merge_holds_wall).
  *
  * Batch mode (buildPerScan + mergeAll): the full product of Eq. 8 over all
  * scans, then the merge of Eq. 4; used by the EM loop. */
@@ -76,6 +77,7 @@ class GlobalMap
 		size_t inserted = 0;  //!< new vectors of the scan
 		size_t merges = 0;  //!< Algorithm 2 runs
 		size_t absorbed = 0;  //!< map vectors merged away
+		size_t refused = 0;  //!< correspondents kept apart by the guard (map.merge_holds_wall)
 	};
 	const InsertStats& lastInsertStats() const { return stats_; }
 	const VectorIndex& index() const { return index_; }
@@ -100,7 +102,11 @@ class GlobalMap
 	 * Algorithm 2 (VectorMerger). A vector without correspondent is copied
 	 * unchanged (id and scanIndex kept); merged vectors get ids above the
 	 * largest input id and scanIndex -1. Output ordered by each group's first
-	 * input position. Inputs must have distinct ids. */
+	 * input position. Inputs must have distinct ids.
+	 * A group whose merge the guard refuses (map.merge_holds_wall: a curved
+	 * wall) is merged member by member instead, longest first, each into the
+	 * partial merges it corresponds to while they hold its wall, as the
+	 * sequential insertion does; it then yields several vectors. */
 	static MergeResult mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg);
 
    private:

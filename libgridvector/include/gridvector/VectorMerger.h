@@ -46,7 +46,20 @@ namespace gridvector
  * sub-millimetre refits. The fit itself (lines 12-18) always uses every cell.
  *
  * Merging N parts at once equals N-1 pairwise merges of Algorithm 2 with one
- * fit and one resampling instead of N-1 of each. */
+ * fit and one resampling instead of N-1 of each.
+ *
+ * Guard (map.merge_holds_wall, beyond the paper; tryMerge, mergeGreedy): the
+ * criteria of Sec. 3.2 compare two vectors, so pieces of a curved or bent
+ * wall (each within 10 deg / 0.15 m of the previous merge) chain into one long
+ * chord: on the corrected Intel log the corridor walls are arcs with up to
+ * 0.5 m sagitta over 12 m, and the chords end 5-7 deg off the wall at their
+ * ends. Such a merge moves the wall out of the new grid (its counts are
+ * clamped into the border rows, away from where they were observed), which
+ * is what "merging must not change the posterior" forbids. The guard
+ * measures, in every column of the temporary grid, the occupancy-weighted
+ * mean offset of the parts' points (the gravity centres of lines 1-11, with
+ * the weights n_occupy/n_visit of the fit) from the fitted line, and refuses
+ * the merge when one lies outside the new grid's band, (h + 1/2) res. */
 class VectorMerger
 {
    public:
@@ -58,6 +71,22 @@ class VectorMerger
 	 * scanIndex -1, the latest timestamp, mergedCount the sum, state Unknown
 	 * and id 0 (the caller numbers it). */
 	GridVector merge(const std::vector<const GridVector*>& parts) const;
+
+	/** merge(parts) if the new grid holds the parts' wall (see the guard
+	 * above; always when map.merge_holds_wall is false), else false and `out`
+	 * untouched. */
+	bool tryMerge(const std::vector<const GridVector*>& parts, GridVector& out) const;
+
+	/** `base` merged with as many of `candidates` as the guard allows: all of
+	 * them if possible (one merge), else one by one in the given order, each
+	 * kept if the merge still holds the wall. Returns the positions in
+	 * `candidates` merged (ascending; empty: nothing merged, `out` untouched). */
+	std::vector<size_t> mergeGreedy(const GridVector& base, const std::vector<const GridVector*>& candidates,
+									GridVector& out) const;
+
+	/** The guard's measure: the largest |occupancy-weighted mean offset| of a
+	 * temporary-grid column's points from the fitted line [m]. */
+	double wallOffset(const std::vector<const GridVector*>& parts) const;
 
 	/** Algorithm 2 lines 1-18 only: the weighted least-squares line of the
 	 * parts' temporary grid (normal to the right of the merged direction, as

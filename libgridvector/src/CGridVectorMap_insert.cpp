@@ -19,6 +19,9 @@ bool CGridVectorMap::internal_insertObservation(
 	const mrpt::math::TPose2D pose =
 		robotPose ? mrpt::math::TPose2D(robotPose->x(), robotPose->y(), robotPose->yaw())
 				  : mrpt::math::TPose2D(0, 0, 0);
-	map_.insertScan(pose, local);  // m = x (+) v, Eq. 8, Algorithm 2
+	if (map_.config().map.wipeVectorlessBeams)  // beyond the paper: the beams that made no vector too
+		map_.insertScan(pose, local, gridvector::ScanBeams::of(*scan, local, map_.config().extraction.minRange));
+	else
+		map_.insertScan(pose, local);  // m = x (+) v, Eq. 8, Algorithm 2
 	return true;
 }

@@ -154,6 +154,20 @@ void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan
 {
 	stats_ = {};
 	stats_.wipe = wipe(robotPose, scan);
+	insertVectors(robotPose, scan);
+}
+
+void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, const ScanBeams& beams)
+{
+	stats_ = {};
+	stats_.wipe = wipe(robotPose, scan);
+	if (cfg_.map.wipeVectorlessBeams)  // beyond the paper (BeamWipe)
+		stats_.beams = BeamWipe::apply(robotPose, beams, vectors_, index_, scan.scanIndex);
+	insertVectors(robotPose, scan);
+}
+
+void GlobalMap::insertVectors(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
+{
 	for (const auto& v : scan.vectors)
 	{
 		GridVector m = v.compose(robotPose);

@@ -1,6 +1,7 @@
 // Sec. 3.2: the global grid vector map M = {x_t (+) V_t}, merged (Eq. 4).
 #pragma once
 
+#include <gridvector/BeamWipe.h>
 #include <gridvector/GridVector.h>
 #include <gridvector/GridVectorConfig.h>
 #include <gridvector/ScanWipe.h>
@@ -56,6 +57,11 @@ class GlobalMap
 	 * again as part c would weigh that scan's hits double.
 	 * New vectors get fresh ids; merged vectors get a fresh id and scanIndex -1. */
 	void insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
+	/** insertScan(robotPose, scan), and when map.wipe_vectorless_beams is set
+	 * (beyond the paper, see BeamWipe) the scan's beams that made no vector
+	 * are credited to the map vectors they cross, after Eq. 8 and before the
+	 * new vectors go in. */
+	void insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, const ScanBeams& beams);
 
 	/** Eq. 8 alone: the scan's triangles applied to the map, nothing inserted. */
 	ScanWipe::Stats wipe(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
@@ -78,6 +84,7 @@ class GlobalMap
 		size_t merges = 0;  //!< Algorithm 2 runs
 		size_t absorbed = 0;  //!< map vectors merged away
 		size_t refused = 0;  //!< correspondents kept apart by the guard (map.merge_holds_wall)
+		BeamWipe::Stats beams;  //!< map.wipe_vectorless_beams
 	};
 	const InsertStats& lastInsertStats() const { return stats_; }
 	const VectorIndex& index() const { return index_; }
@@ -110,6 +117,7 @@ class GlobalMap
 	static MergeResult mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg);
 
    private:
+	void insertVectors(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
 	void addSlot(GridVector m);
 	void removeSlots(std::vector<size_t> slots);
 	void rebuildIndex();

@@ -72,6 +72,7 @@ struct MapOptions
 	bool mergeOnInsert = true;  //!< merge corresponding vectors (Algorithm 2) when inserting
 	bool wipeCountsBeams = true;  //!< Eq. 8 increments count the fan's beams through a cell (false: 1 per cell per triangle)
 	double mergeRegridTolerance = 0.005;  //!< Algorithm 2 line 20 keeps the reference's grid when the new vector lies within this of it [m]
+	bool wipeVectorlessBeams = false;  //!< beyond the paper: beams that made no vector also update the map (BeamWipe)
 	bool mergeHoldsWall = true;  //!< refuse a merge whose new grid would not hold the parts' wall (beyond the paper; VectorMerger::tryMerge)
 
 	template <class V>
@@ -84,6 +85,7 @@ struct MapOptions
 		v("index_cell_size", indexCellSize, "Bucket size of the spatial index over vectors [m]");
 		v("merge_on_insert", mergeOnInsert, "Merge corresponding vectors (Algorithm 2) as scans are inserted");
 		v("merge_regrid_tolerance", mergeRegridTolerance, "Algorithm 2, line 20: when the merged vector starts within this distance of the reference part's start and its line stays within it along the reference, the new grid is the reference's grid (extended at the end), so the reference's cells are kept as they are and only the other parts are moved; 0: always build a new grid [m]");
+		v("wipe_vectorless_beams", wipeVectorlessBeams, "Beyond the paper (Eq. 8 updates cells only through the wipe triangles of extracted vectors): beams that made no vector (ending in clutter or without a return) add n_visit to the map vectors' cells they cross and, when they end inside one, n_occupy + n_visit to that cell; sequential insertion with the scan's beams only (GlobalMap::insertScan with ScanBeams), not the batch path of the EM loop");
 		v("merge_holds_wall", mergeHoldsWall, "Algorithm 2 guard, beyond the paper: a merge is refused when at some column the occupancy-weighted mean of the parts' points lies outside the new grid's band ((half_width + 1/2) x resolution) around the fitted line, so a curved or bent wall is not straightened into one chord whose grid would clamp the wall's counts into its border rows; false: every corresponding set is merged (the paper's Algorithm 2)");
 		v("wipe_counts_beams", wipeCountsBeams, "Eq. 8: a wipe increment counts the beams of the triangle's fan crossing the cell, the unit of Algorithm 1 (false: 1 per cell per scan, the paper's Fig. 2)");
 	}

@@ -183,3 +183,18 @@ TEST(DoorDetector, PeopleByAWallMakeNoDoor)
 	const std::vector<GridVector> v = {vec(0, 5, 0, 15, S), vec(0, 14.1, 0.75, 14.36, D), vec(0, 13.93, 0.72, 13.72, D)};
 	EXPECT_TRUE(DoorDetector().detect(v).empty());
 }
+
+TEST(DoorDetector, TheSweptArcIsAtLeastARightAngleFromTheClosedState)
+{
+	// states seen: closed (0 deg, along the wall) and 45 deg; a leaf at 80 deg is the door opened
+	// wider, one at -80 deg (the other side of the wall) is not
+	DoorOptions o;
+	o.maxCornerGap = 0.1;  // the extra vectors below make no corner with the wall
+	const std::vector<GridVector> v = {vec(0, 0, 3, 0, S), vec(3, 0, 3.9, 0, D), vec(3, 0, 3.64, 0.64, S),
+									   vec(3.15, 0.05, 3.3, 0.94, S), vec(3.15, -0.05, 3.3, -0.94, S)};
+	const auto doors = DoorDetector(o).detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	std::vector<size_t> leaves = doors[0].leaves;
+	std::sort(leaves.begin(), leaves.end());
+	EXPECT_EQ(leaves, (std::vector<size_t>{1, 2, 3}));
+}

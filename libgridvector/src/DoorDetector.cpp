@@ -215,8 +215,10 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 	return doors;
 }
 
-// The smallest arc holding all states is the complement of the largest gap between them.
-bool DoorDetector::inSweep(const Door& d, double angle) const
+// The arc a door's leaf sweeps: the smallest arc holding all states (the complement of the
+// largest gap between them), widened to a right angle from the state nearest the wall's line
+// (the closed one) when the states seen span less.
+bool DoorDetector::inSweep(const Door& d, const GridVector& wall, double angle) const
 {
 	const std::vector<double>& as = d.angles;  // ascending
 	double gap = -1;
@@ -226,8 +228,14 @@ bool DoorDetector::inSweep(const Door& d, double angle) const
 		const double g = k + 1 < as.size() ? as[k + 1] - as[k] : as[0] + 2 * M_PI - as[k];
 		if (g > gap) gap = g, from = k;
 	}
-	const double rel = mrpt::math::wrapTo2Pi(angle - as[from]), tol = opts_.minStateDiffDeg * M_PI / 180;
-	return !(rel > tol && rel < gap - tol);
+	double start = as[(from + 1) % as.size()], width = 2 * M_PI - gap;  // counter-clockwise from start
+	if (width < M_PI / 2)
+	{
+		if (bendDeg(as[from], wall) < bendDeg(start, wall)) start = as[from] - M_PI / 2;  // closed at the arc's end
+		width = M_PI / 2;
+	}
+	const double rel = mrpt::math::wrapTo2Pi(angle - start), tol = opts_.minStateDiffDeg * M_PI / 180;
+	return rel <= width + tol || rel >= 2 * M_PI - tol;
 }
 
 // Every other vector from the hinge into the swept arc, no longer than the leaf, is one more
@@ -245,7 +253,7 @@ void DoorDetector::joinStates(const std::vector<GridVector>& v, Door& d, std::ve
 			const double r = dist(tip, d.hinge);
 			if (dist(vertex, d.hinge) > opts_.maxVertexDistance || r > reach || r <= opts_.maxVertexDistance) continue;
 			const double a = std::atan2(tip.y - d.hinge.y, tip.x - d.hinge.x);
-			if (!inSweep(d, a)) continue;
+			if (!inSweep(d, v[d.wall], a)) continue;
 			d.leaves.push_back(k);
 			taken[k] = true;
 			const bool wholeLeaf = r >= d.length - opts_.maxLengthDiff;

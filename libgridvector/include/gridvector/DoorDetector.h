@@ -48,7 +48,8 @@ struct Door
  * makes a T corner (open states leave the wall, a dynamic closed state lies
  * along it); a door of T corners only needs that closed state (people by a
  * wall make T corners too, none along it). Once a door is found, every other vector from its hinge into
- * the arc its states sweep and no longer than the leaf is one more state (a
+ * the arc its states sweep (at least a right angle from the closed state)
+ * and no longer than the leaf is one more state (a
  * door opened to different angles) or part of one (a leaf seen in part). A vector is a state of one door only: the corners a
  * door's leaves make elsewhere (e.g. their tips at the latch-side frame) make
  * no second door. */
@@ -69,7 +70,7 @@ class DoorDetector
 	bool endCorner(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	void teeCorners(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	bool sameDoor(const Corner& a, const Corner& b) const;
-	bool inSweep(const Door& d, double angle) const;
+	bool inSweep(const Door& d, const GridVector& wall, double angle) const;
 	void joinStates(const std::vector<GridVector>& v, Door& d, std::vector<bool>& taken) const;
 	bool collinearBeyond(const GridVector& wall, const mrpt::math::TPoint2D& vertex,
 						 const mrpt::math::TPoint2D& tip) const;

@@ -18,7 +18,7 @@
 # gv-carmen2rawlog (peer_run.sh), each process pinned to one core, all scored by
 # evaltraj.py. Prints the gv-em-slam table, then one table per seed comparing the systems
 # (peer_table.py; systems not run this time are taken from OUT_DIR/results if there).
-# Simulated worlds: gv-sim (default world, seeds 1-3; the other worlds, seed 1),
+# Simulated worlds: gv-sim (default world, seeds 1-3, and seeds 1-2 with 15 people; the other worlds, seed 1),
 # scored with gv-eval (trajectory, and the map after aligning it to the truth frame).
 # Prints markdown tables; each run's outputs stay in OUT_DIR.
 set -euo pipefail
@@ -123,11 +123,11 @@ fi
 
 [ $SIM -eq 1 ] || exit 0
 echo
-echo "| world | seed | scans | iterations | time [s] | ATE [m] | static precision | static recall | ghost share | dynamic detection | door recall |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| world | seed | people | scans | iterations | time [s] | ATE [m] | static precision | static recall | ghost share | ghost share (one-state doors static) | dynamic detection | door recall | door recall (seen swinging) |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 sim_row() {
-  local world=$1 seed=$2 d="$OUT/sim_$1_s$2"
-  "$BIN/gv-sim" --world "$world" --seed "$seed" --out "$d/sim" --quiet
+  local world=$1 seed=$2 people=${3:--1} d="$OUT/sim_$1_s$2_p${3:-default}"
+  "$BIN/gv-sim" --world "$world" --seed "$seed" --people "$people" --out "$d/sim" --quiet
   t0=$(date +%s.%N)
   "$BIN/gv-em-slam" --input "$d/sim/sim.log" --out "$d/em" --quiet
   t1=$(date +%s.%N)
@@ -139,9 +139,12 @@ sim_row() {
   prec=$(sed -n 's/^static vectors:.*precision \([0-9.]*\).*/\1/p' "$d/map_eval.txt")
   rec=$(m "static recall"); det=$(m "dynamic detection"); door=$(m "door recall")
   ghost=$(sed -n 's/^ghost length:.*(\([0-9.]*\) of static.*/\1/p' "$d/map_eval.txt")
+  ghost1=$(sed -n 's/^ghost length (doors seen in one state are static):.*(\([0-9.]*\) of static.*/\1/p' "$d/map_eval.txt")
+  doorseen=$(sed -n 's/^door recall (seen swinging): *\([0-9.]*\) (\([0-9]* of [0-9]*\).*/\1 (\2)/p' "$d/map_eval.txt")
   it=$(sed -n 's/.*"iterations_run": \([0-9]*\).*/\1/p' "$d/em/report.json")
-  echo "| $world | $seed | $(echo "$r" | field n) | $it | $(secs "$t0" "$t1") | $(echo "$r" | field ate_rmse_m) | $prec | $rec | $ghost | $det | $door |"
+  echo "| $world | $seed | ${3:-default} | $(echo "$r" | field n) | $it | $(secs "$t0" "$t1") | $(echo "$r" | field ate_rmse_m) | $prec | $rec | $ghost | $ghost1 | $det | $door | $doorseen |"
 }
 for seed in 1 2 3; do sim_row corridor-loop "$seed"; done
 sim_row office 1
 sim_row long-corridor 1
+for seed in 1 2; do sim_row corridor-loop "$seed" 15; done

@@ -40,7 +40,8 @@ class PassFinder
 	{
 		uint32_t lo = 0, hi = 0, nearest = 0;
 	};
-	explicit PassFinder(double cell) : cell_(cell) {}
+	/** `headingWeight` [m/rad]: a pass's candidate is the pose nearest in position + weight x heading. */
+	PassFinder(double cell, double headingWeight) : cell_(cell), headingWeight_(headingWeight) {}
 
 	/** Passes of poses j + gap < i with within(j) true; then adds pose i. */
 	template <class Within>
@@ -65,9 +66,13 @@ class PassFinder
 			size_t b = a + 1;
 			while (b < near_.size() && near_[b] - near_[b - 1] <= runGap) ++b;
 			Pass p{near_[a], near_[b - 1], near_[a]};
+			// nearest in view: a scan sees what lies ahead of it, so heading counts too
+			auto view = [&](uint32_t j) {
+				return se2::distance(poses[i], poses[j]) +
+					   headingWeight_ * std::abs(mrpt::math::wrapToPi(poses[i].phi - poses[j].phi));
+			};
 			for (size_t k = a; k < b; ++k)
-				if (se2::distance(poses[i], poses[near_[k]]) < se2::distance(poses[i], poses[p.nearest]))
-					p.nearest = near_[k];
+				if (view(near_[k]) < view(p.nearest)) p.nearest = near_[k];
 			passes_.push_back(p);
 			a = b;
 		}
@@ -77,7 +82,7 @@ class PassFinder
    private:
 	using Key = std::pair<long, long>;
 	Key keyOf(const TPose2D& p) const { return {long(std::floor(p.x / cell_)), long(std::floor(p.y / cell_))}; }
-	double cell_;
+	double cell_, headingWeight_;
 	std::map<Key, std::vector<uint32_t>> grid_;
 	std::vector<uint32_t> near_;
 	std::vector<Pass> passes_;
@@ -301,7 +306,7 @@ std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, 
 	const double d = cfg_.mstep.overlapDistance;
 	if (d <= 0) return fresh;
 	const uint32_t gap = uint32_t(std::max(1, cfg_.mstep.sequentialWindow));
-	PassFinder finder(d);
+	PassFinder finder(d, cfg_.mstep.passHeadingWeight);
 	for (uint32_t i = 0; i < scans.size(); ++i)
 	{
 		report("overlap registration", i, scans.size());
@@ -373,7 +378,7 @@ std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, 
 	if (!cfg_.mstep.loopSearch || R <= 0) return fresh;
 	const uint32_t gap = uint32_t(std::max(1, cfg_.mstep.sequentialWindow));
 	const uint32_t K = uint32_t(std::max(1, cfg_.mstep.overlapRunGap));
-	PassFinder finder(R);
+	PassFinder finder(R, cfg_.mstep.passHeadingWeight);
 	std::vector<Constraint> found;
 	for (uint32_t i = 0; i < scans.size(); ++i)
 	{
@@ -471,6 +476,8 @@ void MStep::optimise(Poses& poses, MStepReport& rep)
 	std::vector<Constraint*> byEdge(graph_.edges().size(), nullptr);
 	for (auto& [key, c] : constraints_)
 	{
+		// switchable behaviour: an edge rejected against an earlier estimate gets another chance
+		if (cfg_.mstep.reconsiderRejected) c.rejected = false;
 		if (c.rejected) continue;
 		PoseEdge e;
 		e.from = c.from;

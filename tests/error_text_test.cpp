@@ -33,3 +33,9 @@ TEST(ErrorText, BracketedPrefixesAreKeptButFramesDropped)
 	EXPECT_EQ(gridvector::oneLineError(std::string("[CGraphSlamEngine] my.ini: bad key\n[0 ] 0x7f001\n[12] foo")),
 			  "[CGraphSlamEngine] my.ini: bad key");
 }
+
+TEST(ErrorText, ControlBytesOfACorruptFileDoNotReachTheTerminal)
+{
+	EXPECT_EQ(gridvector::oneLineError(std::string("class 'a\x1b[2J\x01z' is not registered")),
+			  "class 'a?[2J?z' is not registered");
+}

@@ -25,11 +25,14 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <memory>
 #include <optional>
 #include <sstream>
+#include <vector>
 
 using namespace gridvector;
 using namespace gridvector::graphslam;
@@ -137,6 +140,35 @@ Settings settingsFrom(const io::ArgParser& a, const DeciderRegistry& reg)
 void requireFile(const std::string& path, const char* what)
 {
 	if (!mrpt::system::fileExists(path)) throw std::runtime_error(path + ": no such " + std::string(what));
+}
+
+/** MRPT 2.5's CGraphSlamEngine::readGTFile checks the line layout only in debug builds and
+ * indexes past the tokens of a short line (a segfault): every line must be 't x y theta',
+ * numbers separated by single-space-delimited tokens, as it reads them. */
+void requireGroundTruth(const std::string& path)
+{
+	requireFile(path, "ground-truth file");
+	std::ifstream in(path);
+	if (!in) throw std::runtime_error(path + ": cannot read ground-truth file");
+	std::string line;
+	for (size_t n = 1; std::getline(in, line); ++n)
+	{
+		if (!line.empty() && line.back() == '\r') line.pop_back();
+		std::vector<std::string> tokens;
+		std::istringstream fields(line);
+		for (std::string t; std::getline(fields, t, ' ');)
+			if (!t.empty()) tokens.push_back(t);
+		bool numbers = tokens.size() == 4;
+		for (const auto& t : tokens)
+		{
+			char* end = nullptr;
+			std::strtod(t.c_str(), &end);
+			numbers = numbers && end && *end == '\0';
+		}
+		if (!numbers)
+			throw std::runtime_error(path + ":" + std::to_string(n) +
+									 ": ground-truth lines must be 't x y theta' (4 numbers separated by spaces)");
+	}
 }
 
 /** Feeds every rawlog entry to the engine; returns the number of entries. */
@@ -254,7 +286,7 @@ int run(const Settings& s, DeciderRegistry& reg)
 {
 	requireFile(s.ini, "config file");
 	requireFile(s.rawlog, "rawlog");
-	if (!s.groundTruth.empty()) requireFile(s.groundTruth, "ground-truth file");
+	if (!s.groundTruth.empty()) requireGroundTruth(s.groundTruth);
 	mrpt::config::CConfigFile ini(s.ini);
 	const GeneralConfig gc(ini);
 	const GridVectorConfig mapConfig = validateGridVectorSections(ini, s);

@@ -71,6 +71,8 @@ void loadIni(sim::SimOptions& o, const std::string& path)
 {
 	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(path + ": cannot read (no such file)");
 	mrpt::config::CConfigFile ini(path);
+	if (!ini.sectionExists("gv_sim"))
+		throw std::runtime_error(path + ": no [gv_sim] section (gv-sim reads its options from [gv_sim] only)");
 	std::vector<std::string> keys;
 	ini.getAllKeys("gv_sim", keys);
 	std::set<std::string> known;

@@ -53,8 +53,11 @@ std::string oneLineError(const std::string& text, size_t maxLen)
 	}
 	std::string s;
 	for (char c : lastMessage.empty() ? out : lastMessage)
-		if (!std::isspace(static_cast<unsigned char>(c))) s += c;
-		else if (!s.empty() && s.back() != ' ') s += ' ';
+		if (std::isspace(static_cast<unsigned char>(c)))
+		{
+			if (!s.empty() && s.back() != ' ') s += ' ';
+		}
+		else s += std::iscntrl(static_cast<unsigned char>(c)) ? '?' : c;  // bytes of a corrupt file quoted in the message
 	if (s.size() > maxLen) s = s.substr(0, maxLen - 3) + "...";
 	return s.empty() ? "unknown error" : s;
 }

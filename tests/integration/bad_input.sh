@@ -1,0 +1,112 @@
+#!/usr/bin/env bash
+# Bad input across the apps, for what the per-app tests do not cover (gv_map.sh,
+# em_slam.sh, carmen2rawlog.sh, gv_graphslam.sh, gv_sim_eval.sh, icp_slam_plugin.sh):
+# truncated/corrupt gzip logs, inf/negative ranges, empty scans, unknown config keys,
+# unwritable output, missing input, garbage trajectories and .gvmap files.
+# Every case: exit 1 (2 for bad usage), one stderr line naming the file, no control
+# bytes, no crash, no output file and no temporary file left behind.
+set -euo pipefail
+W=$(mktemp -d); trap 'rm -rf "$W"' EXIT
+cd "$W"
+B="$GV_BIN"
+fail() { echo "FAIL: $*" >&2; exit 1; }
+# a robot in an 8 x 6 m room, 20 scans of 181 beams (as gv_map.sh)
+awk 'BEGIN { pi = atan2(0, -1);
+  for (t = 0; t < 20; t++) { x = -2 + 0.1 * t; y = 0.3 * sin(t / 5); th = 0.15 * t; line = "FLASER 181";
+    for (i = 0; i < 181; i++) { a = th - pi / 2 + pi * i / 180; dx = cos(a); dy = sin(a); r = 1e9;
+      if (dx > 1e-9) r = (4 - x) / dx < r ? (4 - x) / dx : r; if (dx < -1e-9) r = (-4 - x) / dx < r ? (-4 - x) / dx : r;
+      if (dy > 1e-9) r = (3 - y) / dy < r ? (3 - y) / dy : r; if (dy < -1e-9) r = (-3 - y) / dy < r ? (-3 - y) / dy : r;
+      line = line sprintf(" %.3f", r); }
+    ts = 1000 + 0.2 * t;
+    printf "%s %.4f %.4f %.4f %.4f %.4f %.4f %.6f sim %.6f\n", line, x, y, th, x, y, th, ts, ts;
+    printf "%.6f %.4f %.4f %.4f\n", ts, x, y, th > "traj.txt"; } }' > room.log
+gzip -c room.log > room.log.gz
+head -c $(( $(stat -c %s room.log.gz) / 2 )) room.log.gz > trunc.log.gz
+python3 -c "
+d = bytearray(open('room.log.gz', 'rb').read())
+for i in range(200, 260): d[i] ^= 0x5a
+open('corrupt.log.gz', 'wb').write(d)"
+sed '5s/^\(FLASER 181 [^ ]* [^ ]* \)[^ ]*/\1inf/' room.log > inf.log
+sed '5s/^\(FLASER 181 [^ ]* [^ ]* \)[^ ]*/\1-1.5/' room.log > neg.log
+{ head -3 room.log; echo "FLASER 0 0 0 0 0 0 0 1000.7 sim 1000.7"; tail -n +4 room.log; } > emptyscan.log
+: > empty.log
+printf '[gridvector_grid]\nresolutoin = 0.05\n' > typo.ini
+printf 'hello world\n1 2\n' > garbage.txt
+printf '1000 nan 0 0\n1000.2 1 1 1\n' > nantraj.txt
+printf '\x86a\x1b[2Jb\x00 garbage' | gzip -c > garbage.gvmap  # class name with an escape sequence
+"$B/gv-carmen2rawlog" room.log room.rawlog --quiet
+head -c $(( $(stat -c %s room.rawlog) / 2 )) room.rawlog > trunc.rawlog
+"$B/gv-map" --input room.log --poses log --out ok --quiet
+head -c $(( $(stat -c %s ok/map.gvmap) / 2 )) ok/map.gvmap > trunc.gvmap
+INI="$GV_SOURCE_DIR/share/gridvector/graphslam-gridvector.ini"
+
+n=0
+# expect STATUS WORD OUTPUT -- command...: exit STATUS, one stderr line containing WORD, OUTPUT not created
+expect() {
+  local status=$1 word=$2 output=$3; shift 4
+  set +e; "$@" > out.txt 2> err.txt; local rc=$?; set -e
+  [ "$rc" -eq "$status" ] || fail "exit $rc (want $status) for: $* -> $(head -c 400 err.txt)"
+  [ "$(grep -c . err.txt)" -eq 1 ] || fail "not one line for: $* -> $(cat err.txt)"
+  grep -qF -- "$word" err.txt || fail "'$word' not named for: $* -> $(cat err.txt)"
+  ! LC_ALL=C grep -q '[[:cntrl:]]' <(tr -d '\n' < err.txt) || fail "control bytes in the message for: $*"
+  [ "$output" = - ] || [ ! -e "$output" ] || fail "$output written for: $*"
+  n=$((n + 1))
+}
+# corrupt logs: every reader names the file and the problem
+expect 1 "trunc.log.gz: truncated or corrupt gzip data" o1/map.gvmap -- "$B/gv-map" --input trunc.log.gz --poses log --out o1 --quiet
+expect 1 "trunc.log.gz: truncated or corrupt gzip data" e1/report.json -- "$B/gv-em-slam" --input trunc.log.gz --out e1 --quiet
+expect 1 "trunc.log.gz: truncated or corrupt gzip data" t1.rawlog -- "$B/gv-carmen2rawlog" trunc.log.gz t1.rawlog --quiet
+expect 1 "trunc.log.gz: truncated or corrupt gzip data" b1.log -- "$B/gv-bench-log" trunc.log.gz b1 --quiet
+expect 1 "trunc.log.gz: truncated or corrupt gzip data" - -- "$B/gv-bench-extract" trunc.log.gz --repeat 1
+expect 1 "trunc.log.gz: truncated or corrupt gzip data" - -- "$B/gv-eval" traj trunc.log.gz traj.txt
+expect 1 "corrupt.log.gz: truncated or corrupt gzip data" e2/report.json -- "$B/gv-em-slam" --input corrupt.log.gz --out e2 --quiet
+expect 1 "corrupt.log.gz: truncated or corrupt gzip data" b2.log -- "$B/gv-bench-log" corrupt.log.gz b2 --quiet
+expect 1 "inf.log:5: FLASER range 2 is 'inf'" o3/map.gvmap -- "$B/gv-map" --input inf.log --poses log --out o3 --quiet
+expect 1 "neg.log:5: FLASER range 2 is -1.5 (negative)" e3/report.json -- "$B/gv-em-slam" --input neg.log --out e3 --quiet
+expect 1 "emptyscan.log:4: FLASER: zero beams" o4/map.gvmap -- "$B/gv-map" --input emptyscan.log --poses log --out o4 --quiet
+expect 1 "emptyscan.log:4: FLASER beam count is 0" b4.log -- "$B/gv-bench-log" emptyscan.log b4 --quiet
+expect 1 "empty.log: no laser scans" e5/report.json -- "$B/gv-em-slam" --input empty.log --out e5 --quiet
+expect 1 "empty.log: no odometry" - -- "$B/gv-eval" traj empty.log traj.txt
+expect 1 "trunc.rawlog: truncated or corrupt gzip data" o6/map.gvmap -- "$B/gv-map" --input trunc.rawlog --poses log --out o6 --quiet
+expect 1 "trunc.rawlog: entry" g6/trajectory.txt -- "$B/gv-graphslam" --2d -i "$INI" -r trunc.rawlog --disable-visuals --output-dir g6
+# missing input
+expect 1 "missing.log: cannot read" b7.log -- "$B/gv-bench-log" missing.log b7 --quiet
+expect 1 "missing.log: cannot read" - -- "$B/gv-bench-extract" missing.log
+expect 1 "missing.txt: cannot read" - -- "$B/gv-eval" traj traj.txt missing.txt
+expect 1 "missing.gvmap: no such file" - -- "$B/gv-map-info" missing.gvmap
+# unknown config keys (and a gv-sim file without its section)
+expect 1 "typo.ini: unknown key 'resolutoin' in section [gridvector_grid]" o8/map.gvmap -- "$B/gv-map" --input room.log --poses log --out o8 --config typo.ini --quiet
+expect 1 "typo.ini: unknown key 'resolutoin'" e8/report.json -- "$B/gv-em-slam" --input room.log --out e8 --config typo.ini --quiet
+expect 1 "typo.ini: unknown key 'resolutoin'" - -- "$B/gv-bench-extract" room.log --config typo.ini
+expect 1 "typo.ini: unknown key 'resolutoin'" m8.gvmap -- "$B/gv-map-info" --from-simplemap x.simplemap --config typo.ini --save m8.gvmap
+expect 1 "typo.ini: unknown key 'resolutoin'" g8/trajectory.txt -- "$B/gv-graphslam" --2d -i typo.ini -r room.rawlog --disable-visuals --output-dir g8
+expect 1 "typo.ini: no [gv_sim] section" s8/sim.log -- "$B/gv-sim" --config typo.ini --out s8 --quiet
+# unwritable output (the parent is a file)
+expect 1 "room.log/x: cannot write (Not a directory)" - -- "$B/gv-em-slam" --input room.log --out room.log/x --quiet
+expect 1 "room.log/x: cannot write (Not a directory)" - -- "$B/gv-sim" --out room.log/x --quiet --scans 20
+expect 1 "room.log/x.rawlog: cannot write (Not a directory)" - -- "$B/gv-carmen2rawlog" room.log room.log/x.rawlog --quiet
+expect 1 "room.log/b.log: cannot write (Not a directory)" - -- "$B/gv-bench-log" room.log room.log/b --quiet
+expect 1 "room.log/m.gvmap: cannot write (Not a directory)" - -- "$B/gv-map-info" ok/map.gvmap --save room.log/m.gvmap
+expect 1 "room.log/x: cannot write (Not a directory)" - -- "$B/gv-graphslam" --2d -i "$INI" -r room.rawlog --disable-visuals --output-dir room.log/x
+# garbage trajectories (MRPT's own ground-truth reader would crash on the last one)
+expect 1 "garbage.txt:1: expected 't x y theta', found 2 fields" o9/map.gvmap -- "$B/gv-map" --input room.log --poses garbage.txt --out o9 --quiet
+expect 1 "nantraj.txt:1: x is 'nan'" e9/report.json -- "$B/gv-em-slam" --input room.log --init nantraj.txt --out e9 --quiet
+expect 1 "garbage.txt:1: expected 't x y theta'" - -- "$B/gv-eval" traj garbage.txt traj.txt
+expect 1 "nantraj.txt:1: x is 'nan'" - -- "$B/gv-eval" traj traj.txt nantraj.txt
+expect 1 "garbage.txt:1: ground-truth lines must be 't x y theta'" g9/trajectory.txt -- "$B/gv-graphslam" --2d -i "$INI" -r room.rawlog -g garbage.txt --disable-visuals --output-dir g9
+# .gvmap files
+expect 1 "trunc.gvmap: not a valid mrpt::maps::CGridVectorMap file" m10.gvmap -- "$B/gv-map-info" trunc.gvmap --save m10.gvmap
+expect 1 "garbage.gvmap: not a valid mrpt::maps::CGridVectorMap file" - -- "$B/gv-map-info" garbage.gvmap
+# the tools converted to ArgParser: bad usage is one line and 2, --help is 0
+for tool in gv-map-info gv-config gv-bench-extract; do
+  expect 2 "$tool: unknown option --frobnicate (see --help)" - -- "$B/$tool" --frobnicate
+  "$B/$tool" --help | grep -q "^usage: $tool " || fail "$tool --help"
+done
+expect 2 "gv-config: unknown profile 'nope' (known: library, em-slam)" - -- "$B/gv-config" --profile nope --ini
+expect 2 "--repeat must be in 1..1000000, got 0" - -- "$B/gv-bench-extract" room.log --repeat 0
+expect 2 "--config applies to --from-simplemap only" - -- "$B/gv-map-info" ok/map.gvmap --config typo.ini
+# a .gvmap rewritten by --save loads again
+"$B/gv-map-info" ok/map.gvmap --save re.gvmap > info1.txt && "$B/gv-map-info" re.gvmap > info2.txt
+cmp info1.txt info2.txt || fail "re-saved .gvmap differs: $(diff info1.txt info2.txt)"
+! find . -name '*.tmp*' | grep -q . || fail "temporary files left: $(find . -name '*.tmp*')"
+echo "bad_input: $n cases OK"

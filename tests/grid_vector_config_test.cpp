@@ -6,6 +6,9 @@
 #include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 using gridvector::GridVectorConfig;
 
@@ -142,4 +145,36 @@ TEST(GridVectorConfig, JsonHasEveryGroupAndKey)
 	EXPECT_NE(j.find("\"merge_on_insert\": true"), std::string::npos) << j;
 	for (const auto& [name, value] : c.namedValues())
 		EXPECT_NE(j.find("\"" + name.substr(name.find('.') + 1) + "\": "), std::string::npos) << name;
+}
+
+TEST(GridVectorConfig, ValuesThatAreNotNumbersAreErrorsNamingSectionKeyAndValue)
+{
+	const std::vector<std::pair<std::string, std::string>> bad = {
+		{"[gridvector_grid]\nresolution = 0.o5\n", "[gridvector_grid] resolution = '0.o5' is not a finite number"},
+		{"[gridvector_grid]\nhalf_width = 1.5\n", "[gridvector_grid] half_width = '1.5' is not an integer"},
+		{"[gridvector_map]\nmerge_on_insert = ture\n", "[gridvector_map] merge_on_insert = 'ture' is not true or false"},
+		{"[gridvector_map]\nmax_rho_diff = nan\n", "'nan' is not a finite number"},
+		{"[gridvector_map]\nmax_rho_diff =\n", "max_rho_diff = '' is not a finite number"}};
+	for (const auto& [text, expected] : bad)
+	{
+		mrpt::config::CConfigFileMemory ini(text);
+		GridVectorConfig c;
+		try
+		{
+			c.loadFromConfigFile(ini, "gridvector", "my.ini");
+			ADD_FAILURE() << "accepted: " << text;
+		}
+		catch (const std::runtime_error& e)
+		{
+			EXPECT_NE(std::string(e.what()).find("my.ini: "), std::string::npos) << e.what();
+			EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+		}
+	}
+	mrpt::config::CConfigFileMemory ok("[gridvector_grid]\nresolution = 0.05   ; finer\nhalf_width = 2 # wider\n"
+									   "[gridvector_map]\nmerge_on_insert = No\n");
+	GridVectorConfig c;
+	c.loadFromConfigFile(ok, "gridvector", "ok.ini");
+	EXPECT_DOUBLE_EQ(c.grid.resolution, 0.05);
+	EXPECT_EQ(c.grid.halfWidth, 2);
+	EXPECT_FALSE(c.map.mergeOnInsert);
 }

@@ -2,7 +2,11 @@
 
 #include <mrpt/config/CConfigFile.h>
 
+#include <cctype>
+#include <cerrno>
+#include <climits>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <charconv>
@@ -24,17 +28,56 @@ std::string toText(const T& value)
 	return os.str();
 }
 
-void readValue(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k, double& f)
+// The value's text, without a trailing "; comment" or "# comment".
+std::string valueText(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key)
 {
-	f = c.read_double(s, k, f);
+	std::string v = c.read_string(section, key, "");
+	for (const char* mark : {";", "#"})
+		for (size_t p = v.find(mark); p != std::string::npos; p = v.find(mark, p + 1))
+			if (p > 0 && std::isspace(static_cast<unsigned char>(v[p - 1]))) v.resize(p);
+	while (!v.empty() && std::isspace(static_cast<unsigned char>(v.back()))) v.pop_back();
+	return v;
 }
-void readValue(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k, int& f)
+
+// Strict parsing: MRPT's read_double/read_int/read_bool would read "0.o5" as 0 and "ture" as false.
+bool parseValue(const std::string& v, double& f)
 {
-	f = c.read_int(s, k, f);
+	char* end = nullptr;
+	const double x = std::strtod(v.c_str(), &end);
+	if (v.empty() || *end || !std::isfinite(x)) return false;
+	return f = x, true;
 }
-void readValue(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k, bool& f)
+bool parseValue(const std::string& v, int& f)
 {
-	f = c.read_bool(s, k, f);
+	char* end = nullptr;
+	errno = 0;
+	const long x = std::strtol(v.c_str(), &end, 10);
+	if (v.empty() || *end || errno == ERANGE || x < INT_MIN || x > INT_MAX) return false;
+	return f = int(x), true;
+}
+bool parseValue(std::string v, bool& f)
+{
+	for (char& ch : v) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+	if (v == "true" || v == "yes" || v == "1") return f = true, true;
+	if (v == "false" || v == "no" || v == "0") return f = false, true;
+	return false;
+}
+template <class T>
+const char* kindOf()
+{
+	if constexpr (std::is_same_v<T, bool>) return "true or false";
+	else if constexpr (std::is_same_v<T, int>) return "an integer";
+	else return "a finite number";
+}
+
+template <class T>
+void readValue(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, T& field,
+			   const std::string& sourceName)
+{
+	if (!c.keyExists(section, key)) return;
+	const std::string v = valueText(c, section, key);
+	if (!parseValue(v, field))
+		throw std::runtime_error(sourceName + ": [" + section + "] " + key + " = '" + v + "' is not " + kindOf<T>());
 }
 
 template <class Group>
@@ -61,7 +104,7 @@ void GridVectorConfig::loadFromConfigFile(
 				throw std::runtime_error(
 					sourceName + ": unknown key '" + k + "' in section [" + section + "]");
 		g.visit([&](const char* key, auto& field, const char*) {
-			readValue(cfg, section, key, field);
+			readValue(cfg, section, key, field, sourceName);
 		});
 	});
 	validate();

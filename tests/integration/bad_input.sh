@@ -31,6 +31,7 @@ sed '5s/^\(FLASER 181 [^ ]* [^ ]* \)[^ ]*/\1-1.5/' room.log > neg.log
 { head -3 room.log; echo "FLASER 0 0 0 0 0 0 0 1000.7 sim 1000.7"; tail -n +4 room.log; } > emptyscan.log
 : > empty.log
 printf '[gridvector_grid]\nresolutoin = 0.05\n' > typo.ini
+printf '[gridvector_grid]\nhalf_width = 1.5\n' > badval.ini
 printf 'hello world\n1 2\n' > garbage.txt
 printf '1000 nan 0 0\n1000.2 1 1 1\n' > nantraj.txt
 printf '\x86a\x1b[2Jb\x00 garbage' | gzip -c > garbage.gvmap  # class name with an escape sequence
@@ -80,6 +81,8 @@ expect 1 "typo.ini: unknown key 'resolutoin'" e8/report.json -- "$B/gv-em-slam" 
 expect 1 "typo.ini: unknown key 'resolutoin'" - -- "$B/gv-bench-extract" room.log --config typo.ini
 expect 1 "typo.ini: unknown key 'resolutoin'" m8.gvmap -- "$B/gv-map-info" --from-simplemap x.simplemap --config typo.ini --save m8.gvmap
 expect 1 "typo.ini: unknown key 'resolutoin'" g8/trajectory.txt -- "$B/gv-graphslam" --2d -i typo.ini -r room.rawlog --disable-visuals --output-dir g8
+expect 1 "badval.ini: [gridvector_grid] half_width = '1.5' is not an integer" e8/report.json -- "$B/gv-em-slam" --input room.log --out e8 --config badval.ini --quiet
+expect 1 "badval.ini: [gridvector_grid] half_width = '1.5' is not an integer" - -- "$B/gv-config" --check badval.ini
 expect 1 "typo.ini: no [gv_sim] section" s8/sim.log -- "$B/gv-sim" --config typo.ini --out s8 --quiet
 # unwritable output (the parent is a file)
 expect 1 "room.log/x: cannot write (Not a directory)" - -- "$B/gv-em-slam" --input room.log --out room.log/x --quiet

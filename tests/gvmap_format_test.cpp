@@ -68,6 +68,17 @@ void writeRest(Archive& a, int rows)
 	a << mrpt::maps::TMapGenericParams();
 }
 
+// A version-1 stream whose config record holds exactly these keys, then writeRest(3 rows).
+void writeVersion1(mrpt::io::CMemoryStream& buf, const std::vector<std::pair<std::string, double>>& keys)
+{
+	auto a = mrpt::serialization::archiveFrom(buf);
+	beginObject(a, 1);
+	a << uint32_t(keys.size());
+	for (const auto& [name, value] : keys) writeKey(a, name, value);
+	writeRest(a, 3);
+	endObject(a);
+}
+
 CGridVectorMap load(mrpt::io::CMemoryStream& buf)
 {
 	buf.Seek(0);
@@ -142,13 +153,7 @@ TEST(GvmapFormat, RoundTripKeepsConfigVectorsAndCounts)
 TEST(GvmapFormat, KeysMissingFromTheFileTakeTheirDefaults)
 {
 	mrpt::io::CMemoryStream buf;
-	auto a = mrpt::serialization::archiveFrom(buf);
-	beginObject(a, 1);
-	a << uint32_t(2);
-	writeKey(a, "grid.resolution", 0.2);
-	writeKey(a, "map.merge_on_insert", 0);
-	writeRest(a, 3);  // grid.half_width missing: the default 1, 3 rows
-	endObject(a);
+	writeVersion1(buf, {{"grid.resolution", 0.2}, {"map.merge_on_insert", 0}});  // grid.half_width missing: 1, 3 rows
 	const CGridVectorMap m = load(buf);
 	const gridvector::GridVectorConfig defaults;
 	EXPECT_DOUBLE_EQ(m.config().grid.resolution, 0.2);
@@ -166,13 +171,7 @@ TEST(GvmapFormat, KeysMissingFromTheFileTakeTheirDefaults)
 TEST(GvmapFormat, UnknownKeyIsAnErrorNamingTheKey)
 {
 	mrpt::io::CMemoryStream buf;
-	auto a = mrpt::serialization::archiveFrom(buf);
-	beginObject(a, 1);
-	a << uint32_t(2);
-	writeKey(a, "grid.resolution", 0.1);
-	writeKey(a, "grid.future_option", 1);
-	writeRest(a, 3);
-	endObject(a);
+	writeVersion1(buf, {{"grid.resolution", 0.1}, {"grid.future_option", 1}});
 	const std::string err = loadError(buf);
 	EXPECT_NE(err.find("stored config key 'grid.future_option' is unknown to this version"), std::string::npos) << err;
 }
@@ -183,12 +182,7 @@ TEST(GvmapFormat, StoredValuesAreValidated)
 			 {"grid.half_width", 1.5}, {"map.merge_on_insert", 2}, {"grid.resolution", -1}})
 	{
 		mrpt::io::CMemoryStream buf;
-		auto a = mrpt::serialization::archiveFrom(buf);
-		beginObject(a, 1);
-		a << uint32_t(1);
-		writeKey(a, key, value);
-		writeRest(a, 3);
-		endObject(a);
+		writeVersion1(buf, {{key, value}});
 		const std::string err = loadError(buf);
 		EXPECT_NE(err.find("stored config"), std::string::npos) << key << ": " << err;
 	}

@@ -136,3 +136,20 @@ TEST(WipeTriangle, BoundingBoxContainsTheFanAndBand)
 	EXPECT_GE(t.maxY(), 2.1 - 1e-9);
 	EXPECT_LT(t.maxY(), 2.2);
 }
+
+TEST(WipeTriangle, MissesOnlyBoxesBeyondAnEdge)
+{
+	// sensor at the origin, new vector from (2, -1) to (2, 1), hit band 0.05
+	const WipeTriangle tri({0, 0}, {2, -1}, {2, 1}, 0.05);
+	EXPECT_TRUE(tri.misses(0.5, -3, 2, -1.2));  // beyond the edge O-S
+	EXPECT_FALSE(tri.misses(-3, -1, -0.5, 1));  // behind the sensor: no edge separates it (conservative)
+	EXPECT_TRUE(tri.misses(2.2, -1, 3, 1));  // behind the vector, beyond the hit band
+	EXPECT_TRUE(tri.misses(0, 1.5, 2, 3));  // beside the cone
+	EXPECT_FALSE(tri.misses(1, -0.2, 1.2, 0.2));  // inside
+	EXPECT_FALSE(tri.misses(2.02, -0.1, 3, 0.1));  // reaches into the hit band
+	EXPECT_FALSE(tri.misses(-5, -5, 5, 5));  // contains the triangle
+	// never rejects a box holding a point the triangle classifies as b or c
+	for (double x = -0.5; x <= 2.5; x += 0.05)
+		for (double y = -1.5; y <= 1.5; y += 0.05)
+			if (tri.classify({x, y}) != WipePart::Outside) EXPECT_FALSE(tri.misses(x - 0.01, y - 0.01, x + 0.01, y + 0.01));
+}

@@ -67,6 +67,24 @@ void WipeTriangle::coords(double x, double y, double& a, double& b) const
 	b = i10_ * px + i11_ * py;
 }
 
+// Separating axes among the cone's edges a = 0, b = 0, a + b = sMax (the box's corners all beyond one).
+bool WipeTriangle::misses(double minX, double minY, double maxX, double maxY) const
+{
+	if (degenerate_) return true;
+	constexpr double eps = 1e-9;
+	bool allA = true, allB = true, allFar = true;
+	for (const double x : {minX, maxX})
+		for (const double y : {minY, maxY})
+		{
+			double a, b;
+			coords(x, y, a, b);
+			allA = allA && a < -eps;
+			allB = allB && b < -eps;
+			allFar = allFar && a + b > sMax_ + eps;
+		}
+	return allA || allB || allFar;
+}
+
 WipePart WipeTriangle::classify(const TPoint2D& p) const
 {
 	if (degenerate_) return WipePart::Outside;

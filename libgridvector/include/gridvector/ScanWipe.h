@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace gridvector
@@ -57,6 +58,8 @@ class ScanWipe
 	 * merged into get part b only: its endpoints reach them through its own
 	 * Algorithm 1 counts, the beams passing in front of it only through the wipe. */
 	using SkipFn = std::function<WipePart(size_t segment, uint32_t slot)>;
+	/** `index` lists every map vector's slot with its Box2D::of box (a candidate
+	 * whose box lies beyond one edge of a triangle is skipped without reading it). */
 	Stats apply(const mrpt::math::TPoint2D& sensor, const std::vector<Segment>& scanVectors,
 				std::vector<GridVector>& map, const VectorIndex& index, const SkipFn& limit = {});
 	Stats apply(const mrpt::math::TPoint2D& sensor, const std::vector<GridVector>& scanVectors,
@@ -72,12 +75,14 @@ class ScanWipe
 	{
 		float hit = 0, pass = 0;
 	};
+	Mark* marksOf(uint32_t slot, size_t cells);
 	double hitBand_;
 	bool beams_;
 	std::vector<uint32_t> candidates_;
 	std::vector<Mark> marks_;  //!< per cell of the touched vectors, back to back
 	std::vector<size_t> offset_;  //!< slot -> first mark + 1 (0: not touched by this scan)
 	std::vector<uint32_t> touched_;
+	std::vector<std::pair<uint32_t, uint32_t>> span_;  //!< slot -> [first, last) mark touched by this scan
 };
 
 }  // namespace gridvector

@@ -77,6 +77,10 @@ class WipeTriangle
 	template <class F>
 	void forEachCellAt(const GridVector& m, F&& f) const;
 
+	/** True if the axis-aligned box [minX, maxX] x [minY, maxY] lies wholly
+	 * outside parts b and c (beyond one of the triangle's three edges): no cell
+	 * whose centre is in the box can be updated. Conservative (false when unsure). */
+	bool misses(double minX, double minY, double maxX, double maxY) const;
 	/** Eq. 8 for this triangle on one map vector (weights as weight()); returns cells updated. */
 	size_t apply(GridVector& m) const;
 

@@ -353,3 +353,24 @@ TEST(NoReturnRange, RareLargestReadingIsAWall)
 	EXPECT_TRUE(r.warnings.empty());
 	fs::remove(path);
 }
+
+TEST(CarmenReader, BinaryGarbageIsQuotedPrintablyInTheError)
+{
+	for (const std::string& text : {std::string("FLASER 3 1 \x1b[2J\x01\xff 3 0 0 0 0 0 0 1 h 1\n"),
+									std::string("\x1b[2J") + std::string(500, 'A') + "\n"})
+	{
+		try
+		{
+			parse(text);
+			ADD_FAILURE() << "accepted";
+		}
+		catch (const std::runtime_error& e)
+		{
+			const std::string msg = e.what();
+			EXPECT_EQ(msg.rfind("mem.log:1: ", 0), 0u) << msg;
+			for (char c : msg) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << msg;
+			EXPECT_NE(msg.find("\\x1b[2J"), std::string::npos) << msg;
+			EXPECT_LT(msg.size(), 160u) << msg;
+		}
+	}
+}

@@ -5,6 +5,7 @@
 #include <gridvector/io/ArgParser.h>
 #include <gridvector/io/LogReader.h>
 
+#include <cstdio>
 #include <iostream>
 
 using namespace gridvector;
@@ -25,7 +26,12 @@ bool isLog(std::string p)
 /** A trajectory file, or the odometry (--log-pose: the log's own poses) of a log. */
 io::Trajectory loadTrajectory(const std::string& path, bool logPose)
 {
-	if (!isLog(path)) return io::readTrajectory(path);
+	if (!isLog(path))
+	{
+		io::Trajectory t = io::readTrajectory(path);
+		if (t.empty()) throw std::runtime_error(path + ": no poses");
+		return t;
+	}
 	const io::Trajectory t = io::trajectoryOf(io::readLog(path), logPose);
 	if (t.empty()) throw std::runtime_error(path + ": no " + (logPose ? "log poses" : "odometry") + " in this log");
 	return t;
@@ -40,7 +46,18 @@ int trajectoryCommand(const io::ArgParser& a)
 	const bool logPose = a.has("log-pose");
 	const auto est = loadTrajectory(a.positional()[1], logPose);
 	const auto ref = loadTrajectory(a.positional()[2], logPose);
-	const auto m = eval::evaluateTrajectory(est, ref, o);
+	eval::TrajectoryMetrics m;
+	try
+	{
+		m = eval::evaluateTrajectory(est, ref, o);
+	}
+	catch (const std::runtime_error& e)  // "too few matched poses (n)": say which files
+	{
+		char dt[32];
+		std::snprintf(dt, sizeof dt, "%g", o.maxTimeDiff);
+		throw std::runtime_error(a.positional()[1] + " vs " + a.positional()[2] + ": " + e.what() +
+								 " within --max-dt " + dt + " s");
+	}
 	std::cout << (a.has("json") ? eval::formatJson(m) : eval::formatText(m)) << "\n";
 	return 0;
 }

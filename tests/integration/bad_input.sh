@@ -32,6 +32,7 @@ sed '5s/^\(FLASER 181 [^ ]* [^ ]* \)[^ ]*/\1-1.5/' room.log > neg.log
 : > empty.log
 printf '[gridvector_grid]\nresolutoin = 0.05\n' > typo.ini
 printf '[gridvector_grid]\nhalf_width = 1.5\n' > badval.ini
+printf '\001\377\033[2Jab 1 2 3\n' > binary.txt  # a binary token with a terminal escape
 printf 'hello world\n1 2\n' > garbage.txt
 printf '1000 nan 0 0\n1000.2 1 1 1\n' > nantraj.txt
 printf '\x86a\x1b[2Jb\x00 garbage' | gzip -c > garbage.gvmap  # class name with an escape sequence
@@ -96,6 +97,11 @@ expect 1 "garbage.txt:1: expected 't x y theta', found 2 fields" o9/map.gvmap --
 expect 1 "nantraj.txt:1: x is 'nan'" e9/report.json -- "$B/gv-em-slam" --input room.log --init nantraj.txt --out e9 --quiet
 expect 1 "garbage.txt:1: expected 't x y theta'" - -- "$B/gv-eval" traj garbage.txt traj.txt
 expect 1 "nantraj.txt:1: x is 'nan'" - -- "$B/gv-eval" traj traj.txt nantraj.txt
+printf '# only a comment\n' > nopose.txt
+expect 1 "nopose.txt: no poses" - -- "$B/gv-eval" traj nopose.txt traj.txt
+awk '{ print $1 + 100, $2, $3, $4 }' traj.txt > later.txt
+expect 1 "later.txt vs traj.txt: too few matched poses (0) within --max-dt 0.05 s" - -- "$B/gv-eval" traj later.txt traj.txt
+expect 1 "binary.txt:1: t is '\\x01\\xff\\x1b[2Jab' (not a finite number)" - -- "$B/gv-eval" traj binary.txt traj.txt
 expect 1 "garbage.txt:1: ground-truth lines must be 't x y theta'" g9/trajectory.txt -- "$B/gv-graphslam" --2d -i "$INI" -r room.rawlog -g garbage.txt --disable-visuals --output-dir g9
 # .gvmap files
 expect 1 "trunc.gvmap: not a valid mrpt::maps::CGridVectorMap file" m10.gvmap -- "$B/gv-map-info" trunc.gvmap --save m10.gvmap

@@ -13,7 +13,7 @@ bool parseFlag(std::string_view v, const TextPos& pos, std::string_view name)
 {
 	if (v == "1" || v == "on" || v == "yes" || v == "true") return true;
 	if (v == "0" || v == "off" || v == "no" || v == "false") return false;
-	parseError(pos, "PARAM " + std::string(name) + " is '" + std::string(v) + "' (expected 0/1/on/off)");
+	parseError(pos, "PARAM " + std::string(name) + " is '" + printableToken(v) + "' (expected 0/1/on/off)");
 }
 
 double positive(std::string_view v, const TextPos& pos, std::string_view name)

@@ -123,7 +123,7 @@ void CarmenParser::onOther(const Tokens& t)
 								return std::isupper(static_cast<unsigned char>(c)) ||
 									   std::isdigit(static_cast<unsigned char>(c)) || c == '_';
 							});
-	if (!identifier) parseError(pos_, "unrecognised line starting with '" + str(k.substr(0, 40)) + "' (not a CARMEN message)");
+	if (!identifier) parseError(pos_, "unrecognised line starting with '" + printableToken(k) + "' (not a CARMEN message)");
 	other_[str(k)]++;
 }
 

@@ -13,6 +13,21 @@ void parseError(const TextPos& pos, const std::string& msg)
 	throw std::runtime_error(pos.str() + ": " + msg);
 }
 
+std::string printableToken(std::string_view tok)
+{
+	constexpr size_t kMax = 40;
+	static const char* hex = "0123456789abcdef";
+	std::string out;
+	for (size_t i = 0; i < tok.size() && i < kMax; ++i)
+	{
+		const auto c = static_cast<unsigned char>(tok[i]);
+		if (c >= 0x20 && c < 0x7f) out += char(c);
+		else out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+	}
+	if (tok.size() > kMax) out += "...";
+	return out;
+}
+
 std::vector<std::string_view> splitTokens(std::string_view line)
 {
 	std::vector<std::string_view> out;
@@ -39,7 +54,7 @@ double parseDouble(std::string_view tok, const TextPos& pos, const std::string& 
 	errno = 0;
 	const double v = std::strtod(s.c_str(), &end);
 	if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v) || errno == ERANGE)
-		parseError(pos, what + " is '" + s + "' (not a finite number)");
+		parseError(pos, what + " is '" + printableToken(s) + "' (not a finite number)");
 	return v;
 }
 
@@ -50,9 +65,9 @@ long parseInt(std::string_view tok, const TextPos& pos, const std::string& what,
 	errno = 0;
 	const long v = std::strtol(s.c_str(), &end, 10);
 	if (s.empty() || end != s.c_str() + s.size() || errno == ERANGE)
-		parseError(pos, what + " is '" + s + "' (not an integer)");
+		parseError(pos, what + " is '" + printableToken(s) + "' (not an integer)");
 	if (v < lo || v > hi)
-		parseError(pos, what + " is " + s + " (must be in " + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+		parseError(pos, what + " is " + printableToken(s) + " (must be in " + std::to_string(lo) + ".." + std::to_string(hi) + ")");
 	return v;
 }
 

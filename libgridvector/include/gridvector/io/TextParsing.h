@@ -20,6 +20,10 @@ struct TextPos
 /** Throws std::runtime_error("file:line: msg"). */
 [[noreturn]] void parseError(const TextPos& pos, const std::string& msg);
 
+/** A token as quoted in an error message: bytes outside printable ASCII as \xHH, at most 40 of them
+ * (a binary file's "token" can be any length and hold terminal control sequences). */
+std::string printableToken(std::string_view tok);
+
 /** Splits at blanks (space, tab, CR). */
 std::vector<std::string_view> splitTokens(std::string_view line);
 

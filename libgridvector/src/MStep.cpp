@@ -365,13 +365,22 @@ bool MStep::linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi) const
 {
 	auto it = constraints_.lower_bound({jlo, 0});
 	for (; it != constraints_.end() && it->first.first <= jhi; ++it)
-		if (it->first.second >= ilo && it->first.second <= ihi) return true;
+		if (it->first.second >= ilo && it->first.second <= ihi && fixesPlace(it->second)) return true;
 	return false;
+}
+
+// A corridor-degenerate edge leaves the position along the corridor open, a rejected one
+// says nothing: with loop_search_weak_links such links do not spare a pair the loop search.
+bool MStep::fixesPlace(const Constraint& c) const
+{
+	return !cfg_.mstep.loopSearchWeakLinks ||
+		   (!c.rejected && c.degeneracy >= cfg_.matcher.degenerateRatio);
 }
 
 // Loop search: for each pose, every earlier pass within the window (its nearest
 // pose) that no edge links to the pose's neighbourhood yet.
-std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, MStepReport& rep)
+std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& added,
+										MStepReport& rep)
 {
 	std::vector<EdgeKey> fresh;
 	const double R = cfg_.mstep.loopSearchMaxRadius;
@@ -409,8 +418,21 @@ std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, 
 	// (its neighbours' edges then support it in verifyOverlaps)
 	for (Constraint& c : found)
 	{
-		fresh.push_back({c.from, c.to});
-		constraints_[fresh.back()] = std::move(c);
+		const EdgeKey key{c.from, c.to};
+		auto old = constraints_.find(key);
+		if (old != constraints_.end())  // a weak edge of the same pair: replaced unless unverified
+		{
+			if (std::find(added.begin(), added.end(), key) == added.end())
+			{
+				replaced_[key] = std::move(old->second);
+				++rep.recomputed;
+				fresh.push_back(key);
+			}  // (else an overlap edge added in this step, already to be verified)
+			old->second = std::move(c);
+			continue;
+		}
+		fresh.push_back(key);
+		constraints_[key] = std::move(c);
 		++rep.added;
 	}
 	return fresh;
@@ -453,10 +475,18 @@ void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh
 	for (const EdgeKey& k : drop)
 	{
 		failed_[k] = {se2::relative(poses[k.first], poses[k.second]), sigs_[k.first], sigs_[k.second]};
+		++rep.unverified;
+		auto r = replaced_.find(k);
+		if (r != replaced_.end())
+		{
+			constraints_[k] = std::move(r->second);  // the weak edge it replaced stays
+			--rep.recomputed;
+			continue;
+		}
 		constraints_.erase(k);
 		--rep.added;
-		++rep.unverified;
 	}
+	replaced_.clear();
 }
 
 void MStep::optimise(Poses& poses, MStepReport& rep)
@@ -515,7 +545,7 @@ MStepReport MStep::run(const Scans& scans, Poses& poses)
 		addSequential(scans, poses, rep);
 	}
 	auto fresh = addOverlaps(scans, poses, rep);
-	const auto found = searchLoops(scans, poses, rep);
+	const auto found = searchLoops(scans, poses, fresh, rep);
 	fresh.insert(fresh.end(), found.begin(), found.end());
 	verifyOverlaps(poses, fresh, rep);
 	rep.registrationSeconds = secondsSince(t0);

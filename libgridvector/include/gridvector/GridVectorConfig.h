@@ -209,6 +209,7 @@ struct MStepOptions
 	double loopSearchMinShare = 0.4;  //!< matched share of the shorter scan's static length for a loop edge
 	double loopSearchAmbiguity = 0.7;  //!< a distinct solution matching this share of the best's length makes the place ambiguous
 	double loopSearchDistinct = 0.3;  //!< solutions further apart than this are distinct [m]
+	bool loopSearchWeakLinks = true;  //!< passes linked only by corridor-degenerate or rejected edges are still searched
 
 	template <class V>
 	void visit(V&& v)
@@ -234,6 +235,7 @@ struct MStepOptions
 		v("loop_search_min_share", loopSearchMinShare, "Matched share of the shorter scan's static length needed for a loop edge");
 		v("loop_search_ambiguity", loopSearchAmbiguity, "A loop edge is rejected as ambiguous when a distinct solution matches at least this share of the best one's length");
 		v("loop_search_distinct", loopSearchDistinct, "Loop-search solutions further apart than this are distinct [m]");
+		v("loop_search_weak_links", loopSearchWeakLinks, "The loop search also runs between passes that only edges with a degenerate translation (below matcher.degenerate_ratio: a corridor slide) or rejected edges link; false: any edge spares the pair");
 	}
 };
 

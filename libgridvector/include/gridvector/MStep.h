@@ -90,14 +90,18 @@ class MStep
 	/** Returns the keys of the edges it added. */
 	std::vector<EdgeKey> addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep);
 	/** Loop search (LoopSearch) between poses near each other with no edge between
-	 * their passes yet; returns the keys of the edges it added. */
-	std::vector<EdgeKey> searchLoops(const Scans& scans, const Poses& poses, MStepReport& rep);
+	 * their passes yet (or only weak ones, mstep.loop_search_weak_links); returns the keys
+	 * of the edges it added or replaced (`added`: the overlap edges added in this step). */
+	std::vector<EdgeKey> searchLoops(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& added,
+									 MStepReport& rep);
 	/** Loop-search window of the pair from the odometry model along the path between them. */
 	LoopWindow windowOf(uint32_t from, uint32_t to) const;
 	/** Was i searched against a j in [jlo, jhi] from (nearly) its current relative pose? */
 	bool searchedNear(uint32_t i, uint32_t jlo, uint32_t jhi, const Poses& poses) const;
-	/** Is there an edge (j, i) with j in [jlo, jhi] and i in [ilo, ihi]? */
+	/** Is there an edge (j, i) with j in [jlo, jhi] and i in [ilo, ihi] that fixes the place? */
 	bool linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi) const;
+	/** Does this edge fix the relative place (see mstep.loop_search_weak_links)? */
+	bool fixesPlace(const Constraint& c) const;
 	void verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh, MStepReport& rep);
 	void optimise(Poses& poses, MStepReport& rep);
 
@@ -132,6 +136,7 @@ class MStep
 	};
 	std::map<EdgeKey, Failure> failed_;  //!< failed registrations, retried when something changed
 	std::vector<uint64_t> sigs_;  //!< per scan: signature of its static vector ids
+	std::map<EdgeKey, Constraint> replaced_;  //!< weak edges a loop edge replaced, until it is verified
 	bool started_ = false;
 	std::function<void(const char*, double)> progress_;
 	void report(const char* stage, size_t i, size_t n) const

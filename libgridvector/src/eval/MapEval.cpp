@@ -119,12 +119,12 @@ std::vector<MapVector> readVectors(const std::string& path)
 		v.seg = {io::parseDouble(t[0], pos, "x1"), io::parseDouble(t[1], pos, "y1"), io::parseDouble(t[2], pos, "x2"),
 				 io::parseDouble(t[3], pos, "y2")};
 		v.pStatic = io::parseDouble(t[4], pos, "p_static");
-		if (v.pStatic < 0 || v.pStatic > 1) io::parseError(pos, "p_static is " + std::string(t[4]) + " (must be in [0, 1])");
+		if (v.pStatic < 0 || v.pStatic > 1) io::parseError(pos, "p_static is " + io::printableToken(t[4]) + " (must be in [0, 1])");
 		v.isStatic = v.pStatic >= 0.5;
 		if (t.size() == 6)
 		{
 			if (t[5] != "static" && t[5] != "dynamic")
-				io::parseError(pos, "label is '" + std::string(t[5]) + "' (expected static or dynamic)");
+				io::parseError(pos, "label is '" + io::printableToken(t[5]) + "' (expected static or dynamic)");
 			v.isStatic = t[5] == "static";
 		}
 		out.push_back(v);

@@ -158,7 +158,7 @@ HitKind hitKind(std::string_view k, const TextPos& pos)
 	if (k == "person") return HitKind::Person;
 	if (k == "door") return HitKind::Door;
 	if (k == "object") return HitKind::Object;
-	io::parseError(pos, "unknown hit kind '" + std::string(k) + "'");
+	io::parseError(pos, "unknown hit kind '" + io::printableToken(k) + "'");
 }
 
 void readDynamicLine(const Tokens& t, const TextPos& pos, Truth& out)
@@ -188,7 +188,7 @@ void readDynamicLine(const Tokens& t, const TextPos& pos, Truth& out)
 		h.beams = int(io::parseInt(t[8], pos, "beams", 1, 1000000));
 		return out.hits.push_back(h);
 	}
-	io::parseError(pos, "unknown record '" + std::string(t[0]) + "'");
+	io::parseError(pos, "unknown record '" + io::printableToken(t[0]) + "'");
 }
 }  // namespace
 

@@ -66,7 +66,7 @@ int run(const io::ArgParser& args)
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
 	if (args.has("max-iterations")) cfg.mstep.maxIterations = int(args.getInt("max-iterations", 10, 1, 1000));
 	const std::string input = args.get("input"), dir = args.get("out") + "/";
-	io::ensureWritableDirectory(args.get("out"));
+	io::OutputDirectory outDir(args.get("out"));  // checked now, created when there is something to write
 
 	app::RunFigures fig;
 	fig.input = input;
@@ -118,6 +118,7 @@ int run(const io::ArgParser& args)
 
 	// outputs
 	t1 = Clock::now();
+	outDir.create();
 	io::Trajectory traj;
 	for (size_t t = 0; t < res.poses.size(); ++t) traj.emplace_back(log.scans[t].timestamp, res.poses[t]);
 	io::writeTrajectory(dir + "trajectory.txt", traj);

@@ -291,7 +291,7 @@ int run(const Settings& s, DeciderRegistry& reg)
 	const GeneralConfig gc(ini);
 	const GridVectorConfig mapConfig = validateGridVectorSections(ini, s);
 	const std::string dir = s.outDir.empty() ? gc.outputDir : s.outDir;
-	io::ensureWritableDirectory(dir);
+	io::OutputDirectory outDir(dir);  // checked now, created when the engine has results
 
 	// the engine does not own its deciders: they must outlive it
 	std::unique_ptr<mrpt::graphslam::deciders::CNodeRegistrationDecider<graph_t>> nrd(
@@ -316,7 +316,7 @@ int run(const Settings& s, DeciderRegistry& reg)
 	const auto t0 = std::chrono::steady_clock::now();
 	const size_t steps = feed(s.rawlog, engine, rec);
 	const double slamSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-	writeEngineOutputs(engine, gc, dir);
+	writeEngineOutputs(engine, gc, outDir.create());
 
 	graph_t graph = engine.getGraph();
 	if (s.finalOptimization && graph.edgeCount() > 0)

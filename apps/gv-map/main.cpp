@@ -69,7 +69,7 @@ int run(const io::ArgParser& args)
 	const bool quiet = args.has("quiet");
 	GridVectorConfig cfg;
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
-	io::ensureWritableDirectory(out);
+	io::OutputDirectory outDir(out);  // checked now, created when the map is ready
 
 	io::ReadOptions ro;
 	ro.quiet = quiet;
@@ -97,7 +97,7 @@ int run(const io::ArgParser& args)
 
 	const auto& vectors = map.vectors();
 	const auto grid = OccupancyConversion::toOccupancyGrid(vectors, cfg.occupancy);
-	const std::string dir = out + "/";
+	const std::string dir = outDir.create() + "/";
 	map.saveToFile(dir + "map.gvmap");
 	MapExport::writeVectorsText(vectors, dir + "vectors.txt");
 	MapExport::writeSvg(vectors, dir + "vectors.svg");

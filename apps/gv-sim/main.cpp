@@ -150,14 +150,14 @@ int main(int argc, char** argv)
 			args.fail(std::string("--") + dashed(e.what()));
 		}
 		const std::string dir = args.get("out", "gv-sim-" + opt.world + "-seed" + std::to_string(opt.seed));
-		io::ensureWritableDirectory(dir);  // fail before simulating
+		io::OutputDirectory outDir(dir);  // fail before simulating, create when writing
 		const bool quiet = args.has("quiet");
 		const auto t0 = std::chrono::steady_clock::now();
 		io::Progress progress("simulating " + opt.world, quiet);
 		const sim::SimResult r = sim::simulate(opt, [&](double f) { progress.update(f, size_t(f * 100)); });
 		progress.done();
 		const auto tSim = std::chrono::steady_clock::now();
-		sim::writeSimulation(r, dir);
+		sim::writeSimulation(r, outDir.create());
 		const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 		if (!quiet) printSummary(r, dir, secs);
 		if (args.has("peer-timing"))

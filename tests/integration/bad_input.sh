@@ -4,7 +4,7 @@
 # truncated/corrupt gzip logs, inf/negative ranges, empty scans, unknown config keys,
 # unwritable output, missing input, garbage trajectories and .gvmap files.
 # Every case: exit 1 (2 for bad usage), one stderr line naming the file, no control
-# bytes, no crash, no output file and no temporary file left behind.
+# bytes, no crash, no output file, no temporary file and no new (empty) output directory left behind.
 set -euo pipefail
 W=$(mktemp -d); trap 'rm -rf "$W"' EXIT
 cd "$W"
@@ -43,10 +43,14 @@ head -c $(( $(stat -c %s ok/map.gvmap) / 2 )) ok/map.gvmap > trunc.gvmap
 INI="$GV_SOURCE_DIR/share/gridvector/graphslam-gridvector.ini"
 
 n=0
-# expect STATUS WORD OUTPUT -- command...: exit STATUS, one stderr line containing WORD, OUTPUT not created
+# expect STATUS WORD OUTPUT -- command...: exit STATUS, one stderr line containing WORD, OUTPUT not created,
+# no new directory
 expect() {
   local status=$1 word=$2 output=$3; shift 4
+  find . -type d | sort > dirs.before
   set +e; "$@" > out.txt 2> err.txt; local rc=$?; set -e
+  find . -type d | sort | comm -13 dirs.before - > dirs.new
+  [ ! -s dirs.new ] || fail "directories left behind by: $* -> $(tr '\n' ' ' < dirs.new)"
   [ "$rc" -eq "$status" ] || fail "exit $rc (want $status) for: $* -> $(head -c 400 err.txt)"
   [ "$(grep -c . err.txt)" -eq 1 ] || fail "not one line for: $* -> $(cat err.txt)"
   grep -qF -- "$word" err.txt || fail "'$word' not named for: $* -> $(cat err.txt)"
@@ -71,7 +75,10 @@ expect 1 "empty.log: no laser scans" e5/report.json -- "$B/gv-em-slam" --input e
 expect 1 "empty.log: no odometry" - -- "$B/gv-eval" traj empty.log traj.txt
 expect 1 "trunc.rawlog: truncated or corrupt gzip data" o6/map.gvmap -- "$B/gv-map" --input trunc.rawlog --poses log --out o6 --quiet
 expect 1 "trunc.rawlog: entry" g6/trajectory.txt -- "$B/gv-graphslam" --2d -i "$INI" -r trunc.rawlog --disable-visuals --output-dir g6
-# missing input
+# missing input (a nested output directory is not created either)
+expect 1 "missing.log: cannot read" - -- "$B/gv-map" --input missing.log --poses log --out n1/a/b --quiet
+expect 1 "missing.log: cannot read" - -- "$B/gv-em-slam" --input missing.log --out n2/a --quiet
+expect 1 "missing.rawlog" - -- "$B/gv-graphslam" --2d -i "$INI" -r missing.rawlog --disable-visuals --output-dir n3/a
 expect 1 "missing.log: cannot read" b7.log -- "$B/gv-bench-log" missing.log b7 --quiet
 expect 1 "missing.log: cannot read" - -- "$B/gv-bench-extract" missing.log
 expect 1 "missing.txt: cannot read" - -- "$B/gv-eval" traj traj.txt missing.txt
@@ -92,6 +99,9 @@ expect 1 "room.log/x.rawlog: cannot write (Not a directory)" - -- "$B/gv-carmen2
 expect 1 "room.log/b.log: cannot write (Not a directory)" - -- "$B/gv-bench-log" room.log room.log/b --quiet
 expect 1 "room.log/m.gvmap: cannot write (Not a directory)" - -- "$B/gv-map-info" ok/map.gvmap --save room.log/m.gvmap
 expect 1 "room.log/x: cannot write (Not a directory)" - -- "$B/gv-graphslam" --2d -i "$INI" -r room.rawlog --disable-visuals --output-dir room.log/x
+# the converters create no directories
+expect 1 "nodir/x.rawlog: cannot write (No such file or directory)" - -- "$B/gv-carmen2rawlog" room.log nodir/x.rawlog --quiet
+expect 1 "nodir/b.log: cannot write (No such file or directory)" - -- "$B/gv-bench-log" room.log nodir/b --quiet
 # garbage trajectories (MRPT's own ground-truth reader would crash on the last one)
 expect 1 "garbage.txt:1: expected 't x y theta', found 2 fields" o9/map.gvmap -- "$B/gv-map" --input room.log --poses garbage.txt --out o9 --quiet
 expect 1 "nantraj.txt:1: x is 'nan'" e9/report.json -- "$B/gv-em-slam" --input room.log --init nantraj.txt --out e9 --quiet

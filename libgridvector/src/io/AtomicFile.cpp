@@ -91,4 +91,50 @@ void ensureWritableDirectory(const std::string& dir)
 		throw std::runtime_error(dir + ": cannot write (" + errnoText() + ")");
 }
 
+namespace
+{
+/** dir without a trailing separator ("out/" -> "out"); "" is the current directory. */
+fs::path directoryPath(const std::string& dir)
+{
+	fs::path p(dir.empty() ? "." : dir);
+	return p.has_filename() ? p : p.parent_path();
+}
+
+/** The missing directories on the way to dir, deepest first. */
+std::vector<fs::path> missingDirectories(const fs::path& dir)
+{
+	std::vector<fs::path> out;
+	std::error_code ec;
+	for (fs::path p = dir; !p.empty() && !fs::exists(p, ec); p = p.parent_path()) out.push_back(p);
+	return out;
+}
+}  // namespace
+
+void checkWritableDirectory(const std::string& dir)
+{
+	const fs::path p = directoryPath(dir);
+	const auto missing = missingDirectories(p);
+	fs::path existing = missing.empty() ? p : missing.back().parent_path();
+	if (existing.empty()) existing = ".";
+	if (!fs::is_directory(existing)) throw std::runtime_error(dir + ": cannot write (" + std::strerror(ENOTDIR) + ")");
+	if (::access(existing.c_str(), W_OK | X_OK) != 0)
+		throw std::runtime_error(dir + ": cannot write (" + errnoText() + ")");
+}
+
+OutputDirectory::OutputDirectory(std::string dir) : dir_(std::move(dir)) { checkWritableDirectory(dir_); }
+
+const std::string& OutputDirectory::create()
+{
+	for (const auto& p : missingDirectories(directoryPath(dir_))) created_.push_back(p.string());
+	ensureWritableDirectory(dir_);
+	return dir_;
+}
+
+OutputDirectory::~OutputDirectory()
+{
+	std::error_code ec;
+	for (const auto& d : created_)
+		if (fs::exists(d, ec) && (!fs::is_empty(d, ec) || ec || !fs::remove(d, ec))) break;
+}
+
 }  // namespace gridvector::io

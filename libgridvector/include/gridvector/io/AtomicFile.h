@@ -5,6 +5,7 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace gridvector::io
 {
@@ -52,5 +53,32 @@ void writeFileAtomically(const std::string& path, const std::function<void(std::
 
 /** Throws "dir: cannot write (reason)" unless dir exists (or can be created) and is writable. */
 void ensureWritableDirectory(const std::string& dir);
+
+/** As ensureWritableDirectory, but creates nothing: dir is a writable directory, or its nearest
+ * existing ancestor is one (so that dir can be created). */
+void checkWritableDirectory(const std::string& dir);
+
+/** A tool's output directory, created only when there is something to write into it.
+ *
+ * The constructor checks that dir can be written (checkWritableDirectory: a run fails before its
+ * work, not after); create() makes it just before the first output file. If the run fails after
+ * create() (an exception before any file was committed), the destructor removes the directories
+ * create() made that are still empty: a failed run leaves no new empty directory behind. */
+class OutputDirectory
+{
+   public:
+	explicit OutputDirectory(std::string dir);
+	~OutputDirectory();
+	OutputDirectory(const OutputDirectory&) = delete;
+	OutputDirectory& operator=(const OutputDirectory&) = delete;
+
+	/** Creates the directory (and missing parents) if needed; returns path(). */
+	const std::string& create();
+	const std::string& path() const { return dir_; }
+
+   private:
+	std::string dir_;
+	std::vector<std::string> created_;  //!< made by create(), deepest first
+};
 
 }  // namespace gridvector::io

@@ -1,0 +1,75 @@
+// io::OutputDirectory: checked before the work, created only to write, removed again if the run wrote nothing.
+#include <gridvector/io/AtomicFile.h>
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <string>
+
+namespace fs = std::filesystem;
+using gridvector::io::OutputDirectory;
+
+namespace
+{
+struct TempDir
+{
+	fs::path path = fs::temp_directory_path() / ("gv_outdir_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
+												 "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+	TempDir() { fs::create_directories(path); }
+	~TempDir() { fs::remove_all(path); }
+	std::string operator/(const std::string& s) const { return (path / s).string(); }
+};
+}  // namespace
+
+TEST(OutputDirectory, CheckingCreatesNothing)
+{
+	TempDir t;
+	{
+		OutputDirectory d(t / "a/b/c");
+		EXPECT_FALSE(fs::exists(t / "a"));
+	}
+	EXPECT_FALSE(fs::exists(t / "a"));
+}
+
+TEST(OutputDirectory, UnwritablePlacesFailBeforeTheWork)
+{
+	TempDir t;
+	std::ofstream(t / "file") << "x";
+	try
+	{
+		OutputDirectory d(t / "file/out");
+		FAIL() << "no error for a directory below a file";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), t / "file/out" + ": cannot write (Not a directory)");
+	}
+	EXPECT_THROW(OutputDirectory(t / "file"), std::runtime_error);
+	EXPECT_NO_THROW(OutputDirectory(t.path.string()));
+	EXPECT_NO_THROW(OutputDirectory(t / "new/"));
+}
+
+TEST(OutputDirectory, CreatedButUnusedDirectoriesAreRemoved)
+{
+	TempDir t;
+	fs::create_directories(t / "a");
+	{
+		OutputDirectory d(t / "a/b/c/");
+		EXPECT_EQ(d.create(), t / "a/b/c/");
+		EXPECT_TRUE(fs::is_directory(t / "a/b/c"));
+	}  // a failed run: nothing written
+	EXPECT_FALSE(fs::exists(t / "a/b"));
+	EXPECT_TRUE(fs::is_directory(t / "a"));  // existed before: kept
+}
+
+TEST(OutputDirectory, DirectoriesWithOutputsAreKept)
+{
+	TempDir t;
+	{
+		OutputDirectory d(t / "a/b");
+		std::ofstream(d.create() + "/out.txt") << "result";
+	}
+	EXPECT_TRUE(fs::exists(t / "a/b/out.txt"));
+}

@@ -3,6 +3,8 @@
 #include <mrpt/config/CConfigFileMemory.h>
 
 #include <cmath>
+#include <cstring>
+#include <limits>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -145,6 +147,33 @@ TEST(GridVectorConfig, JsonHasEveryGroupAndKey)
 	EXPECT_NE(j.find("\"merge_on_insert\": true"), std::string::npos) << j;
 	for (const auto& [name, value] : c.namedValues())
 		EXPECT_NE(j.find("\"" + name.substr(name.find('.') + 1) + "\": "), std::string::npos) << name;
+}
+
+TEST(GridVectorConfig, JsonHasNoInfOrNan)
+{
+	GridVectorConfig c;
+	c.extraction.minLength = std::numeric_limits<double>::infinity();
+	c.grid.resolution = -std::numeric_limits<double>::infinity();
+	c.occupancy.resolution = std::nan("");
+	const std::string j = c.toJson();
+	EXPECT_NE(j.find("\"min_length\": null,"), std::string::npos) << j;
+	for (const char* bad : {"inf", "nan", "Infinity", "NaN"})
+		EXPECT_EQ(j.find(std::string(": ") + bad), std::string::npos) << bad << " in " << j;
+	for (const char* bad : {": -inf", ": -Infinity"}) EXPECT_EQ(j.find(bad), std::string::npos) << j;
+	// every value is a JSON number, true, false or null
+	size_t values = 0;
+	for (size_t p = j.find("\": "); p != std::string::npos; p = j.find("\": ", p + 1))
+	{
+		const std::string rest = j.substr(p + 3);
+		if (rest[0] == '{') continue;  // a group
+		++values;
+		const bool literal = rest.rfind("true", 0) == 0 || rest.rfind("false", 0) == 0 || rest.rfind("null", 0) == 0;
+		EXPECT_TRUE(literal || std::strchr("-0123456789", rest[0]) != nullptr) << rest.substr(0, 20);
+	}
+	EXPECT_EQ(values, c.namedValues().size());
+	size_t nulls = 0;
+	for (size_t p = j.find(": null"); p != std::string::npos; p = j.find(": null", p + 1)) ++nulls;
+	EXPECT_EQ(nulls, 3u) << j;
 }
 
 TEST(GridVectorConfig, ValuesThatAreNotNumbersAreErrorsNamingSectionKeyAndValue)

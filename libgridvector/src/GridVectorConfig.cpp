@@ -258,7 +258,8 @@ std::string GridVectorConfig::toJson() const
 		g.visit([&](const char* key, auto& field, const char*) {
 			out << sep << "\"" << key << "\": ";
 			if constexpr (std::is_same_v<std::decay_t<decltype(field)>, bool>) out << (field ? "true" : "false");
-			else out << shortest(double(field));
+			else if (std::isfinite(double(field))) out << shortest(double(field));
+			else out << "null";  // JSON has no inf/nan
 			sep = ", ";
 		});
 		out << "}";

@@ -335,7 +335,8 @@ struct GridVectorConfig
 	/** Sets "group.key" (e.g. "grid.resolution"). Returns false if this version has no such key;
 	 * throws std::invalid_argument if the value does not fit the key's type (int, bool). */
 	bool setNamedValue(const std::string& name, double value);
-	/** {"extraction": {"min_range": 0.02, ...}, ...}: every key, bools as true/false. */
+	/** {"extraction": {"min_range": 0.02, ...}, ...}: every key, bools as true/false, a non-finite value
+	 * (set in code; an .ini cannot give one) as null: always valid JSON. */
 	std::string toJson() const;
 };
 

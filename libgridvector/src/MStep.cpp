@@ -489,6 +489,25 @@ void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh
 	replaced_.clear();
 }
 
+// Eq. 24-25 for rejections: a pair rejected reconsider_limit times with the same
+// correspondences stays out, also when re-registered with the same correspondences
+// (else the edges flip in and out and EM never converges); other correspondences
+// (a changed data association) start the count again.
+bool MStep::rejectionStands(const EdgeKey& key, const Constraint& c) const
+{
+	if (cfg_.mstep.reconsiderLimit <= 0) return false;
+	auto r = rejections_.find(key);
+	return r != rejections_.end() && r->second.count >= cfg_.mstep.reconsiderLimit &&
+		   r->second.correspondences == c.correspondences;
+}
+
+void MStep::countRejection(const EdgeKey& key, const Constraint& c)
+{
+	Rejections& r = rejections_[key];
+	if (r.correspondences != c.correspondences) r = {0, c.correspondences};
+	++r.count;
+}
+
 void MStep::optimise(Poses& poses, MStepReport& rep)
 {
 	graph_.setNodes(poses);
@@ -506,8 +525,9 @@ void MStep::optimise(Poses& poses, MStepReport& rep)
 	std::vector<Constraint*> byEdge(graph_.edges().size(), nullptr);
 	for (auto& [key, c] : constraints_)
 	{
-		// switchable behaviour: an edge rejected against an earlier estimate gets another chance
-		if (cfg_.mstep.reconsiderRejected) c.rejected = false;
+		// switchable behaviour: an edge rejected against an earlier estimate gets another
+		// chance, unless it was rejected reconsider_limit times with these correspondences
+		if (cfg_.mstep.reconsiderRejected) c.rejected = rejectionStands(key, c);
 		if (c.rejected) continue;
 		PoseEdge e;
 		e.from = c.from;
@@ -520,7 +540,11 @@ void MStep::optimise(Poses& poses, MStepReport& rep)
 	}
 	rep.optimisation = graph_.optimize();
 	for (size_t k = 0; k < byEdge.size(); ++k)
-		if (byEdge[k] && !graph_.edges()[k].active) byEdge[k]->rejected = true;
+		if (byEdge[k] && !graph_.edges()[k].active)
+		{
+			byEdge[k]->rejected = true;
+			countRejection({byEdge[k]->from, byEdge[k]->to}, *byEdge[k]);
+		}
 	poses = graph_.nodes();
 }
 

@@ -136,6 +136,17 @@ class MStep
 	};
 	std::map<EdgeKey, Failure> failed_;  //!< failed registrations, retried when something changed
 	std::vector<uint64_t> sigs_;  //!< per scan: signature of its static vector ids
+	/** Per pair: chi2 rejections since its correspondences last changed (mstep.reconsider_limit). */
+	struct Rejections
+	{
+		int count = 0;
+		std::vector<VectorPair> correspondences;
+	};
+	std::map<EdgeKey, Rejections> rejections_;
+	/** Was the pair rejected mstep.reconsider_limit times with these correspondences? */
+	bool rejectionStands(const EdgeKey& key, const Constraint& c) const;
+	/** Counts a rejection of the pair (reset when its correspondences differ from the last rejection's). */
+	void countRejection(const EdgeKey& key, const Constraint& c);
 	std::map<EdgeKey, Constraint> replaced_;  //!< weak edges a loop edge replaced, until it is verified
 	bool started_ = false;
 	std::function<void(const char*, double)> progress_;

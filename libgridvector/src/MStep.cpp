@@ -492,7 +492,8 @@ void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh
 // Eq. 24-25 for rejections: a pair rejected reconsider_limit times with the same
 // correspondences stays out, also when re-registered with the same correspondences
 // (else the edges flip in and out and EM never converges); other correspondences
-// (a changed data association) start the count again.
+// (a changed data association) start the count again. Rejections of the first
+// reconsider_free_steps M-steps (raw chain, first loop closures) do not count.
 bool MStep::rejectionStands(const EdgeKey& key, const Constraint& c) const
 {
 	if (cfg_.mstep.reconsiderLimit <= 0) return false;
@@ -543,7 +544,7 @@ void MStep::optimise(Poses& poses, MStepReport& rep)
 		if (byEdge[k] && !graph_.edges()[k].active)
 		{
 			byEdge[k]->rejected = true;
-			countRejection({byEdge[k]->from, byEdge[k]->to}, *byEdge[k]);
+			if (steps_ > cfg_.mstep.reconsiderFreeSteps) countRejection({byEdge[k]->from, byEdge[k]->to}, *byEdge[k]);
 		}
 	poses = graph_.nodes();
 }
@@ -552,6 +553,7 @@ MStepReport MStep::run(const Scans& scans, Poses& poses)
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	MStepReport rep;
+	++steps_;
 	if (odometry_.size() != scans.size())
 		throw std::invalid_argument("MStep: odometry and scans differ in length");
 	const size_t before = constraints_.size();

@@ -202,6 +202,7 @@ struct MStepOptions
 	double passHeadingWeight = 1.0;  //!< an earlier pass's candidate pose: nearest in position + this x heading difference [m/rad]
 	bool reconsiderRejected = true;  //!< edges rejected by the chi2 test return to the optimiser at the next M-step
 	int reconsiderLimit = 2;  //!< ... until a pair has been rejected this many times with the same correspondences
+	int reconsiderFreeSteps = 2;  //!< rejections in the first this many M-steps do not count towards reconsider_limit
 	bool loopSearch = true;  //!< search loop closures from vector corners within a window growing with the pose uncertainty
 	double loopSearchSigmas = 3.0;  //!< window half-size in odometry-model standard deviations of the path between the poses
 	double loopSearchMaxRadius = 8.0;  //!< the translation window never exceeds this [m]
@@ -229,6 +230,7 @@ struct MStepOptions
 		v("pass_heading_weight", passHeadingWeight, "Overlap and loop search: the candidate pose of an earlier pass is the one nearest in position + this x heading difference (a scan sees what lies ahead of it; 0: position only) [m/rad]");
 		v("reconsider_rejected", reconsiderRejected, "Edges the pose graph rejected by their chi2 return to the optimiser at every M-step (switchable-constraint behaviour: an edge rejected against a wrong estimate can come back once the estimate has moved); false: a rejection stands until its scans' static vectors change");
 		v("reconsider_limit", reconsiderLimit, "With reconsider_rejected: a pair the chi2 test rejected this many times with the same vector correspondences stays out until a re-registration changes them (Eq. 24-25; stops edges flipping in and out between EM iterations); 0: no limit");
+		v("reconsider_free_steps", reconsiderFreeSteps, "Rejections in the first this many M-steps (while the estimate still moves from the raw chain and the first loop closures) do not count towards reconsider_limit");
 		v("loop_search", loopSearch, "Search loop closures from vector corners within a window growing with the pose uncertainty");
 		v("loop_search_sigmas", loopSearchSigmas, "Loop-search window half-size in odometry-model standard deviations of the path between the two poses");
 		v("loop_search_max_radius", loopSearchMaxRadius, "Largest loop-search translation window (and candidate distance) [m]");

@@ -149,6 +149,7 @@ class MStep
 	void countRejection(const EdgeKey& key, const Constraint& c);
 	std::map<EdgeKey, Constraint> replaced_;  //!< weak edges a loop edge replaced, until it is verified
 	bool started_ = false;
+	int steps_ = 0;  //!< M-steps run
 	std::function<void(const char*, double)> progress_;
 	void report(const char* stage, size_t i, size_t n) const
 	{

@@ -349,10 +349,10 @@ TEST(GlobalMap, NoisyPassesOfOneWallEndAsOneVector)
 	{
 		const bool s = std::abs(v.centre().y + 1.2) < 0.2, n = std::abs(v.centre().y - 1.2) < 0.2;
 		south += s, north += n;
-		if (s || n) EXPECT_GT(v.length(), 11.5);
+		if (s || n) { EXPECT_GT(v.length(), 11.5); }
 		// no drift: the merged walls keep the walls' direction
-		if (s) EXPECT_LT(std::abs(mrpt::math::wrapToPi(v.psi())), 0.5 * M_PI / 180) << v.psi();
-		if (n) EXPECT_LT(std::abs(mrpt::math::wrapToPi(v.psi() - M_PI)), 0.5 * M_PI / 180) << v.psi();
+		if (s) { EXPECT_LT(std::abs(mrpt::math::wrapToPi(v.psi())), 0.5 * M_PI / 180) << v.psi(); }
+		if (n) { EXPECT_LT(std::abs(mrpt::math::wrapToPi(v.psi() - M_PI)), 0.5 * M_PI / 180) << v.psi(); }
 	}
 	EXPECT_EQ(south, 1);
 	EXPECT_EQ(north, 1);

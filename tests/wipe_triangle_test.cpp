@@ -151,5 +151,8 @@ TEST(WipeTriangle, MissesOnlyBoxesBeyondAnEdge)
 	// never rejects a box holding a point the triangle classifies as b or c
 	for (double x = -0.5; x <= 2.5; x += 0.05)
 		for (double y = -1.5; y <= 1.5; y += 0.05)
-			if (tri.classify({x, y}) != WipePart::Outside) EXPECT_FALSE(tri.misses(x - 0.01, y - 0.01, x + 0.01, y + 0.01));
+			if (tri.classify({x, y}) != WipePart::Outside)
+			{
+				EXPECT_FALSE(tri.misses(x - 0.01, y - 0.01, x + 0.01, y + 0.01));
+			}
 }

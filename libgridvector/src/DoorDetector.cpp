@@ -54,6 +54,19 @@ double bendDeg(double leafAngle, const GridVector& wall)
 	const double turn = std::abs(mrpt::math::wrapToPi(leafAngle - wall.psi()));
 	return std::min(turn, M_PI - turn) * 180 / M_PI;
 }
+
+/** Wall s and candidate d meeting at `vertex`, the leaf pointing to `tip`. */
+Corner cornerAt(const std::vector<GridVector>& v, size_t s, size_t d, const TPoint2D& vertex, const TPoint2D& tip)
+{
+	Corner c;
+	c.wall = s;
+	c.leaf = d;
+	c.dynamicLeaf = v[d].state == VectorState::Dynamic;
+	c.vertex = vertex;
+	c.leafAngle = std::atan2(tip.y - vertex.y, tip.x - vertex.x);
+	c.leafLength = v[d].length();
+	return c;
+}
 }  // namespace
 
 // An end of the candidate near an end of the wall. A closed leaf continuing the wall's line that
@@ -70,14 +83,8 @@ bool DoorDetector::endCorner(const std::vector<GridVector>& v, size_t s, size_t 
 			if (g <= best) best = g, end = de;
 		}
 	if (end < 0) return false;
-	Corner c;
-	c.wall = s;
-	c.leaf = d;
-	c.dynamicLeaf = v[d].state == VectorState::Dynamic;
-	c.vertex = end ? v[d].end() : v[d].start();
 	const TPoint2D tip = end ? v[d].start() : v[d].end();
-	c.leafAngle = std::atan2(tip.y - c.vertex.y, tip.x - c.vertex.x);
-	c.leafLength = v[d].length();
+	Corner c = cornerAt(v, s, d, end ? v[d].end() : v[d].start(), tip);
 	if (bendDeg(c.leafAngle, v[s]) < opts_.minCornerAngleDeg)
 	{
 		if (!(c.dynamicLeaf && collinearBeyond(v[s], c.vertex, tip))) return false;
@@ -99,22 +106,15 @@ bool DoorDetector::endCorner(const std::vector<GridVector>& v, size_t s, size_t 
 void DoorDetector::teeCorners(const std::vector<GridVector>& v, size_t s, size_t d, std::vector<Corner>& out) const
 {
 	const double half = v[s].length() / 2;
-	const bool dynamicLeaf = v[d].state == VectorState::Dynamic;
 	for (int de = 0; de < 2; ++de)
 	{
 		const TPoint2D vertex = de ? v[d].end() : v[d].start(), tip = de ? v[d].start() : v[d].end();
 		const auto [along, off] = alongAndOff(v[s], vertex);
 		if (off > opts_.maxTeeOffset || std::abs(along) >= half) continue;
-		Corner c;
-		c.wall = s;
-		c.leaf = d;
-		c.dynamicLeaf = dynamicLeaf;
-		c.vertex = vertex;
-		c.leafAngle = std::atan2(tip.y - vertex.y, tip.x - vertex.x);
-		c.leafLength = v[d].length();
+		Corner c = cornerAt(v, s, d, vertex, tip);
 		c.tee = true;
 		c.alongWall = bendDeg(c.leafAngle, v[s]) < opts_.minCornerAngleDeg;
-		if (c.alongWall && !(dynamicLeaf && alongAndOff(v[s], tip).second <= opts_.maxTeeOffset)) continue;
+		if (c.alongWall && !(c.dynamicLeaf && alongAndOff(v[s], tip).second <= opts_.maxTeeOffset)) continue;
 		out.push_back(c);
 	}
 }

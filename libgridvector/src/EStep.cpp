@@ -173,16 +173,15 @@ std::vector<GridVector> EStep::splitSpans(const GridVector& v,
 										  const std::vector<std::pair<double, double>>& dynamicSpans) const
 {
 	const bool vStatic = v.state != VectorState::Dynamic;
-	std::vector<ProfilePiece> ps;
+	std::vector<double> staticCols(size_t(v.cols()));  // 1: static column, 0: dynamic
 	for (int c = 0; c < v.cols(); ++c)
 	{
 		const double u = (c + 0.5) * v.resolution();
 		const bool inSpan = std::any_of(dynamicSpans.begin(), dynamicSpans.end(),
 										[&](const auto& s) { return u >= s.first && u <= s.second; });
-		const bool st = vStatic && !inSpan;
-		if (ps.empty() || ps.back().isStatic != st) ps.push_back({c, c + 1, st});
-		else ps.back().last = c + 1;
+		staticCols[size_t(c)] = vStatic && !inSpan ? 1.0 : 0.0;
 	}
+	const std::vector<ProfilePiece> ps = pieces(staticCols, 0.5, 1);  // runs, none merged away
 	if (ps.size() <= 1)
 	{
 		GridVector one = v;

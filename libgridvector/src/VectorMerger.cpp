@@ -296,6 +296,7 @@ double VectorMerger::wallOffset(const std::vector<const GridVector*>& parts) con
 	return maxColumnOffset(temp, fitTemp(temp, referenceOf(parts), true));
 }
 
+// Algorithm 2.
 GridVector VectorMerger::merge(const std::vector<const GridVector*>& parts) const
 {
 	checkParts(parts);
@@ -304,6 +305,7 @@ GridVector VectorMerger::merge(const std::vector<const GridVector*>& parts) cons
 	return mergeFitted(cfg_, parts, temp, fitTemp(temp, referenceOf(parts), true));
 }
 
+// Algorithm 2, refused when the fitted line leaves the parts' wall (map.merge_holds_wall).
 bool VectorMerger::tryMerge(const std::vector<const GridVector*>& parts, GridVector& out) const
 {
 	checkParts(parts);

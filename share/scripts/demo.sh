@@ -3,8 +3,8 @@
 # swinging doors, a moved object), map it with EM-SLAM from noisy odometry, score it
 # against the simulator's ground truth, and say where everything was written.
 set -euo pipefail
-cd "$(dirname "$0")/.."
-bash scripts/install-deps.sh
+cd "$(dirname "$0")/../.."
+bash share/scripts/install-deps.sh
 BUILD=${BUILD_DIR:-build}
 cmake -S . -B "$BUILD" -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build "$BUILD" -j 2 --target gv-sim gv-em-slam gv-eval >/dev/null

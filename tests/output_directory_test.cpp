@@ -73,3 +73,39 @@ TEST(OutputDirectory, DirectoriesWithOutputsAreKept)
 	}
 	EXPECT_TRUE(fs::exists(t / "a/b/out.txt"));
 }
+
+TEST(WritableFile, FailsAsTheAtomicWriteWouldButCreatesNothing)
+{
+	using gridvector::io::AtomicFile;
+	using gridvector::io::checkWritableFile;
+	TempDir t;
+	std::ofstream(t / "file") << "x";
+	fs::create_directories(t / "dir");
+	for (const std::string& bad : {t / "file/out.log", t / "nodir/out.log", t / "dir"})
+	{
+		std::string checked, written;
+		try
+		{
+			checkWritableFile(bad);
+		}
+		catch (const std::runtime_error& e)
+		{
+			checked = e.what();
+		}
+		try
+		{
+			AtomicFile f(bad);
+		}
+		catch (const std::runtime_error& e)
+		{
+			written = e.what();
+		}
+		EXPECT_FALSE(checked.empty()) << bad;
+		EXPECT_EQ(checked, written) << bad;
+	}
+	EXPECT_NO_THROW(checkWritableFile(t / "new.log"));
+	EXPECT_NO_THROW(checkWritableFile(t / "file"));  // replaced atomically
+	EXPECT_FALSE(fs::exists(t / "new.log"));
+	EXPECT_FALSE(fs::exists(t / "nodir"));
+	EXPECT_EQ(std::distance(fs::directory_iterator(t.path), fs::directory_iterator{}), 2);  // file, dir: no temporary
+}

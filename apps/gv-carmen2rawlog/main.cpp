@@ -1,6 +1,7 @@
 // gv-carmen2rawlog: CARMEN log -> MRPT rawlog with correct timestamps, aperture
 // and max range (a replacement for MRPT 2.5's carmen2rawlog).
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/LogReader.h>
 #include <gridvector/io/RawlogWriter.h>
 
@@ -50,6 +51,7 @@ int main(int argc, char** argv)
 		const bool fixedRange = rangeMode != "auto" && rangeMode != "declared";
 		const double range = fixedRange ? args.getDouble("max-range", 0) : 0;
 		if (fixedRange && !(range > 0)) args.fail("--max-range must be auto, declared or a positive number");
+		checkWritableFile(args.positional()[1]);  // before the read, not after it
 		ReadOptions ro;
 		ro.quiet = quiet;
 		ro.includeRearLaser = !args.has("front-only");

@@ -5,6 +5,7 @@
 //   gv-map-info --from-simplemap FILE.simplemap [--config FILE.ini] [--save OUT.gvmap]
 #include <gridvector/ErrorText.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/AtomicFile.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/maps/CSimpleMap.h>
@@ -53,6 +54,7 @@ int main(int argc, char** argv)
 			args.requirePositional(fromSimplemap ? 0 : 1, fromSimplemap ? 0 : 1);
 			if (args.has("config") && !fromSimplemap)
 				args.fail("--config applies to --from-simplemap only (a .gvmap stores its own parameters)");
+			if (args.has("save")) gridvector::io::checkWritableFile(args.get("save"));  // before the read
 			mrpt::maps::CGridVectorMap map;
 			if (fromSimplemap)
 			{

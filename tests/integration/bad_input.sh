@@ -99,6 +99,16 @@ expect 1 "room.log/x.rawlog: cannot write (Not a directory)" - -- "$B/gv-carmen2
 expect 1 "room.log/b.log: cannot write (Not a directory)" - -- "$B/gv-bench-log" room.log room.log/b --quiet
 expect 1 "room.log/m.gvmap: cannot write (Not a directory)" - -- "$B/gv-map-info" ok/map.gvmap --save room.log/m.gvmap
 expect 1 "room.log/x: cannot write (Not a directory)" - -- "$B/gv-graphslam" --2d -i "$INI" -r room.rawlog --disable-visuals --output-dir room.log/x
+# the output is checked before the (long) read: an unwritable output is reported, not the bad input
+expect 1 "room.log/x.rawlog: cannot write (Not a directory)" - -- "$B/gv-carmen2rawlog" trunc.log.gz room.log/x.rawlog --quiet
+expect 1 "nodir/x.rawlog: cannot write (No such file or directory)" - -- "$B/gv-carmen2rawlog" missing.log nodir/x.rawlog --quiet
+expect 1 "ok: cannot write (it is a directory)" - -- "$B/gv-carmen2rawlog" trunc.log.gz ok --quiet
+expect 1 "room.log/b.log: cannot write (Not a directory)" - -- "$B/gv-bench-log" trunc.log.gz room.log/b --quiet
+expect 1 "nodir/b.log: cannot write (No such file or directory)" - -- "$B/gv-bench-log" missing.log nodir/b --quiet
+expect 1 "room.log/m.gvmap: cannot write (Not a directory)" - -- "$B/gv-map-info" trunc.gvmap --save room.log/m.gvmap
+expect 1 "nodir/m.gvmap: cannot write (No such file or directory)" - -- "$B/gv-map-info" --from-simplemap missing.simplemap --save nodir/m.gvmap
+expect 1 "room.log/x: cannot write (Not a directory)" - -- "$B/gv-map" --input trunc.log.gz --poses log --out room.log/x --quiet
+expect 1 "room.log/x: cannot write (Not a directory)" - -- "$B/gv-em-slam" --input trunc.log.gz --out room.log/x --quiet
 # the converters create no directories
 expect 1 "nodir/x.rawlog: cannot write (No such file or directory)" - -- "$B/gv-carmen2rawlog" room.log nodir/x.rawlog --quiet
 expect 1 "nodir/b.log: cannot write (No such file or directory)" - -- "$B/gv-bench-log" room.log nodir/b --quiet

@@ -1,5 +1,6 @@
 #include <gridvector/io/AtomicFile.h>
 
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -119,6 +120,20 @@ void checkWritableDirectory(const std::string& dir)
 	if (!fs::is_directory(existing)) throw std::runtime_error(dir + ": cannot write (" + std::strerror(ENOTDIR) + ")");
 	if (::access(existing.c_str(), W_OK | X_OK) != 0)
 		throw std::runtime_error(dir + ": cannot write (" + errnoText() + ")");
+}
+
+void checkWritableFile(const std::string& path)
+{
+	if (path.empty()) throw std::runtime_error("(empty path): cannot write (no file name given)");
+	auto fail = [&](const std::string& reason) { throw std::runtime_error(path + ": cannot write (" + reason + ")"); };
+	if (fs::is_directory(path)) fail("it is a directory");
+	fs::path dir = fs::path(path).parent_path();
+	if (dir.empty()) dir = ".";
+	// the reasons opening the temporary file would give: ENOENT, ENOTDIR, then EACCES, EROFS
+	struct stat st;
+	if (::stat(dir.c_str(), &st) != 0) fail(errnoText());
+	if (!S_ISDIR(st.st_mode)) fail(std::strerror(ENOTDIR));
+	if (::access(dir.c_str(), W_OK | X_OK) != 0) fail(errnoText());
 }
 
 OutputDirectory::OutputDirectory(std::string dir) : dir_(std::move(dir)) { checkWritableDirectory(dir_); }

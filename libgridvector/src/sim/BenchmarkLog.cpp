@@ -58,8 +58,10 @@ std::string fmt(const char* f, double a, double b, double c, double t)
 
 BenchmarkSummary makeBenchmarkLog(const std::string& in, const std::string& outPrefix, const BenchmarkOptions& opt)
 {
+	BenchmarkSummary sum{0, outPrefix + ".log", outPrefix + ".ref.txt"};
+	for (const std::string& out : {sum.logPath, sum.refPath}) io::checkWritableFile(out);  // before the read
 	const std::vector<RefScan> scans = readFlaser(in);
-	BenchmarkSummary sum{scans.size(), outPrefix + ".log", outPrefix + ".ref.txt"};
+	sum.scans = scans.size();
 	io::AtomicFile log(sum.logPath), ref(sum.refPath);
 	std::ostream& L = log.stream();
 	std::ostream& G = ref.stream();

@@ -58,6 +58,11 @@ void ensureWritableDirectory(const std::string& dir);
  * existing ancestor is one (so that dir can be created). */
 void checkWritableDirectory(const std::string& dir);
 
+/** Throws "path: cannot write (reason)", with the reason AtomicFile(path) would give, unless
+ * path can be written atomically: it is not a directory and its directory exists and is
+ * writable. Creates nothing: a tool calls it before a long read, not after. */
+void checkWritableFile(const std::string& path);
+
 /** A tool's output directory, created only when there is something to write into it.
  *
  * The constructor checks that dir can be written (checkWritableDirectory: a run fails before its

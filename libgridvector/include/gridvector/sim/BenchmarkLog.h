@@ -26,7 +26,8 @@ struct BenchmarkSummary
  * OUT.log (PARAM lines, then ODOM + FLASER per scan with odometry re-synthesised
  * by NoisyOdometry, ranges copied verbatim, timestamps 1.1e9 + k*dt) and
  * OUT.ref.txt ("t x y theta" per scan), both atomically. Malformed FLASER lines
- * throw "file:line: what is wrong". */
+ * throw "file:line: what is wrong"; outputs that cannot be written throw
+ * "OUT.log: cannot write (reason)" before `in` is read. */
 BenchmarkSummary makeBenchmarkLog(const std::string& in, const std::string& outPrefix, const BenchmarkOptions& opt = {});
 
 }  // namespace gridvector::sim

@@ -88,3 +88,31 @@ TEST(ScanWipe, BeamWeightCountsTheFansBeams)
 	// the endpoints of that fan within the cell: about 10 (one per cm)
 	EXPECT_NEAR(hit.n_visit - 1, 10.0, 1.5);
 }
+
+TEST(ScanWipe, AloneTriangleAddsWhatItsMarksWould)
+{
+	// A slanted wall seen obliquely: cells of part b and c, weights varying with range.
+	const GridVector wall({-1, 2.2}, {1.5, 1.8}, GridOptions{});
+	const WipeTriangle tri({0.2, 0}, {1.4, 1.85}, {-0.9, 2.15}, 0.05, 180);
+	for (const bool beams : {false, true})
+	{
+		GridVector viaMarks = wall, alone = wall;
+		std::vector<ScanWipe::Mark> marks(wall.cells().size());
+		ScanWipe::Span span;
+		ScanWipe::Stats a, b;
+		ScanWipe::mark(tri, viaMarks, WipePart::Hit, beams, [&] { return marks.data(); }, span);
+		ASSERT_LT(span.first, span.last);
+		EXPECT_TRUE(ScanWipe::add(marks.data(), span, viaMarks.cells(), beams, a));
+		EXPECT_TRUE(ScanWipe::addAlone(tri, alone, beams, b));
+		EXPECT_GT(a.cellsHit, 0u);
+		EXPECT_GT(a.cellsVisited, 0u);
+		EXPECT_EQ(a.cellsHit, b.cellsHit);
+		EXPECT_EQ(a.cellsVisited, b.cellsVisited);
+		for (size_t i = 0; i < wall.cells().size(); ++i)
+		{
+			EXPECT_EQ(viaMarks.cells()[i].n_occupy, alone.cells()[i].n_occupy) << i;
+			EXPECT_EQ(viaMarks.cells()[i].n_visit, alone.cells()[i].n_visit) << i;
+			EXPECT_EQ(marks[i].hit + marks[i].pass, 0.f) << i;  // add() leaves the marks zeroed
+		}
+	}
+}

@@ -96,7 +96,8 @@ void iterationJson(std::ostream& o, const EmIteration& it)
 	  << ", \"static_length_m\": " << it.staticLength << ", \"dynamic_length_m\": " << it.dynamicLength
 	  << ", \"changed_vectors\": " << it.changedVectors << ", \"m_seconds\": " << it.mSeconds
 	  << ", \"registration_seconds\": " << m.registrationSeconds
-	  << ", \"optimisation_seconds\": " << m.optimisation.seconds << ", \"e_seconds\": " << it.eSeconds << "}";
+	  << ", \"optimisation_seconds\": " << m.optimisation.seconds << ", \"e_seconds\": " << it.eSeconds
+	  << ", \"wipe_seconds\": " << it.wipeSeconds << ", \"classify_seconds\": " << it.classifySeconds << "}";
 }
 }  // namespace
 
@@ -111,7 +112,8 @@ void writeReport(const std::string& path, const RunFigures& run, const EmResult&
 		std::string in = run.input;
 		for (size_t p = 0; (p = in.find_first_of("\"\\", p)) != std::string::npos; p += 2) in.insert(p, "\\");
 		o << "{\n  \"input\": \"" << in << "\",\n  \"config\": " << run.configJson << ",\n  \"scans\": " << run.scans
-		  << ",\n  \"local_vectors\": " << run.localVectors << ",\n  \"iterations_run\": " << res.iterations.size()
+		  << ",\n  \"local_vectors\": " << run.localVectors << ",\n  \"keyframes\": " << res.keyframes
+		  << ",\n  \"iterations_run\": " << res.iterations.size()
 		  << ",\n  \"converged\": " << (res.converged ? "true" : "false") << ",\n  \"iterations\": [\n";
 		for (size_t k = 0; k < res.iterations.size(); ++k)
 		{
@@ -122,7 +124,8 @@ void writeReport(const std::string& path, const RunFigures& run, const EmResult&
 		  << ", \"static_length_m\": " << ls << ", \"dynamic_length_m\": " << ld << ", \"doors\": " << run.doors
 		  << "},\n  \"memory\": " << MemoryAccounting::toJson(run.memory) << ",\n  \"seconds\": {\"read\": "
 		  << run.readSeconds << ", \"extract\": " << run.extractSeconds << ", \"em\": " << run.emSeconds
-		  << ", \"final_map\": " << res.finalMapSeconds << ", \"outputs\": " << run.outputSeconds
+		  << ", \"final_map\": " << res.finalMapSeconds << ", \"final_merge\": " << res.finalMergeSeconds
+		  << ", \"doors\": " << res.doorSeconds << ", \"outputs\": " << run.outputSeconds
 		  << ", \"total\": " << run.totalSeconds << "}\n}\n";
 	});
 }

@@ -216,7 +216,10 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		if (progress) progress("E-step", k, 0.0);
 		// E-step (Eq. 14-15) on the map of the new trajectory (Eq. 8)
 		const auto perScan = GlobalMap::buildPerScan(res.poses, scans, cfg_);
+		it.wipeSeconds = since(t0);
+		const auto tc = std::chrono::steady_clock::now();
 		EStepResult e = estep.run(perScan, k > 1 ? &prevE : nullptr);
+		it.classifySeconds = since(tc);
 		auto sig = signatures(e);
 		for (size_t p = 0; p < sig.size(); ++p)
 			if (prevSig.empty() ? e.childrenOf[p].size() != 1 ||
@@ -243,6 +246,8 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 	for (const auto& v : res.perScan) (v.state == VectorState::Dynamic ? dy : st).push_back(v);
 	res.staticMap = estep.cutUnobserved(GlobalMap::mergeAll(st, cfg_), st);
 	res.dynamicMap = estep.cutUnobserved(GlobalMap::mergeAll(dy, cfg_), dy);
+	res.finalMergeSeconds = since(t0);
+	const auto td = std::chrono::steady_clock::now();
 	for (auto* m : {&res.staticMap, &res.dynamicMap})
 		for (auto v : m->vectors)
 		{
@@ -269,6 +274,7 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 			res.finalVectors.push_back(std::move(parts[k]));
 		}
 	}
+	res.doorSeconds = since(td);
 	res.finalMapSeconds = since(t0);
 	return res;
 }

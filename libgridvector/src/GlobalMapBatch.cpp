@@ -1,6 +1,7 @@
 // Batch mode of the global map: the full Eq. 8 over per-scan vectors, and the Eq. 4 merge.
 #include <gridvector/Correspondence.h>
 #include <gridvector/GlobalMap.h>
+#include <gridvector/WipeProduct.h>
 
 #include <algorithm>
 #include <cmath>
@@ -34,18 +35,9 @@ std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TP
 	}
 	first[scans.size()] = all.size();
 
-	VectorIndex index(cfg.map.indexCellSize);
-	for (size_t i = 0; i < all.size(); ++i) index.insert(uint32_t(i), Box2D::of(all[i]));
-	ScanWipe wiper(cfg.map.hitBand, cfg.map.wipeCountsBeams);
-	std::vector<ScanWipe::Segment> segs;
-	for (size_t t = 0; t < scans.size(); ++t)
-	{
-		segs.clear();
-		for (size_t i = first[t]; i < first[t + 1]; ++i) segs.push_back(ScanWipe::segmentOf(all[i]));
-		const uint32_t lo = uint32_t(first[t]), hi = uint32_t(first[t + 1]);
-		wiper.apply(sensorPosition(poses[t], scans[t]), segs, all, index,
-					[&](size_t, uint32_t s) { return s >= lo && s < hi ? WipePart::Outside : WipePart::Hit; });
-	}
+	std::vector<TPoint2D> sensors(scans.size());
+	for (size_t t = 0; t < scans.size(); ++t) sensors[t] = sensorPosition(poses[t], scans[t]);
+	WipeProduct(cfg.map.hitBand, cfg.map.wipeCountsBeams, cfg.map.indexCellSize).apply(sensors, first, all);
 	return all;
 }
 

@@ -29,6 +29,60 @@ ScanWipe::Mark* ScanWipe::marksOf(uint32_t slot, size_t cells)
 	return marks_.data() + (off - 1);
 }
 
+// Eq. 8 for one scan's marks on one map vector: part c -> n_occupy and n_visit, part b -> n_visit.
+bool ScanWipe::add(Mark* mk, const Span& span, std::vector<GridCell>& cells, bool countBeams, Stats& st)
+{
+	// branch-free: an unmarked cell adds 0 (x + 0 == x), a marked one its increments
+	bool any = false;
+	size_t hit = 0, visited = 0;
+	for (size_t i = span.first; i < span.last; ++i)
+	{
+		Mark& x = mk[i];
+		const bool marked = x.hit != 0 || x.pass != 0, isHit = x.hit > 0;
+		any |= marked;
+		hit += isHit;
+		visited += marked && !isHit;
+		GridCell& c = cells[i];
+		if (countBeams)
+		{
+			c.n_occupy += x.hit;  // Eq. 8, part c
+			c.n_visit += x.hit + x.pass;  // parts b and c
+		}
+		else
+		{
+			c.n_occupy += isHit ? 1.f : 0.f;  // c wins over b
+			c.n_visit += marked ? 1.f : 0.f;
+		}
+		x = Mark{};
+	}
+	st.cellsHit += hit;
+	st.cellsVisited += visited;
+	return any;
+}
+
+// Eq. 8 for a scan's only triangle over m: a mark of one triangle is its weight (0 + w == w).
+bool ScanWipe::addAlone(const WipeTriangle& tri, GridVector& m, bool countBeams, Stats& st)
+{
+	bool any = false;
+	const mrpt::math::TPoint2D axis = m.direction();
+	const double res = m.resolution();
+	tri.forEachCellAt(m, [&](int r, int c, WipePart part, const mrpt::math::TPoint2D& centre) {
+		const float w = countBeams ? float(tri.weight(centre, axis, res, part)) : 1.f;
+		if (w == 0) return;  // an unmarked cell
+		any = true;
+		GridCell& cell = m.cell(r, c);
+		if (part == WipePart::Hit)
+		{
+			++st.cellsHit;
+			cell.n_occupy += w;  // Eq. 8, part c
+		}
+		else
+			++st.cellsVisited;
+		cell.n_visit += w;  // parts b and c
+	});
+	return any;
+}
+
 // Eq. 8 for one scan q: the triangles of V_q over the map vectors near them.
 ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::vector<Segment>& scanVectors,
 								std::vector<GridVector>& map, const VectorIndex& index, const SkipFn& limit)
@@ -37,7 +91,7 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::v
 	marks_.clear();
 	touched_.clear();
 	if (offset_.size() < map.size()) offset_.resize(map.size(), 0);
-	if (span_.size() < map.size()) span_.resize(map.size(), {UINT32_MAX, 0});
+	if (span_.size() < map.size()) span_.resize(map.size());
 	for (size_t seg = 0; seg < scanVectors.size(); ++seg)
 	{
 		const Segment& v = scanVectors[seg];
@@ -55,50 +109,14 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::v
 			const WipePart cap = limit ? limit(seg, slot) : WipePart::Hit;
 			if (cap == WipePart::Outside) continue;
 			const GridVector& m = map[slot];
-			Mark* mk = nullptr;  // the slot's marks, made when the triangle reaches one of its cells
-			const int cols = m.cols();
-			const mrpt::math::TPoint2D axis = m.direction();
-			const double res = m.resolution();
-			tri.forEachCellAt(m, [&](int r, int c, WipePart part, const mrpt::math::TPoint2D& centre) {
-				if (part > cap) return;
-				if (!mk) mk = marksOf(slot, m.cells().size());
-				const uint32_t i = uint32_t(r) * uint32_t(cols) + uint32_t(c);
-				span_[slot].first = std::min(span_[slot].first, i);
-				span_[slot].second = std::max(span_[slot].second, i + 1);
-				Mark& x = mk[i];
-				const float w = beams_ ? float(tri.weight(centre, axis, res, part)) : 1.f;
-				float& slotW = part == WipePart::Hit ? x.hit : x.pass;
-				slotW = beams_ ? slotW + w : 1.f;  // per beam: add; per cell: once
-			});
+			mark(tri, m, cap, beams_, [&] { return marksOf(slot, m.cells().size()); }, span_[slot]);
 		}
 	}
 	for (uint32_t slot : touched_)
 	{
-		auto& cells = map[slot].cells();
-		const Mark* mk = marks_.data() + (offset_[slot] - 1);
+		st.vectorsTouched += add(marks_.data() + (offset_[slot] - 1), span_[slot], map[slot].cells(), beams_, st);
 		offset_[slot] = 0;
-		const auto span = span_[slot];  // the cells this scan's triangles reached
-		span_[slot] = {UINT32_MAX, 0};
-		bool any = false;
-		for (size_t i = span.first; i < span.second; ++i)
-		{
-			const Mark& x = mk[i];
-			if (x.hit == 0 && x.pass == 0) continue;
-			any = true;
-			if (x.hit > 0) ++st.cellsHit;
-			else ++st.cellsVisited;
-			if (beams_)
-			{
-				cells[i].n_occupy += x.hit;  // Eq. 8, part c
-				cells[i].n_visit += x.hit + x.pass;  // parts b and c
-			}
-			else
-			{
-				cells[i].n_occupy += x.hit > 0 ? 1.f : 0.f;  // c wins over b
-				cells[i].n_visit += 1.f;
-			}
-		}
-		st.vectorsTouched += any;
+		span_[slot] = Span{};
 	}
 	return st;
 }

@@ -60,13 +60,6 @@ double WipeTriangle::weight(const TPoint2D& p, const TPoint2D& axis, double res,
 	return std::min(maxWeight_, beams_ * across / r);
 }
 
-void WipeTriangle::coords(double x, double y, double& a, double& b) const
-{
-	const double px = x - o_.x, py = y - o_.y;
-	a = i00_ * px + i01_ * py;
-	b = i10_ * px + i11_ * py;
-}
-
 // Separating axes among the cone's edges a = 0, b = 0, a + b = sMax (the box's corners all beyond one).
 bool WipeTriangle::misses(double minX, double minY, double maxX, double maxY) const
 {

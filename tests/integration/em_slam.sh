@@ -10,6 +10,18 @@ for f in trajectory.txt map.gvmap vectors.txt vectors.svg occupancy.png occupanc
 done
 [ "$(grep -vc '^#' "$tmp/out/trajectory.txt")" -eq 400 ] || { echo "trajectory must have one pose per scan"; exit 1; }
 grep -q '"converged": true' "$tmp/out/report.json" || { echo "EM did not converge"; exit 1; }
+# the phase timings: the wipe product and the classification within the E-step, merges and doors within the final map
+python3 - "$tmp/out/report.json" <<'PY' || { echo "report.json: phase timings missing or inconsistent"; exit 1; }
+import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["keyframes"] > 0
+for it in r["iterations"]:
+    assert 0 <= it["wipe_seconds"] and 0 <= it["classify_seconds"]
+    assert it["wipe_seconds"] + it["classify_seconds"] <= it["e_seconds"] + 1e-6
+assert r["iterations"][0]["wipe_seconds"] > 0
+s = r["seconds"]
+assert 0 <= s["final_merge"] and 0 <= s["doors"] and s["final_merge"] + s["doors"] <= s["final_map"] + 1e-6
+PY
 awk '!/^#/ && $6 != "static" && $6 != "dynamic" { bad = 1 } END { exit bad }' "$tmp/out/vectors.txt" \
   || { echo "vectors.txt: state column must be static|dynamic"; exit 1; }
 ate=$("$GV_BIN/gv-eval" traj "$tmp/out/trajectory.txt" "$tmp/sim/truth_trajectory.txt" | sed -n 's/.*ate_rmse_m=\([0-9.]*\).*/\1/p')

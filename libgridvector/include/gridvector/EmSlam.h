@@ -25,6 +25,8 @@ struct EmIteration
 	double staticLength = 0, dynamicLength = 0;
 	MStepReport mstep;
 	double eSeconds = 0, mSeconds = 0;
+	double wipeSeconds = 0;  //!< of eSeconds: the map of the trajectory, Eq. 4 unmerged + Eq. 8 (GlobalMap::buildPerScan)
+	double classifySeconds = 0;  //!< of eSeconds: Eq. 14-15 on that map (EStep::run)
 	bool eSkipped = false;  //!< no pose moved enough since the last E-step: its result stands
 };
 
@@ -38,6 +40,8 @@ struct EmResult
 	std::vector<GridVector> finalVectors;  //!< staticMap then dynamicMap vectors, state set (door leaves dynamic)
 	std::vector<Door> doors;  //!< Sec. 5.4 on finalVectors (Door::leaves, Door::wall index it; a wall cut at a door state keeps its index for its first piece)
 	double finalMapSeconds = 0;
+	double finalMergeSeconds = 0;  //!< of finalMapSeconds: the final split and the Eq. 4 merges (GlobalMap::mergeAll)
+	double doorSeconds = 0;  //!< of finalMapSeconds: Sec. 5.4 and the door-state cuts
 	size_t keyframes = 0;  //!< scans EM worked on (the others follow their odometry)
 };
 

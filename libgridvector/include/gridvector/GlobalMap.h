@@ -98,7 +98,9 @@ class GlobalMap
 	 * Output order: scan by scan, vector by vector; id = position + 1;
 	 * scanIndex = scans[t].scanIndex if >= 0, else t; timestamp of the scan.
 	 * Throws std::invalid_argument if poses.size() != scans.size().
-	 * Cost: O(sum over scans of the vectors near each pose). */
+	 * Eq. 8 through WipeProduct (vector by vector, the same sums as ScanWipe
+	 * scan by scan). Cost: O(sum over scans of the vectors near each pose),
+	 * which grows with the square of the passes through a place. */
 	static std::vector<GridVector> buildPerScan(const std::vector<mrpt::math::TPose2D>& poses,
 												 const std::vector<LocalScan>& scans,
 												 const GridVectorConfig& cfg);

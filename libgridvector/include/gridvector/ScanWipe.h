@@ -7,6 +7,7 @@
 
 #include <mrpt/math/TPoint2D.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <functional>
 #include <utility>
@@ -70,11 +71,31 @@ class ScanWipe
 		return {globalVector.start(), globalVector.end(), globalVector.totalPoints()};
 	}
 
-   private:
+	/** What one scan's triangles leave on a map cell before Eq. 8 adds it
+	 * (per cell: 1 or 0; per beam: the beams counted). */
 	struct Mark
 	{
 		float hit = 0, pass = 0;
 	};
+	/** Cells [first, last) of a map vector that a scan's marks cover. */
+	struct Span
+	{
+		uint32_t first = UINT32_MAX, last = 0;
+	};
+	/** One triangle on map vector m, parts up to `cap`: marks m's cells
+	 * (row-major, as m.cells()) and widens `span`. `marks()` returns the
+	 * vector's marks; it is called when the triangle first reaches a cell. */
+	template <class GetMarks>
+	static void mark(const WipeTriangle& tri, const GridVector& m, WipePart cap, bool countBeams,
+					 GetMarks&& marks, Span& span);
+	/** Eq. 8 with one scan's marks on `cells` (those in span), counted into
+	 * st; the marks are zeroed for the next scan. True if any cell changed. */
+	static bool add(Mark* marks, const Span& span, std::vector<GridCell>& cells, bool countBeams, Stats& st);
+	/** mark() then add() for a scan of which only this triangle reaches m
+	 * (no other triangle to share a cell with): the same increments, no marks. */
+	static bool addAlone(const WipeTriangle& tri, GridVector& m, bool countBeams, Stats& st);
+
+   private:
 	Mark* marksOf(uint32_t slot, size_t cells);
 	double hitBand_;
 	bool beams_;
@@ -82,7 +103,27 @@ class ScanWipe
 	std::vector<Mark> marks_;  //!< per cell of the touched vectors, back to back
 	std::vector<size_t> offset_;  //!< slot -> first mark + 1 (0: not touched by this scan)
 	std::vector<uint32_t> touched_;
-	std::vector<std::pair<uint32_t, uint32_t>> span_;  //!< slot -> [first, last) mark touched by this scan
+	std::vector<Span> span_;  //!< slot -> cells touched by this scan
 };
+
+template <class GetMarks>
+void ScanWipe::mark(const WipeTriangle& tri, const GridVector& m, WipePart cap, bool countBeams, GetMarks&& marks,
+					Span& span)
+{
+	Mark* mk = nullptr;  // the vector's marks, fetched when the triangle reaches one of its cells
+	const uint32_t cols = uint32_t(m.cols());
+	const mrpt::math::TPoint2D axis = m.direction();
+	const double res = m.resolution();
+	tri.forEachCellAt(m, [&](int r, int c, WipePart part, const mrpt::math::TPoint2D& centre) {
+		if (part > cap) return;
+		if (!mk) mk = marks();
+		const uint32_t i = uint32_t(r) * cols + uint32_t(c);
+		span.first = std::min(span.first, i);
+		span.last = std::max(span.last, i + 1);
+		Mark& x = mk[i];
+		float& w = part == WipePart::Hit ? x.hit : x.pass;
+		w = countBeams ? w + float(tri.weight(centre, axis, res, part)) : 1.f;  // per beam: add; per cell: once
+	});
+}
 
 }  // namespace gridvector

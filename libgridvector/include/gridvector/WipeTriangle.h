@@ -85,8 +85,13 @@ class WipeTriangle
 	size_t apply(GridVector& m) const;
 
    private:
-	/** Cone coordinates (a, b) of a point. */
-	void coords(double x, double y, double& a, double& b) const;
+	/** Cone coordinates (a, b) of a point (inline: called for every cell a triangle reaches). */
+	void coords(double x, double y, double& a, double& b) const
+	{
+		const double px = x - o_.x, py = y - o_.y;
+		a = i00_ * px + i01_ * py;
+		b = i10_ * px + i11_ * py;
+	}
 	/** Columns [k0, k1] of a grid row whose centres lie in the cone. */
 	bool rowSpan(const GridVector& m, const mrpt::math::TPoint2D& rowOrigin,
 				 const mrpt::math::TPoint2D& dir, int& k0, int& k1) const;

@@ -11,10 +11,12 @@
 #include <set>
 
 #include "test_scans.h"
+#include "wall_pieces.h"
 
 using namespace gridvector;
 using mrpt::math::TPoint2D;
 using mrpt::math::TPose2D;
+using gvtest::wallPiece;
 
 namespace
 {
@@ -290,17 +292,6 @@ TEST(GlobalMap, MergeAllReportsSourcesAndConserves)
 			}
 		}
 }
-
-namespace
-{
-GridVector wallPiece(TPoint2D s, TPoint2D e, double spacing = 0.02)
-{
-	GridVector v(s, e, GridOptions{});
-	const TPoint2D d = v.direction();
-	for (double u = 0.01; u < v.length(); u += spacing) v.addEndpoint({s.x + u * d.x, s.y + u * d.y});
-	return v;
-}
-}  // namespace
 
 TEST(GlobalMap, MergeCascadesThroughTheMergedVector)
 {

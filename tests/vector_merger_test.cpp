@@ -7,8 +7,11 @@
 #include <cmath>
 #include <random>
 
+#include "wall_pieces.h"
+
 using namespace gridvector;
 using mrpt::math::TPoint2D;
+using gvtest::arcPiece;
 
 namespace
 {
@@ -287,19 +290,6 @@ TEST(VectorMerger, RejectsMixedResolutions)
 	EXPECT_THROW(VectorMerger().merge(a, b), std::invalid_argument);
 	EXPECT_THROW(VectorMerger().merge(std::vector<const GridVector*>{}), std::invalid_argument);
 }
-
-namespace
-{
-/** A piece of the circle of radius R centred at (0, R) (a wall bending
- * upwards), from x0 to x1, with beam endpoints every 2 cm along the arc. */
-GridVector arcPiece(double R, double x0, double x1)
-{
-	auto y = [&](double x) { return R - std::sqrt(R * R - x * x); };
-	GridVector v({x0, y(x0)}, {x1, y(x1)}, GridOptions{});
-	for (double x = x0 + 0.01; x < x1; x += 0.02) v.addEndpoint({x, y(x)});
-	return v;
-}
-}  // namespace
 
 TEST(VectorMerger, GuardRefusesAChordAcrossACurvedWall)
 {

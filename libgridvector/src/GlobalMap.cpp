@@ -1,5 +1,6 @@
 #include <gridvector/Correspondence.h>
 #include <gridvector/GlobalMap.h>
+#include <gridvector/MergeCascade.h>
 
 #include <algorithm>
 #include <cmath>
@@ -118,32 +119,24 @@ void GlobalMap::insertVector(GridVector m)
 	m.id = nextId_++;
 	if (cfg_.map.mergeOnInsert)
 	{
-		std::vector<uint64_t> refused;  // map vectors whose merge the guard refused
-		for (int round = 0; round < 8; ++round)
-		{
-			std::vector<size_t> corr = correspondents(m);
-			corr.erase(std::remove_if(corr.begin(), corr.end(),
-									  [&](size_t s) {
-										  return std::find(refused.begin(), refused.end(), vectors_[s].id) !=
-												 refused.end();
-									  }),
-					   corr.end());
-			if (corr.empty()) break;
-			std::vector<const GridVector*> cand;
-			for (size_t s : corr) cand.push_back(&vectors_[s]);
-			GridVector merged;
-			const std::vector<size_t> taken = merger_.mergeGreedy(m, cand, merged);
+		auto mapCorresponding = [&](const GridVector& v) {  // keyed by id: merges move the slots
+			std::vector<MergeCandidate> out;
+			for (size_t s : correspondents(v)) out.push_back({vectors_[s].id, &vectors_[s]});
+			return out;
+		};
+		auto absorb = [&](const std::vector<MergeCandidate>& taken) {
 			std::vector<size_t> slots;
-			for (size_t k = 0, j = 0; k < corr.size(); ++k)
-				if (j < taken.size() && taken[j] == k) slots.push_back(corr[k]), ++j;
-				else refused.push_back(vectors_[corr[k]].id);
-			stats_.refused += corr.size() - slots.size();
-			if (slots.empty()) break;
-			merged.id = nextId_++;
-			++stats_.merges;
-			stats_.absorbed += slots.size();
+			for (const MergeCandidate& c : taken) slots.push_back(size_t(c.vector - vectors_.data()));
 			removeSlots(slots);
-			m = std::move(merged);
+		};
+		const MergeCascadeStats st = mergeCascade(merger_, m, {mapCorresponding, absorb});
+		stats_.merges += st.merges;
+		stats_.absorbed += st.absorbed;
+		stats_.refused += st.refused;
+		if (st.merges > 0)  // each merge numbered in turn: the last one's id
+		{
+			nextId_ += st.merges;
+			m.id = nextId_ - 1;
 		}
 	}
 	addSlot(std::move(m));

@@ -1,6 +1,7 @@
 // Batch mode of the global map: the full Eq. 8 over per-scan vectors, and the Eq. 4 merge.
 #include <gridvector/Correspondence.h>
 #include <gridvector/GlobalMap.h>
+#include <gridvector/MergeCascade.h>
 #include <gridvector/WipeProduct.h>
 
 #include <algorithm>
@@ -134,41 +135,31 @@ struct Partial
 };
 
 // A group the guard refused: its members merged one by one (longest first), each with the
-// partial merges it corresponds to while the guard allows, cascading as in GlobalMap::insertVector.
+// partial merges it corresponds to while the guard allows (the cascade of GlobalMap::insertVector).
 std::vector<Partial> mergeMemberwise(const std::vector<GridVector>& vectors, std::vector<uint32_t> members,
 									 const VectorMerger& merger, const MapOptions& opt)
 {
 	std::stable_sort(members.begin(), members.end(),
 					 [&](uint32_t a, uint32_t b) { return vectors[a].length() > vectors[b].length(); });
 	std::vector<Partial> parts;
+	// the partial merges so far, keyed by position
+	auto partsCorresponding = [&](const GridVector& v) {
+		std::vector<MergeCandidate> out;
+		for (size_t k = 0; k < parts.size(); ++k)
+			if (!parts[k].ids.empty() && corresponds(v, parts[k].v, opt)) out.push_back({k, &parts[k].v});
+		return out;
+	};
 	for (uint32_t m : members)
 	{
 		Partial cur{vectors[m], {vectors[m].id}, false};
-		std::vector<size_t> refused;
-		for (int round = 0; round < 8; ++round)
-		{
-			std::vector<size_t> corr;
-			std::vector<const GridVector*> cand;
-			for (size_t k = 0; k < parts.size(); ++k)
-				if (!parts[k].ids.empty() && std::find(refused.begin(), refused.end(), k) == refused.end() &&
-					corresponds(cur.v, parts[k].v, opt))
-					corr.push_back(k), cand.push_back(&parts[k].v);
-			if (corr.empty()) break;
-			GridVector out;
-			const std::vector<size_t> taken = merger.mergeGreedy(cur.v, cand, out);
-			for (size_t k = 0, j = 0; k < corr.size(); ++k)
-				if (j < taken.size() && taken[j] == k)
-				{
-					cur.ids.insert(cur.ids.end(), parts[corr[k]].ids.begin(), parts[corr[k]].ids.end());
-					parts[corr[k]].ids.clear();  // absorbed
-					++j;
-				}
-				else
-					refused.push_back(corr[k]);
-			if (taken.empty()) break;
-			cur.v = std::move(out);
-			cur.merged = true;
-		}
+		auto absorb = [&](const std::vector<MergeCandidate>& taken) {
+			for (const MergeCandidate& c : taken)
+			{
+				cur.ids.insert(cur.ids.end(), parts[c.key].ids.begin(), parts[c.key].ids.end());
+				parts[c.key].ids.clear();
+			}
+		};
+		cur.merged = mergeCascade(merger, cur.v, {partsCorresponding, absorb}).merges > 0;
 		parts.push_back(std::move(cur));
 	}
 	parts.erase(std::remove_if(parts.begin(), parts.end(), [](const Partial& p) { return p.ids.empty(); }),

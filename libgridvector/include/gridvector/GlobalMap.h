@@ -32,7 +32,7 @@ struct MergeResult
  * vectors are compounded with the pose (m = x (+) v) and inserted, each merged
  * with its correspondents by Algorithm 2 when map.merge_on_insert is set.
  * Cost per scan: O(vectors near the robot), independent of the map's size.
- * Merges go through VectorMerger::mergeGreedy (the guard map.merge_holds_wall).
+ * Merges go through mergeCascade (VectorMerger::mergeGreedy, the guard map.merge_holds_wall).
  *
  * Batch mode (buildPerScan + mergeAll): the full product of Eq. 8 over all
  * scans, then the merge of Eq. 4; used by the EM loop. */

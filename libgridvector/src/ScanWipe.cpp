@@ -63,24 +63,25 @@ bool ScanWipe::add(Mark* mk, const Span& span, std::vector<GridCell>& cells, boo
 // Eq. 8 for a scan's only triangle over m: a mark of one triangle is its weight (0 + w == w).
 bool ScanWipe::addAlone(const WipeTriangle& tri, GridVector& m, bool countBeams, Stats& st)
 {
-	bool any = false;
+	size_t hit = 0, visited = 0;
 	const mrpt::math::TPoint2D axis = m.direction();
 	const double res = m.resolution();
 	tri.forEachCellAt(m, [&](int r, int c, WipePart part, const mrpt::math::TPoint2D& centre) {
 		const float w = countBeams ? float(tri.weight(centre, axis, res, part)) : 1.f;
 		if (w == 0) return;  // an unmarked cell
-		any = true;
 		GridCell& cell = m.cell(r, c);
 		if (part == WipePart::Hit)
 		{
-			++st.cellsHit;
+			++hit;
 			cell.n_occupy += w;  // Eq. 8, part c
 		}
 		else
-			++st.cellsVisited;
+			++visited;
 		cell.n_visit += w;  // parts b and c
 	});
-	return any;
+	st.cellsHit += hit;
+	st.cellsVisited += visited;
+	return hit + visited > 0;
 }
 
 // Eq. 8 for one scan q: the triangles of V_q over the map vectors near them.

@@ -88,41 +88,6 @@ WipePart WipeTriangle::classify(const TPoint2D& p) const
 	return a + b < sHit_ ? WipePart::Visited : WipePart::Hit;
 }
 
-namespace
-{
-/** Intersect [lo, hi] with {u : g0 + g1 u >= c}; false if it becomes empty. */
-bool clipLinear(double g0, double g1, double c, double& lo, double& hi)
-{
-	if (std::abs(g1) < 1e-15)
-	{
-		if (g0 < c) return false;
-	}
-	else if (g1 > 0)
-		lo = std::max(lo, (c - g0) / g1);
-	else
-		hi = std::min(hi, (c - g0) / g1);
-	return lo <= hi;
-}
-}  // namespace
-
-bool WipeTriangle::rowSpan(const GridVector& m, const TPoint2D& q, const TPoint2D& d, int& k0,
-						   int& k1) const
-{
-	const double res = m.resolution();
-	double a0, b0, a1, b1;
-	coords(q.x, q.y, a0, b0);
-	a1 = i00_ * d.x + i01_ * d.y;
-	b1 = i10_ * d.x + i11_ * d.y;
-	double lo = 0.5 * res, hi = (m.cols() - 0.5) * res;  // column centres
-	constexpr double eps = 1e-9;
-	if (!clipLinear(a0, a1, -eps, lo, hi) || !clipLinear(b0, b1, -eps, lo, hi) ||
-		!clipLinear(-(a0 + b0), -(a1 + b1), -sMax_ - eps, lo, hi))
-		return false;
-	k0 = std::max(0, int(std::ceil(lo / res - 0.5 - 1e-9)));
-	k1 = std::min(m.cols() - 1, int(std::floor(hi / res - 0.5 + 1e-9)));
-	return k0 <= k1;
-}
-
 // Eq. 8 / Fig. 2: part c -> n_occupy, n_visit += 1; part b -> n_visit += 1; part a untouched.
 size_t WipeTriangle::apply(GridVector& m) const
 {

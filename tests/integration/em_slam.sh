@@ -22,6 +22,13 @@ assert r["iterations"][0]["wipe_seconds"] > 0
 s = r["seconds"]
 assert 0 <= s["final_merge"] and 0 <= s["doors"] and s["final_merge"] + s["doors"] <= s["final_map"] + 1e-6
 PY
+# the E-step's wipe product at the final trajectory: vector by vector (WipeProduct) = scan by scan (ScanWipe), bit for bit
+"$GV_BIN/gv-bench-wipe" "$tmp/sim/sim.log" "$tmp/out/trajectory.txt" --repeat 1 > "$tmp/wipe.txt" \
+  || { cat "$tmp/wipe.txt"; echo "gv-bench-wipe: the two products differ"; exit 1; }
+grep -q "cells differing: 0 (identical)" "$tmp/wipe.txt" || { cat "$tmp/wipe.txt"; exit 1; }
+head -n 10 "$tmp/out/trajectory.txt" > "$tmp/short.txt"
+if "$GV_BIN/gv-bench-wipe" "$tmp/sim/sim.log" "$tmp/short.txt" 2> "$tmp/wipe.err"; then echo "gv-bench-wipe accepted a short trajectory"; exit 1; fi
+grep -q "poses for 400 scans" "$tmp/wipe.err" || { cat "$tmp/wipe.err"; exit 1; }
 awk '!/^#/ && $6 != "static" && $6 != "dynamic" { bad = 1 } END { exit bad }' "$tmp/out/vectors.txt" \
   || { echo "vectors.txt: state column must be static|dynamic"; exit 1; }
 ate=$("$GV_BIN/gv-eval" traj "$tmp/out/trajectory.txt" "$tmp/sim/truth_trajectory.txt" | sed -n 's/.*ate_rmse_m=\([0-9.]*\).*/\1/p')

@@ -82,6 +82,7 @@ GridVectorConfig EmSlam::defaultConfig()
 	c.extraction.minLength = 0.12;
 	c.extraction.maxPointGap = 1.0;
 	c.map.wipeCountsBeams = false;  // Fig. 2's unit: one increment per cell and triangle
+	c.posegraph.odometrySigmaXYPerM = 0.06;  // u_t of Eq. 21: closer to the residuals at the optimum (doc/benchmarks.md)
 	return c;
 }
 

@@ -198,3 +198,24 @@ TEST(DoorDetector, TheSweptArcIsAtLeastARightAngleFromTheClosedState)
 	std::sort(leaves.begin(), leaves.end());
 	EXPECT_EQ(leaves, (std::vector<size_t>{1, 2, 3}));
 }
+
+TEST(DoorDetector, MinSweepDegSetsTheWidenedArc)
+{
+	// the states seen span 0..45 deg; the leaf at 80 deg joins the door only when the arc
+	// is widened beyond 45 deg + min_state_diff_deg
+	const std::vector<GridVector> v = {vec(0, 0, 3, 0, S), vec(3, 0, 3.9, 0, D), vec(3, 0, 3.64, 0.64, S),
+									   vec(3.15, 0.05, 3.3, 0.94, S)};
+	auto leavesWith = [&](double sweepDeg) {
+		DoorOptions o;
+		o.maxCornerGap = 0.1;
+		o.minSweepDeg = sweepDeg;
+		const auto doors = DoorDetector(o).detect(v);
+		std::vector<size_t> leaves = doors.empty() ? std::vector<size_t>{} : doors[0].leaves;
+		std::sort(leaves.begin(), leaves.end());
+		return leaves;
+	};
+	EXPECT_EQ(DoorOptions().minSweepDeg, 90.0);
+	EXPECT_EQ(leavesWith(90), (std::vector<size_t>{1, 2, 3}));
+	EXPECT_EQ(leavesWith(45), (std::vector<size_t>{1, 2}));
+	EXPECT_EQ(leavesWith(0), (std::vector<size_t>{1, 2}));
+}

@@ -1,4 +1,5 @@
 // Sec. 3.2: global map building, sequential (insertScan) and batch (buildPerScan + mergeAll).
+#include <gridvector/Correspondence.h>
 #include <gridvector/GlobalMap.h>
 #include <gridvector/OccupancyConversion.h>
 #include <gridvector/VectorExtractor.h>
@@ -525,4 +526,31 @@ TEST(GlobalMap, InsertScanSearchesAgainWhenItsOwnVectorsCorrespond)
 	EXPECT_EQ(reusing.lastInsertStats().searchesReused, 1u);
 	EXPECT_EQ(reusing.size(), 1u);
 	expectSameMap(reusing, searching);
+}
+
+TEST(GlobalMap, MergeAllGroupRoundsLetAGrownSpanReachFurther)
+{
+	// B (4.2 m, 0.1 m to the side) overlaps A (4 m) by 1.13 mm: too little for criterion 3
+	// (|c_A - c_B| >= (l_A + l_B)/2); the short v lies beyond A's other end, far from B (outside
+	// its search box) but corresponds to A. A + v's longer span corresponds to B: only a
+	// second round of the grouping, searching around the grown span, finds it.
+	const double eps = 0.00113;
+	std::vector<GridVector> in = {wallPiece({7.5 - eps, 0.1}, {11.7 - eps, 0.1}), wallPiece({3.5, 0}, {7.5, 0}),
+								  wallPiece({2, 0}, {4, 0})};
+	for (size_t k = 0; k < in.size(); ++k) in[k].id = k + 1;
+	const MapOptions opt;
+	ASSERT_FALSE(corresponds(in[1], in[0], opt));
+	ASSERT_FALSE(corresponds(in[2], in[0], opt));
+	ASSERT_TRUE(corresponds(in[2], in[1], opt));
+	auto sourcesWith = [&](int rounds) {
+		GridVectorConfig cfg;
+		cfg.map.mergeGroupRounds = rounds;
+		std::vector<std::vector<uint64_t>> s = GlobalMap::mergeAll(in, cfg).sources;
+		std::sort(s.begin(), s.end());
+		return s;
+	};
+	EXPECT_EQ(GridVectorConfig().map.mergeGroupRounds, 16);
+	EXPECT_EQ(sourcesWith(1), (std::vector<std::vector<uint64_t>>{{1}, {2, 3}}));
+	EXPECT_EQ(sourcesWith(16), (std::vector<std::vector<uint64_t>>{{1, 2, 3}}));
+	EXPECT_EQ(sourcesWith(2), sourcesWith(16));
 }

@@ -93,11 +93,16 @@ TEST(MergeCascade, NothingCorrespondingLeavesTheVectorAsItWas)
 	EXPECT_TRUE(p.absorbed.empty());
 }
 
-TEST(MergeCascade, StopsAfterTheRoundBound)
+// a pool that offers one new overlapping piece of the same wall at each round; the
+// cascade stops after map.merge_cascade_rounds merges
+namespace
 {
-	// a pool that offers one new overlapping piece of the same wall at each round
+size_t cascadeOverChain(int rounds, double& endX)
+{
+	GridVectorConfig cfg;
+	cfg.map.mergeCascadeRounds = rounds;
 	std::vector<GridVector> chain;
-	for (int k = 0; k < kMergeCascadeRounds + 4; ++k) chain.push_back(wallPiece({1.0 + k, 0}, {3.0 + k, 0}));
+	for (int k = 0; k < rounds + 4; ++k) chain.push_back(wallPiece({1.0 + k, 0}, {3.0 + k, 0}));
 	ListPool p(chain);
 	size_t next = 0;
 	MergePool pool = p.pool();
@@ -107,7 +112,20 @@ TEST(MergeCascade, StopsAfterTheRoundBound)
 	auto absorb = pool.absorb;
 	pool.absorb = [&](const std::vector<MergeCandidate>& taken) { absorb(taken), ++next; };
 	GridVector v = wallPiece({0, 0}, {2, 0});
-	const MergeCascadeStats st = mergeCascade(VectorMerger(), v, pool);
-	EXPECT_EQ(st.merges, size_t(kMergeCascadeRounds));
-	EXPECT_NEAR(v.end().x, 2.0 + kMergeCascadeRounds, 0.05);
+	const MergeCascadeStats st = mergeCascade(VectorMerger(cfg), v, pool);
+	endX = v.end().x;
+	return st.merges;
+}
+}  // namespace
+
+TEST(MergeCascade, StopsAfterTheRoundBound)
+{
+	const int defaultRounds = GridVectorConfig().map.mergeCascadeRounds;
+	EXPECT_EQ(defaultRounds, 8);  // the value before it became a key
+	for (int rounds : {1, 3, defaultRounds})
+	{
+		double endX = 0;
+		EXPECT_EQ(cascadeOverChain(rounds, endX), size_t(rounds)) << rounds;
+		EXPECT_NEAR(endX, 2.0 + rounds, 0.05) << rounds;
+	}
 }

@@ -205,3 +205,29 @@ TEST(VectorExtractor, Algorithm1InitialisesTheVectorsGrid)
 		EXPECT_FLOAT_EQ(v.cell(2, c).n_acc, 0.f);
 	}
 }
+
+TEST(VectorExtractor, BreakpointAllowsTheConfiguredRangeNoise)
+{
+	// a range step of 0.25 m at 2 m (1 deg beams): beyond break_distance (0.2 m) and the
+	// geometric adaptive threshold (2 sin 1 deg / sin 9 deg = 0.223 m); with std. error
+	// 0.02 m, Borges & Aldon's 3 sigma (0.06 m) covers it
+	mrpt::obs::CObservation2DRangeScan scan;
+	scan.aperture = float(M_PI);
+	scan.maxRange = 30.f;
+	scan.rightToLeft = true;
+	scan.stdError = 0.02f;
+	scan.resizeScan(181);
+	for (size_t i = 0; i < 181; ++i) scan.setScanRange(i, i < 90 ? 2.0f : 2.25f), scan.setScanRangeValidity(i, true);
+	auto runs = [&](double sigmas) {
+		ExtractionOptions o;
+		o.breakNoiseSigmas = sigmas;
+		std::vector<TPoint2D> pts;
+		std::vector<size_t> starts;
+		VectorExtractor(o).scanToRuns(scan, pts, starts);
+		return starts;
+	};
+	EXPECT_EQ(ExtractionOptions().breakNoiseSigmas, 3.0);
+	EXPECT_EQ(runs(3.0), (std::vector<size_t>{0}));  // the default: one run
+	EXPECT_EQ(runs(0.0), (std::vector<size_t>{0, 90}));  // geometry only: broken at the step
+	EXPECT_EQ(runs(1.0), (std::vector<size_t>{0, 90}));  // 0.02 m allowance: still broken
+}

@@ -216,8 +216,8 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 }
 
 // The arc a door's leaf sweeps: the smallest arc holding all states (the complement of the
-// largest gap between them), widened to a right angle from the state nearest the wall's line
-// (the closed one) when the states seen span less.
+// largest gap between them), widened to doors.min_sweep_deg (a right angle) from the state
+// nearest the wall's line (the closed one) when the states seen span less.
 bool DoorDetector::inSweep(const Door& d, const GridVector& wall, double angle) const
 {
 	const std::vector<double>& as = d.angles;  // ascending
@@ -229,10 +229,11 @@ bool DoorDetector::inSweep(const Door& d, const GridVector& wall, double angle) 
 		if (g > gap) gap = g, from = k;
 	}
 	double start = as[(from + 1) % as.size()], width = 2 * M_PI - gap;  // counter-clockwise from start
-	if (width < M_PI / 2)
+	const double minSweep = M_PI * (opts_.minSweepDeg / 180);  // exactly M_PI / 2 for 90 deg
+	if (width < minSweep)
 	{
-		if (bendDeg(as[from], wall) < bendDeg(start, wall)) start = as[from] - M_PI / 2;  // closed at the arc's end
-		width = M_PI / 2;
+		if (bendDeg(as[from], wall) < bendDeg(start, wall)) start = as[from] - minSweep;  // closed at the arc's end
+		width = minSweep;
 	}
 	const double rel = mrpt::math::wrapTo2Pi(angle - start), tol = opts_.minStateDiffDeg * M_PI / 180;
 	return rel <= width + tol || rel >= 2 * M_PI - tol;

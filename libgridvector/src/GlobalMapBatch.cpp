@@ -186,7 +186,7 @@ MergeResult GlobalMap::mergeAll(const std::vector<GridVector>& vectors, const Gr
 	for (uint32_t pos : order)
 	{
 		Group g = groupOf(vectors[pos], pos);
-		for (int round = 0; round < 16; ++round)
+		for (int round = 0; round < cfg.map.mergeGroupRounds; ++round)  // grown span: new correspondents
 		{
 			cand.clear();
 			const double len = std::hypot(g.e.x - g.s.x, g.e.y - g.s.y);

@@ -161,6 +161,7 @@ void GridVectorConfig::validate() const
 	require(extraction.minPoints >= 2, "extraction.min_points must be >= 2");
 	require(extraction.minLength >= 0, "extraction.min_length must be >= 0");
 	require(extraction.breakDistance > 0, "extraction.break_distance must be > 0");
+	require(extraction.breakNoiseSigmas >= 0, "extraction.break_noise_sigmas must be >= 0");
 	require(grid.resolution > 0, "grid.resolution must be > 0");
 	require(grid.halfWidth >= 0 && grid.halfWidth <= 20, "grid.half_width must be in [0,20]");
 	require(grid.priorVisit > 0 && grid.priorOccupy >= 0 && grid.priorOccupy <= grid.priorVisit,
@@ -172,6 +173,8 @@ void GridVectorConfig::validate() const
 			"occupancy.samples_per_axis must be in [0,16]");
 	require(map.indexCellSize > 0, "map.index_cell_size must be > 0");
 	require(map.mergeRegridTolerance >= 0, "map.merge_regrid_tolerance must be >= 0");
+	require(map.mergeCascadeRounds >= 1 && map.mergeGroupRounds >= 1,
+			"map.merge_cascade_rounds and merge_group_rounds must be >= 1");
 	require(estep.staticThreshold > 0 && estep.staticThreshold < 1, "estep.static_threshold must be in (0,1)");
 	require(mstep.maxIterations >= 1, "mstep.max_iterations must be >= 1");
 	require(mstep.sequentialWindow >= 1, "mstep.sequential_window must be >= 1");
@@ -186,6 +189,7 @@ void GridVectorConfig::validate() const
 			"posegraph.robust_kernel_width must be > 0, max_iterations >= 1");
 	require(doors.minDoorLength > 0 && doors.maxDoorLength >= doors.minDoorLength,
 			"doors: need 0 < min_door_length <= max_door_length");
+	require(doors.minSweepDeg >= 0 && doors.minSweepDeg <= 360, "doors.min_sweep_deg must be in [0,360]");
 }
 
 namespace

@@ -9,7 +9,7 @@ MergeCascadeStats mergeCascade(const VectorMerger& merger, GridVector& v, const 
 {
 	MergeCascadeStats st;
 	std::vector<uint64_t> refused;  // keys whose merge the guard refused
-	for (int round = 0; round < kMergeCascadeRounds; ++round)
+	for (int round = 0; round < merger.config().map.mergeCascadeRounds; ++round)
 	{
 		std::vector<MergeCandidate> corr = pool.correspondents(v);
 		corr.erase(std::remove_if(corr.begin(), corr.end(),

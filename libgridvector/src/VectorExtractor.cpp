@@ -42,10 +42,10 @@ void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
 	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y(), syaw = scan.sensorPose.yaw();
 	const double cs = std::cos(syaw), ss = std::sin(syaw);
 	const double dPhi = n > 1 ? std::abs(scan.aperture) / (n - 1) : 0.0;
-	// Borges & Aldon adaptive breakpoint: D = r sin(dphi) / sin(lambda - dphi) + 3 sigma
+	// Borges & Aldon adaptive breakpoint: D = r sin(dphi) / sin(lambda - dphi) + k sigma (k: break_noise_sigmas, theirs 3)
 	const double lambda = ext_.breakAngleDeg * M_PI / 180.0;
 	const double adaptive = std::sin(dPhi) / std::max(1e-6, std::sin(lambda - dPhi));
-	const double sigma3 = 3.0 * std::max(0.0f, scan.stdError);
+	const double noiseAllowance = ext_.breakNoiseSigmas * std::max(0.0f, scan.stdError);
 	thread_local BeamTrig trigCache;
 	const BeamTrig& trig = trigCache.update(scan);
 	bool prevValid = false;
@@ -67,7 +67,7 @@ void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
 		{
 			const double jump = std::hypot(p.x - pts.back().x, p.y - pts.back().y);
 			brk = jump > std::min(ext_.maxPointGap,
-								 std::max(ext_.breakDistance, prevR * adaptive + sigma3));
+								 std::max(ext_.breakDistance, prevR * adaptive + noiseAllowance));
 		}
 		if (brk) runStarts.push_back(pts.size());
 		pts.push_back(p);

@@ -27,6 +27,7 @@ struct ExtractionOptions
 	int minPoints = 5;  //!< minimum laser points per vector
 	double minLength = 0.30;  //!< minimum vector length [m]
 	double maxPointGap = 0.50;  //!< max gap between consecutive points of one vector [m]
+	double breakNoiseSigmas = 3.0;  //!< adaptive breakpoint: range noise allowance in scanner std. devs (Borges & Aldon: 3)
 
 	template <class V>
 	void visit(V&& v)
@@ -40,6 +41,7 @@ struct ExtractionOptions
 		v("min_points", minPoints, "Minimum laser points per vector");
 		v("min_length", minLength, "Minimum vector length [m]");
 		v("max_point_gap", maxPointGap, "Largest gap between consecutive points inside one vector; caps the adaptive breakpoint [m]");
+		v("break_noise_sigmas", breakNoiseSigmas, "Adaptive breakpoint (Borges & Aldon 2004, the extraction Sec. 3.1 cites): the distance threshold adds this many times the scanner's range std. dev. (their 3 sigma_r; the paper gives no value); 0: geometry only");
 	}
 };
 
@@ -74,6 +76,8 @@ struct MapOptions
 	double mergeRegridTolerance = 0.005;  //!< Algorithm 2 line 20 keeps the reference's grid when the new vector lies within this of it [m]
 	bool wipeVectorlessBeams = false;  //!< beyond the paper: beams that made no vector also update the map (BeamWipe)
 	bool mergeHoldsWall = true;  //!< refuse a merge whose new grid would not hold the parts' wall (beyond the paper; VectorMerger::tryMerge)
+	int mergeCascadeRounds = 8;  //!< Algorithm 2 repeated with the merged vector at most this often per insertion (beyond the paper)
+	int mergeGroupRounds = 16;  //!< mergeAll (Eq. 4): a group absorbs the groups its span corresponds to at most this often (beyond the paper)
 
 	template <class V>
 	void visit(V&& v)
@@ -88,6 +92,8 @@ struct MapOptions
 		v("wipe_vectorless_beams", wipeVectorlessBeams, "Beyond the paper (Eq. 8 updates cells only through the wipe triangles of extracted vectors): beams that made no vector (ending in clutter or without a return) add n_visit to the map vectors' cells they cross and, when they end inside one, n_occupy + n_visit to that cell; sequential insertion with the scan's beams only (GlobalMap::insertScan with ScanBeams), not the batch path of the EM loop");
 		v("merge_holds_wall", mergeHoldsWall, "Algorithm 2 guard, beyond the paper: a merge is refused when at some column the occupancy-weighted mean of the parts' points lies outside the new grid's band ((half_width + 1/2) x resolution) around the fitted line, so a curved or bent wall is not straightened into one chord whose grid would clamp the wall's counts into its border rows; false: every corresponding set is merged (the paper's Algorithm 2)");
 		v("wipe_counts_beams", wipeCountsBeams, "Eq. 8: a wipe increment counts the beams of the triangle's fan crossing the cell, the unit of Algorithm 1 (false: 1 per cell per scan, the paper's Fig. 2)");
+		v("merge_cascade_rounds", mergeCascadeRounds, "Beyond the paper (Algorithm 2 merges once; a merged vector may correspond to further map vectors): sequential insertion merges the merged vector again while it finds correspondents, at most this many merges per inserted vector (a bound on one insertion's work); 1: the paper's single merge");
+		v("merge_group_rounds", mergeGroupRounds, "Beyond the paper: the batch merge (Eq. 4, GlobalMap::mergeAll) grows a group by the earlier groups its span corresponds to (Sec. 3.2 criteria), repeated with the grown span at most this many times; 1: direct correspondents only");
 	}
 };
 
@@ -275,6 +281,7 @@ struct DoorOptions
 	double maxDoorLength = 1.4;
 	double minStateDiffDeg = 10.0;  //!< two door states differ by at least this [deg]
 	double maxTeeOffset = 0.10;  //!< a candidate's end this close to a wall's interior is a T corner [m]
+	double minSweepDeg = 90.0;  //!< a leaf's swept arc is widened to at least this from its closed state [deg]
 
 	template <class V>
 	void visit(V&& v)
@@ -286,6 +293,7 @@ struct DoorOptions
 		v("min_door_length", minDoorLength, "Shortest door leaf [m]");
 		v("max_door_length", maxDoorLength, "Longest door leaf [m]");
 		v("min_state_diff_deg", minStateDiffDeg, "Two door states (leaf angles) differ by at least this [deg]");
+		v("min_sweep_deg", minSweepDeg, "Beyond the paper (Sec. 5.4 gives no door model): the arc a door leaf sweeps, where other vectors from the hinge count as its states, is at least this wide from the state nearest the wall (a hinged door opens to a right angle) even when the states seen span less [deg]");
 		v("max_tee_offset", maxTeeOffset, "A door candidate's end this close to the interior of a static vector longer than max_door_length makes a T corner (a wall merged across the doorway) [m]; 0: end corners only");
 	}
 };

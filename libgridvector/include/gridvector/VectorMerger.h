@@ -93,6 +93,8 @@ class VectorMerger
 	 * GridVector::line()). weighted=false gives the plain fit, for comparison. */
 	Line2D fitLine(const std::vector<const GridVector*>& parts, bool weighted = true) const;
 
+	const GridVectorConfig& config() const { return cfg_; }
+
    private:
 	GridVectorConfig cfg_;
 };

@@ -1,12 +1,12 @@
+#include <gridvector/NormalEquations.h>
 #include <gridvector/PoseGraph.h>
+#include <gridvector/SparseCholesky.h>
 
 #include <mrpt/graphslam/levmarq.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPosePDFGaussianInf.h>
 
-#include <Eigen/Sparse>
-#include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <chrono>
@@ -149,76 +149,61 @@ OptimizeStats PoseGraph::optimizeGaussNewton()
 	return st;
 }
 
+namespace
+{
+// H = sum J^T W J, b = sum J^T W r over the active edges at x (J = [A B] = de/d(x_i, x_j)).
+void linearise(const std::vector<TPose2D>& x, const std::vector<const PoseEdge*>& active, NormalEquations& eq)
+{
+	eq.clear();
+	for (size_t k = 0; k < active.size(); ++k)
+	{
+		const PoseEdge& e = *active[k];
+		const TPose2D &xi = x[e.from], &xj = x[e.to];
+		const Vector3d r = PoseGraph::error(xi, xj, e.z);
+		const double ci = std::cos(xi.phi), si = std::sin(xi.phi);
+		const double cz = std::cos(e.z.phi), sz = std::sin(e.z.phi);
+		Eigen::Matrix2d RzT, RiT, dRiT;
+		RzT << cz, sz, -sz, cz;
+		RiT << ci, si, -si, ci;
+		dRiT << -si, ci, -ci, -si;
+		const Eigen::Vector2d dt(xj.x - xi.x, xj.y - xi.y);
+		Matrix3d A = Matrix3d::Zero(), B = Matrix3d::Zero();
+		A.topLeftCorner<2, 2>() = -RzT * RiT;
+		A.topRightCorner<2, 1>() = RzT * dRiT * dt;
+		A(2, 2) = -1;
+		B.topLeftCorner<2, 2>() = RzT * RiT;
+		B(2, 2) = 1;
+		eq.add(k, A, B, e.scale * e.scale * e.information, r);
+	}
+}
+}  // namespace
+
 OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativeDecrease)
 {
 	OptimizeStats st;
 	const size_t n = nodes_.size();
 	if (n < 2) return st;
-	const int dim = int(3 * (n - 1));
 	auto col = [](uint32_t node) { return int(node) * 3 - 3; };  // node 0 is fixed
-	std::vector<Eigen::Triplet<double>> trip;
-	Eigen::VectorXd b(dim);
-	Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
-	bool analysed = false;
-	double lambda = 1e-4;
+	std::vector<std::pair<uint32_t, uint32_t>> pairs;  // H's pattern: fixed while the active edges are
+	std::vector<const PoseEdge*> active;
+	for (const auto& e : edges_)
+		if (e.active && e.from != e.to) pairs.emplace_back(e.from, e.to), active.push_back(&e);
+	NormalEquations eq(n, pairs);
+	SparseCholesky solver;
+	solver.analyze(eq.H());
+	double lambda = 1e-4, nu = 2;
 	double err = updateResiduals(nodes_, true);
 	st.initialError = err;
+	bool linearised = false;  // H and b are at nodes_ (a rejected step changes only lambda)
 	for (int it = 0; it < maxIterations; ++it)
 	{
-		trip.clear();
-		b.setZero();
-		for (int k = 0; k < dim; ++k) trip.emplace_back(k, k, lambda);
-		for (const auto& e : edges_)
-		{
-			if (!e.active || e.from == e.to) continue;
-			const TPose2D &xi = nodes_[e.from], &xj = nodes_[e.to];
-			const Vector3d r = error(xi, xj, e.z);
-			const double ci = std::cos(xi.phi), si = std::sin(xi.phi);
-			const double cz = std::cos(e.z.phi), sz = std::sin(e.z.phi);
-			Eigen::Matrix2d RzT, RiT, dRiT;
-			RzT << cz, sz, -sz, cz;
-			RiT << ci, si, -si, ci;
-			dRiT << -si, ci, -ci, -si;
-			const Eigen::Vector2d dt(xj.x - xi.x, xj.y - xi.y);
-			Matrix3d A = Matrix3d::Zero(), B = Matrix3d::Zero();
-			A.topLeftCorner<2, 2>() = -RzT * RiT;
-			A.topRightCorner<2, 1>() = RzT * dRiT * dt;
-			A(2, 2) = -1;
-			B.topLeftCorner<2, 2>() = RzT * RiT;
-			B(2, 2) = 1;
-			const Matrix3d W = e.scale * e.scale * e.information;
-			const int ci0 = e.from ? col(e.from) : -1, cj0 = e.to ? col(e.to) : -1;
-			auto block = [&](int r0, int c0, const Matrix3d& M) {
-				for (int p = 0; p < 3; ++p)
-					for (int q = 0; q < 3; ++q) trip.emplace_back(r0 + p, c0 + q, M(p, q));
-			};
-			if (ci0 >= 0)
-			{
-				block(ci0, ci0, A.transpose() * W * A);
-				b.segment<3>(ci0) += A.transpose() * W * r;
-			}
-			if (cj0 >= 0)
-			{
-				block(cj0, cj0, B.transpose() * W * B);
-				b.segment<3>(cj0) += B.transpose() * W * r;
-			}
-			if (ci0 >= 0 && cj0 >= 0)
-			{
-				const Matrix3d AB = A.transpose() * W * B;
-				block(ci0, cj0, AB);
-				block(cj0, ci0, AB.transpose());
-			}
-		}
-		Eigen::SparseMatrix<double> H(dim, dim);
-		H.setFromTriplets(trip.begin(), trip.end());
-		if (!analysed) solver.analyzePattern(H), analysed = true;
-		solver.factorize(H);
-		if (solver.info() != Eigen::Success)
+		if (!linearised) linearise(nodes_, active, eq), linearised = true;
+		if (!solver.factorize(eq.H(), lambda))
 		{
 			lambda *= 10;
 			continue;
 		}
-		const Eigen::VectorXd dx = solver.solve(-b);
+		const Eigen::VectorXd dx = solver.solve(-eq.b());
 		std::vector<TPose2D> cand = nodes_;
 		for (size_t i = 1; i < n; ++i)
 		{
@@ -226,21 +211,25 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 			cand[i].y += dx(col(uint32_t(i)) + 1);
 			cand[i].phi = mrpt::math::wrapToPi(cand[i].phi + dx(col(uint32_t(i)) + 2));
 		}
-		// the structure of H (pattern) may change with lambda: keep it fixed (diagonal always present)
 		const double cerr = updateResiduals(cand, true);
 		++st.iterations;
+		// Nielsen's damping update: gain ratio rho = actual / predicted decrease
 		if (cerr <= err)
 		{
 			const double rel = (err - cerr) / std::max(1e-12, err);
+			const double predicted = dx.dot(lambda * dx - eq.b());  // r^T W r minus the linear model's
+			const double rho = predicted > 0 ? (err - cerr) / predicted : 1;
+			lambda = std::max(1e-9, lambda * std::max(1.0 / 3, 1 - std::pow(2 * rho - 1, 3)));
+			nu = 2;
 			nodes_.swap(cand);
 			err = cerr;
-			lambda = std::max(1e-9, lambda / 3);
+			linearised = false;
 			if (rel < minRelativeDecrease || dx.cwiseAbs().maxCoeff() < 1e-7) break;
 		}
 		else
 		{
 			updateResiduals(nodes_, true);  // restore the scales of the kept estimate
-			lambda *= 10;
+			lambda *= nu, nu *= 2;
 			if (lambda > 1e8) break;
 		}
 	}

@@ -2,7 +2,7 @@
 # Installs gridvector's build and test dependencies from Debian's packages.
 set -euo pipefail
 SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-PKGS="build-essential cmake pkg-config libeigen3-dev libgtest-dev googletest
+PKGS="build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgtest-dev googletest
  libmrpt-maps-dev libmrpt-slam-dev libmrpt-graphslam-dev libmrpt-obs-dev libmrpt-gui-dev
  mrpt-apps mrpt-common python3 zlib1g-dev"
 missing=""

@@ -44,7 +44,7 @@ struct OptimizeStats
 
 /** Nodes x_0..x_{n-1} (x_0 fixed) and edges; stored so they convert to
  * MRPT's CNetworkOfPoses2DInf. optimize() minimises Eq. 22 either with the
- * built-in sparse Gauss-Newton/Levenberg-Marquardt (Eigen SimplicialLDLT,
+ * built-in sparse Gauss-Newton/Levenberg-Marquardt (CHOLMOD supernodal LL^T,
  * dynamic covariance scaling on registration edges) or with MRPT's
  * optimize_graph_spa_levmarq; both then deactivate edges whose chi2 stays
  * above reject_chi2 and re-optimise. */

@@ -81,8 +81,8 @@ TEST(OccupancyConversion, AlignedCellsReproduceEq6Exactly)
 	{
 		EXPECT_NEAR(R.probability(ix, 1), 0.95, 1e-6);
 		EXPECT_NEAR(R.probability(ix, 2), 0.05, 1e-6);
-		EXPECT_NEAR(R.probability(ix, 0), 0.5, 1e-6);  // the prior: behind the wall
-		EXPECT_TRUE(R.known(ix, 0));
+		EXPECT_NEAR(R.probability(ix, 0), 0.5, 1e-6);  // the prior behind the wall: no evidence
+		EXPECT_FALSE(R.known(ix, 0));
 	}
 }
 
@@ -102,18 +102,60 @@ TEST(OccupancyConversion, MeanPoolingAveragesTheCounts)
 	for (int c = 0; c < r.cols(); ++c) r.cell(1, c).n_occupy = 5, r.cell(1, c).n_visit = 6;
 	const std::vector<GridVector> rv{r};
 	const OccupancyRaster G = OccupancyConversion::rasterise(rv, -0.5, -0.5, 0.02, 125, 125, 1);
-	int agree = 0, total = 0;
+	int agree = 0, total = 0, unknown = 0;
 	for (int iy = 0; iy < G.ny; ++iy)
 		for (int ix = 0; ix < G.nx; ++ix)
 		{
 			const TPoint2D p(-0.5 + (ix + 0.5) * 0.02, -0.5 + (iy + 0.5) * 0.02);
 			const double want = OccupancyConversion::occupancyAt(rv, p);
-			if (!G.known(ix, iy) && want == 0.5) continue;
-			++total;
-			agree += std::abs(G.probability(ix, iy) - want) < 1e-6;
+			++(G.known(ix, iy) ? total : unknown);
+			agree += std::abs(G.probability(ix, iy) - want) < 1e-6;  // unknown: the prior or nothing, 1/2
 		}
-	EXPECT_GT(total, 1000);
-	EXPECT_EQ(agree, total);
+	EXPECT_GT(total, 500);  // the observed row: 2.1 m x 0.1 m
+	EXPECT_GT(unknown, 10000);
+	EXPECT_EQ(agree, total + unknown);
+}
+
+TEST(OccupancyConversion, UnobservedMeansAtThePriorNotAtOneHalf)
+{
+	GridOptions g;
+	g.priorOccupy = 1.0 / 3, g.priorVisit = 1;
+	// at y = 0.02 (off MRPT's cell edges): rows behind [-0.13, -0.03) never observed, wall, front
+	GridVector v({0, 0.02}, {2, 0.02}, g);
+	for (int c = 0; c < v.cols(); ++c)
+	{
+		v.cell(1, c).n_occupy += 9, v.cell(1, c).n_visit += 10;  // wall: 9 hits in 10 observations
+		v.cell(2, c).n_occupy = 2.5f, v.cell(2, c).n_visit = 5;  // observed, Eq. 6 exactly 1/2
+	}
+	const std::vector<GridVector> m{v};
+	const double wall = (1.0 / 3 + 9) / 11;
+	EXPECT_NEAR(OccupancyConversion::occupancyAt(m, {0.55, 0.02}, g), wall, 1e-6);
+	EXPECT_NEAR(OccupancyConversion::occupancyAt(m, {0.55, -0.08}, g), 1.0 / 3, 1e-6);  // the prior's counts
+	EXPECT_NEAR(OccupancyConversion::occupancyAt(m, {0.55, 1.0}, g), 1.0 / 3, 1e-6);  // nothing covers it
+	// at the vector's own resolution: the prior row stays unknown, the others are Eq. 6
+	const OccupancyRaster R = OccupancyConversion::rasterise(m, 0.0, -0.13, 0.1, 20, 3, 0, true, g);
+	for (int ix = 0; ix < 20; ++ix)
+	{
+		EXPECT_FALSE(R.known(ix, 0)) << ix;
+		EXPECT_NEAR(R.probability(ix, 1), wall, 1e-6) << ix;
+		EXPECT_TRUE(R.known(ix, 2)) << ix;
+		EXPECT_EQ(R.probability(ix, 2), 0.5) << ix;
+	}
+	// one coarse cell over the prior row and the row at 1/2: max pooling takes the observed 1/2
+	GridVector u({0, 0}, {2, 0}, g);
+	for (int c = 0; c < u.cols(); ++c) u.cell(1, c).n_occupy = 2.5f, u.cell(1, c).n_visit = 5;
+	const OccupancyRaster C = OccupancyConversion::rasterise({u}, 0.0, -0.15, 0.3, 6, 1, 0, true, g);
+	for (int ix = 0; ix < 6; ++ix) EXPECT_EQ(C.probability(ix, 0), 0.5) << ix;  // not the prior's 1/3
+	// the MRPT grid: unknown behind the wall (not p(free) = 2/3), Eq. 6 on it
+	OccupancyConversionOptions opt;
+	opt.resolution = 0.1, opt.margin = 0.3;
+	const auto grid = OccupancyConversion::toOccupancyGrid(m, opt, g);
+	for (double x = 0.25; x < 1.8; x += 0.1)
+	{
+		EXPECT_EQ(grid.getPos(x, -0.05), 0.5f) << x;
+		EXPECT_NEAR(1.0 - grid.getPos(x, 0.05), wall, 0.01) << x;
+		EXPECT_NEAR(1.0 - grid.getPos(x, 0.15), 0.5, 0.01) << x;
+	}
 }
 
 TEST(OccupancyConversion, EmptyMapIsAllUnknown)

@@ -84,13 +84,14 @@ std::vector<uint8_t> bandMask(const std::vector<GridVector>& vs, const mrpt::map
 
 int gSamples = 0;  // --samples, else [gridvector_occupancy] samples_per_axis
 bool gMaxPooling = true;  // [gridvector_occupancy] max_pooling
+GridOptions gGrid;  // [gridvector_grid]: the cells' prior
 int gRepeat = 1;  // --repeat
 
 Agreement agreement(const std::vector<GridVector>& vs, const mrpt::maps::COccupancyGridMap2D& mrptGrid, double band)
 {
 	const OccupancyRaster R = OccupancyConversion::rasterise(vs, mrptGrid.getXMin(), mrptGrid.getYMin(),
 															 mrptGrid.getResolution(), int(mrptGrid.getSizeX()),
-															 int(mrptGrid.getSizeY()), gSamples, gMaxPooling);
+															 int(mrptGrid.getSizeY()), gSamples, gMaxPooling, gGrid);
 	const auto mask = bandMask(vs, mrptGrid, band);
 	Agreement a;
 	for (int iy = 0; iy < R.ny; ++iy)
@@ -304,6 +305,7 @@ int main(int argc, char** argv)
 			gRepeat = int(args.getInt("repeat", 1, 1, 100));
 			gSamples = int(args.getInt("samples", cfg.occupancy.samplesPerAxis, 0, 16));
 			gMaxPooling = cfg.occupancy.maxPooling;
+			gGrid = cfg.grid;
 			std::printf("| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/n_v static | n_g/cells | agree seq | agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 			for (const auto& log : args.positional()) benchLog(log, cfg, maxScans, band);
 			return 0;

@@ -128,7 +128,7 @@ int run(const io::ArgParser& args)
 	app::writeSvg(dir + "vectors.svg", res.finalVectors, doors, res.poses);
 	app::writeDoors(dir + "doors.txt", doors);
 	app::writeGvmap(dir + "map.gvmap", cfg, res.finalVectors);
-	const auto grid = OccupancyConversion::toOccupancyGrid(res.finalVectors, cfg.occupancy);
+	const auto grid = OccupancyConversion::toOccupancyGrid(res.finalVectors, cfg.occupancy, cfg.grid);
 	MapExport::writePng(grid, dir + "occupancy.png");
 	MapExport::writeRosMap(grid, dir + "occupancy.pgm", dir + "occupancy.yaml");
 	fig.memory = MemoryAccounting::account(res.finalVectors, 0.1);

@@ -96,7 +96,7 @@ int run(const io::ArgParser& args)
 		throw std::runtime_error((poseSource == "log" ? input : poseSource) + ": no scan has a pose");
 
 	const auto& vectors = map.vectors();
-	const auto grid = OccupancyConversion::toOccupancyGrid(vectors, cfg.occupancy);
+	const auto grid = OccupancyConversion::toOccupancyGrid(vectors, cfg.occupancy, cfg.grid);
 	const std::string dir = outDir.create() + "/";
 	map.saveToFile(dir + "map.gvmap");
 	MapExport::writeVectorsText(vectors, dir + "vectors.txt");

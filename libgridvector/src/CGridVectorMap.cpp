@@ -44,7 +44,8 @@ CGridVectorMap::CGridVectorMap(const gridvector::GridVectorConfig& cfg)
 // Eq. 6: every cell of an MRPT grid from the vectors' counts.
 COccupancyGridMap2D CGridVectorMap::getAsOccupancyGrid() const
 {
-	return gridvector::OccupancyConversion::toOccupancyGrid(map_.vectors(), map_.config().occupancy);
+	return gridvector::OccupancyConversion::toOccupancyGrid(map_.vectors(), map_.config().occupancy,
+														   map_.config().grid);
 }
 
 void CGridVectorMap::setConfig(const gridvector::GridVectorConfig& cfg)

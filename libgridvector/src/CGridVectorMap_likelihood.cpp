@@ -1,5 +1,6 @@
 // CGridVectorMap: observation likelihood as a likelihood field over the vectors,
 // each weighted by the occupancy (n_occupy / n_visit) of the cell the point falls in.
+#include <gridvector/OccupancyConversion.h>
 #include <gridvector/VectorIndex.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
@@ -20,11 +21,11 @@ double distanceToSegment(const GridVector& v, const TPoint2D& p)
 	return std::hypot(g.x - u, g.y);
 }
 
-// Occupancy of the cell of v nearest to p (prior 1/2 where no cell covers p).
-double occupancyNear(const GridVector& v, const TPoint2D& p)
+// Occupancy of the cell of v nearest to p (the prior's ratio where no cell covers p).
+double occupancyNear(const GridVector& v, const TPoint2D& p, double prior)
 {
 	int row, col;
-	if (!v.cellOf(p, row, col)) return 0.5;
+	if (!v.cellOf(p, row, col)) return prior;
 	return v.cell(row, col).occupancy();
 }
 }  // namespace
@@ -59,6 +60,7 @@ double CGridVectorMap::internal_computeObservationLikelihood(
 	for (uint32_t s : slots) near.push_back(&map_.vectors()[s]);
 	const double inv2s2 = 1.0 / (2 * likelihoodOptions.sigma * likelihoodOptions.sigma);
 	const double zr = likelihoodOptions.zRandom, zh = 1.0 - zr;
+	const double prior = gridvector::OccupancyConversion::priorRatio(map_.config().grid);
 	double logLik = 0;
 	for (size_t i = 0; i < pts.size(); i += size_t(likelihoodOptions.decimation))
 	{
@@ -69,7 +71,7 @@ double CGridVectorMap::internal_computeObservationLikelihood(
 			const double d = distanceToSegment(*v, pts[i]);
 			if (d < best) best = d, bestV = v;
 		}
-		const double hit = bestV ? occupancyNear(*bestV, pts[i]) * std::exp(-best * best * inv2s2) : 0.0;
+		const double hit = bestV ? occupancyNear(*bestV, pts[i], prior) * std::exp(-best * best * inv2s2) : 0.0;
 		logLik += std::log(zh * hit + zr);
 	}
 	return logLik;

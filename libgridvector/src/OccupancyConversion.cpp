@@ -23,10 +23,16 @@ std::pair<double, double> OccupancyConversion::countsAt(const std::vector<GridVe
 	return {o, v};
 }
 
-double OccupancyConversion::occupancyAt(const std::vector<GridVector>& vectors, const TPoint2D& p)
+double OccupancyConversion::occupancyAt(const std::vector<GridVector>& vectors, const TPoint2D& p,
+									   const GridOptions& grid)
 {
 	const auto [o, v] = countsAt(vectors, p);
-	return v > 0 ? o / v : 0.5;
+	return v > 0 ? o / v : priorRatio(grid);
+}
+
+double OccupancyConversion::priorRatio(const GridOptions& grid)
+{
+	return double(float(grid.priorOccupy)) / double(float(grid.priorVisit));
 }
 
 bool OccupancyConversion::bounds(const std::vector<GridVector>& vectors, double& xmin, double& ymin,
@@ -109,11 +115,11 @@ void addVector(const GridVector& g, SampleRaster& S)
 	}
 }
 
-/** Observed: the counts hold more than the prior (a sum of priors is exactly 1/2). */
-bool informative(float o, float v) { return v > 0 && std::abs(double(o) / v - 0.5) > 1e-6; }
+/** Observed: the counts are off the prior's ratio (a sum of priors lies on it). */
+bool informative(float o, float v, double prior) { return v > 0 && std::abs(double(o) / v - prior) > 1e-6; }
 
-// Pools the s x s sample points of every output cell into it.
-void pool(const SampleRaster& S, int s, bool maxPooling, OccupancyRaster& R)
+// Pools the s x s sample points of every output cell into it; no observed point: unknown.
+void pool(const SampleRaster& S, int s, bool maxPooling, double prior, OccupancyRaster& R)
 {
 	const double weight = 1.0 / (double(s) * s);
 	for (int iy = 0; iy < R.ny; ++iy)
@@ -125,12 +131,12 @@ void pool(const SampleRaster& S, int s, bool maxPooling, OccupancyRaster& R)
 				{
 					const float o = S.occ[S.index(fx, fy)], v = S.visit[S.index(fx, fy)];
 					sumO += o, sumV += v;
-					if (informative(o, v) && o / v > bestP) bestP = o / v, bestO = o, bestV = v;
+					if (informative(o, v, prior) && o / v > bestP) bestP = o / v, bestO = o, bestV = v;
 				}
 			const size_t i = size_t(iy) * R.nx + ix;
-			const bool useBest = maxPooling && bestP >= 0;
-			R.occ[i] = float(useBest ? bestO : weight * sumO);
-			R.visit[i] = float(useBest ? bestV : weight * sumV);
+			const bool observed = bestP >= 0, useBest = maxPooling && observed;
+			R.occ[i] = float(!observed ? 0.0 : useBest ? bestO : weight * sumO);
+			R.visit[i] = float(!observed ? 0.0 : useBest ? bestV : weight * sumV);
 		}
 }
 }  // namespace
@@ -138,7 +144,7 @@ void pool(const SampleRaster& S, int s, bool maxPooling, OccupancyRaster& R)
 // Eq. 6 at the sample points of every output cell, pooled per cell.
 OccupancyRaster OccupancyConversion::rasterise(const std::vector<GridVector>& vectors, double xMin,
 											   double yMin, double res, int nx, int ny, int samplesPerAxis,
-											   bool maxPooling)
+											   bool maxPooling, const GridOptions& grid)
 {
 	OccupancyRaster R;
 	R.xMin = xMin, R.yMin = yMin, R.resolution = res;
@@ -152,20 +158,20 @@ OccupancyRaster OccupancyConversion::rasterise(const std::vector<GridVector>& ve
 		for (const GridVector& g : vectors) s = std::max(s, int(std::ceil(res / g.resolution() - 1e-6)));
 	SampleRaster S(R, s);
 	for (const GridVector& g : vectors) addVector(g, S);
-	pool(S, s, maxPooling, R);
+	pool(S, s, maxPooling, priorRatio(grid), R);
 	return R;
 }
 
 OccupancyRaster OccupancyConversion::rasterise(const std::vector<GridVector>& vectors,
-											   const OccupancyConversionOptions& opt)
+											   const OccupancyConversionOptions& opt, const GridOptions& grid)
 {
 	double x0, y0, x1, y1;
-	if (!bounds(vectors, x0, y0, x1, y1)) return rasterise(vectors, 0, 0, opt.resolution, 0, 0);
+	if (!bounds(vectors, x0, y0, x1, y1)) return rasterise(vectors, 0, 0, opt.resolution, 0, 0, 0, true, grid);
 	x0 = std::floor((x0 - opt.margin) / opt.resolution) * opt.resolution;
 	y0 = std::floor((y0 - opt.margin) / opt.resolution) * opt.resolution;
 	const int nx = int(std::ceil((x1 + opt.margin - x0) / opt.resolution));
 	const int ny = int(std::ceil((y1 + opt.margin - y0) / opt.resolution));
-	return rasterise(vectors, x0, y0, opt.resolution, nx, ny, opt.samplesPerAxis, opt.maxPooling);
+	return rasterise(vectors, x0, y0, opt.resolution, nx, ny, opt.samplesPerAxis, opt.maxPooling, grid);
 }
 
 void OccupancyConversion::fill(const OccupancyRaster& R, mrpt::maps::COccupancyGridMap2D& grid)
@@ -176,22 +182,24 @@ void OccupancyConversion::fill(const OccupancyRaster& R, mrpt::maps::COccupancyG
 }
 
 void OccupancyConversion::fill(const std::vector<GridVector>& vectors,
-							   mrpt::maps::COccupancyGridMap2D& grid, int samplesPerAxis, bool maxPooling)
+							   mrpt::maps::COccupancyGridMap2D& grid, int samplesPerAxis, bool maxPooling,
+							   const GridOptions& gridOptions)
 {
 	const OccupancyRaster R = rasterise(vectors, grid.getXMin(), grid.getYMin(), grid.getResolution(),
-										int(grid.getSizeX()), int(grid.getSizeY()), samplesPerAxis, maxPooling);
+										int(grid.getSizeX()), int(grid.getSizeY()), samplesPerAxis, maxPooling,
+										gridOptions);
 	fill(R, grid);
 }
 
 // Eq. 6: the global occupancy grid from the grid vectors.
 mrpt::maps::COccupancyGridMap2D OccupancyConversion::toOccupancyGrid(
-	const std::vector<GridVector>& vectors, const OccupancyConversionOptions& opt)
+	const std::vector<GridVector>& vectors, const OccupancyConversionOptions& opt, const GridOptions& gridOptions)
 {
 	mrpt::maps::COccupancyGridMap2D grid;
 	double x0, y0, x1, y1;
 	if (!bounds(vectors, x0, y0, x1, y1)) x0 = y0 = -opt.margin, x1 = y1 = opt.margin;
 	grid.setSize(x0 - opt.margin, x1 + opt.margin, y0 - opt.margin, y1 + opt.margin, opt.resolution, 0.5f);
-	fill(vectors, grid, opt.samplesPerAxis, opt.maxPooling);  // in the grid's own (snapped) geometry
+	fill(vectors, grid, opt.samplesPerAxis, opt.maxPooling, gridOptions);  // in the grid's own (snapped) geometry
 	return grid;
 }
 

@@ -16,7 +16,11 @@ namespace gridvector
  * containing it. Max pooling keeps the counts of the observed point with the
  * largest occupancy (a cell holding any obstacle is occupied, as in a
  * ray-casting grid or OctoMap's inner nodes); mean pooling averages the counts
- * over the points. p = occ / visit; unknown where visit == 0. */
+ * over the points. A point is observed where its counts are off the prior's
+ * ratio ([gridvector_grid] prior_occupy / prior_visit): a never-observed cell
+ * holds the prior, and any sum of priors (overlapping or merged cells) lies on
+ * its ratio. A cell with no observed point is unknown (the prior is no
+ * evidence). p = occ / visit; unknown where visit == 0. */
 struct OccupancyRaster
 {
 	double xMin = 0, yMin = 0, resolution = 0.1;  //!< lower-left corner of cell (0, 0)
@@ -24,7 +28,7 @@ struct OccupancyRaster
 	std::vector<float> occ, visit;  //!< row-major, iy * nx + ix
 
 	bool known(int ix, int iy) const { return visit[size_t(iy) * nx + ix] > 0; }
-	/** Eq. 6; 0.5 where no vector covers the cell. */
+	/** Eq. 6; 0.5 (MRPT's unknown) where no observed point lies in the cell. */
 	double probability(int ix, int iy) const
 	{
 		const size_t i = size_t(iy) * nx + ix;
@@ -42,24 +46,30 @@ class OccupancyConversion
 	/** Eq. 6 at one point: (sum n_occupy, sum n_visit) of all cells containing p (Eq. 7). */
 	static std::pair<double, double> countsAt(const std::vector<GridVector>& vectors,
 											  const mrpt::math::TPoint2D& p);
-	/** Eq. 6 at one point; 0.5 where no vector covers it. */
-	static double occupancyAt(const std::vector<GridVector>& vectors, const mrpt::math::TPoint2D& p);
+	/** Eq. 6 at one point; the prior's ratio where no vector covers it.
+	 * `grid`: the vectors' grid options (their prior, see priorRatio). */
+	static double occupancyAt(const std::vector<GridVector>& vectors, const mrpt::math::TPoint2D& p,
+							  const GridOptions& grid = {});
+	/** prior_occupy / prior_visit as the cells hold them (floats): the
+	 * occupancy of a never-observed cell and of any sum of such cells. */
+	static double priorRatio(const GridOptions& grid);
 
 	/** Raster over the vectors' bounding box (plus margin). */
 	static OccupancyRaster rasterise(const std::vector<GridVector>& vectors,
-									 const OccupancyConversionOptions& opt = {});
+									 const OccupancyConversionOptions& opt = {}, const GridOptions& grid = {});
 	/** Raster with a given geometry (cells of side res from (xMin, yMin)). */
 	static OccupancyRaster rasterise(const std::vector<GridVector>& vectors, double xMin, double yMin,
 									 double res, int nx, int ny, int samplesPerAxis = 0,
-									 bool maxPooling = true);
+									 bool maxPooling = true, const GridOptions& grid = {});
 
 	/** Eq. 6 as an MRPT occupancy grid; unknown cells stay 0.5. Note MRPT's
 	 * convention: a cell's value is p(free) = 1 - p(occupied). */
 	static mrpt::maps::COccupancyGridMap2D toOccupancyGrid(const std::vector<GridVector>& vectors,
-														   const OccupancyConversionOptions& opt = {});
+														   const OccupancyConversionOptions& opt = {},
+														   const GridOptions& grid = {});
 	/** Fills an existing grid (its size and resolution are kept). */
 	static void fill(const std::vector<GridVector>& vectors, mrpt::maps::COccupancyGridMap2D& grid,
-					 int samplesPerAxis = 0, bool maxPooling = true);
+					 int samplesPerAxis = 0, bool maxPooling = true, const GridOptions& gridOptions = {});
 	static void fill(const OccupancyRaster& raster, mrpt::maps::COccupancyGridMap2D& grid);
 	/** Bounding box of all vectors' grid bands: {xmin, ymin, xmax, ymax}; false if none. */
 	static bool bounds(const std::vector<GridVector>& vectors, double& xmin, double& ymin, double& xmax,

@@ -229,6 +229,8 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 		else
 		{
 			updateResiduals(nodes_, true);  // restore the scales of the kept estimate
+			// converged as for an accepted step: the cost changes by less than the tolerance
+			if ((cerr - err) / std::max(1e-12, err) < minRelativeDecrease) break;
 			lambda *= nu, nu *= 2;
 			if (lambda > 1e8) break;
 		}

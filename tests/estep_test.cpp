@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 using namespace gridvector;
 using mrpt::math::TPoint2D;
 
@@ -146,10 +148,77 @@ TEST(EStep, FinalSplitDemotesPlacesOccupiedPartOfTheTime)
 	EXPECT_NEAR(out[0].length(), 1.0, 1e-9);
 	EXPECT_EQ(out[1].state, VectorState::Dynamic);
 	EXPECT_NEAR(out[1].length(), 1.0, 1e-9);
-	EXPECT_EQ(out[0].id, EStep::childId(child.id, 0));
-	EXPECT_EQ(out[1].id, EStep::childId(child.id, 1));
+	EXPECT_EQ(out[0].id, 9u);  // new ids above every child's
+	EXPECT_EQ(out[1].id, 10u);
 	EXPECT_EQ(out[2].id, moving.id);  // dynamic children stay as they are
 	EXPECT_EQ(out[2].state, VectorState::Dynamic);
+	std::vector<uint64_t> parents;
+	e.finalSplit({child, moving}, &parents);
+	EXPECT_EQ(parents, (std::vector<uint64_t>{child.id, child.id, moving.id}));
+}
+
+TEST(EStep, ChildIdsStayUniqueBeyond256Pieces)
+{
+	// 90 m of 0.3 m static and dynamic stretches: 300 pieces at min_piece_length 0.3
+	std::vector<double> prof;
+	for (int k = 0; k < 150; ++k) prof.insert(prof.end(), {0.9, 0.9, 0.9, 0.1, 0.1, 0.1});
+	std::vector<GridVector> parents{withProfile(prof), withProfile(prof)};
+	parents[1].id = parents[0].id + 1;  // piece 256 of the first met piece 0 of the second (id * 256 + k)
+	const EStepResult r = EStep().run(parents);
+	ASSERT_EQ(r.children.size(), 600u);
+	std::set<uint64_t> ids;
+	for (size_t p = 0; p < parents.size(); ++p)
+	{
+		ASSERT_EQ(r.childrenOf[p].size(), 300u);
+		for (size_t k = 0; k < 300; ++k)
+		{
+			const uint64_t id = r.children[r.childrenOf[p][k]].id;
+			EXPECT_EQ(id, EStep::childId(parents[p].id, k));
+			EXPECT_EQ(EStep::parentIdOf(id), parents[p].id);
+			ids.insert(id);
+		}
+	}
+	EXPECT_EQ(ids.size(), 600u);
+}
+
+TEST(EStep, ChildIdsAreRecoverableOrRefusedOverGenerations)
+{
+	// generation after generation of the last piece: every parent recoverable until the id is full
+	std::vector<uint64_t> chain{1000};
+	while (chain.back() < (uint64_t(1) << (64 - EStep::kChildBits)))
+		chain.push_back(EStep::childId(chain.back(), (size_t(1) << EStep::kChildBits) - 1));
+	ASSERT_EQ(chain.size(), 4u);  // 1000 < 2^10: three generations of 16 bits fit in 64
+	for (size_t g = 1; g < chain.size(); ++g) EXPECT_EQ(EStep::parentIdOf(chain[g]), chain[g - 1]);
+	EXPECT_THROW(EStep::childId(chain.back(), 0), std::overflow_error);  // never wraps around
+	EXPECT_THROW(EStep::childId(1, size_t(1) << EStep::kChildBits), std::overflow_error);
+	EXPECT_EQ(EStep::childId(1, (size_t(1) << EStep::kChildBits) - 1) + 1, EStep::childId(2, 0));
+}
+
+TEST(EStep, FinalSplitIdsStayUniqueAcrossGenerations)
+{
+	// a per-scan vector whose id is another's first child's: childId(child, k) of the
+	// final split would give the other's child ids again
+	std::vector<GridVector> parents{withProfile(runs({{10, 0.95}, {10, 0.6}})), withProfile(runs({{10, 0.1}}))};
+	parents[0].id = 1;
+	parents[1].id = EStep::childId(1, 0);
+	EStepOptions o;
+	o.finalStaticThreshold = 0.7;
+	const EStep e(o);
+	const EStepResult r = e.run(parents);
+	ASSERT_EQ(r.children.size(), 2u);
+	std::vector<uint64_t> parentIds;
+	const auto out = e.finalSplit(r.children, &parentIds);
+	ASSERT_EQ(out.size(), 3u);  // wall, door, the other's dynamic child
+	ASSERT_EQ(parentIds.size(), out.size());
+	std::set<uint64_t> ids;
+	for (size_t i = 0; i < out.size(); ++i)
+	{
+		ids.insert(out[i].id);
+		const size_t k = parentIds[i] == r.children[0].id ? 0 : 1;
+		ASSERT_EQ(parentIds[i], r.children[k].id);
+		EXPECT_EQ(EStep::parentIdOf(parentIds[i]), parents[k].id);  // and on to the per-scan vector
+	}
+	EXPECT_EQ(ids.size(), out.size());
 }
 
 TEST(EStep, FinalSplitFindsAStretchClearlyBelowItsWall)

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <unordered_map>
 
 namespace gridvector
@@ -93,9 +95,27 @@ GridVector EStep::subVector(const GridVector& parent, const ProfilePiece& p) con
 	return child;
 }
 
+uint64_t EStep::childId(uint64_t parentId, size_t k)
+{
+	constexpr uint64_t pieces = uint64_t(1) << kChildBits, parents = uint64_t(1) << (64 - kChildBits);
+	if (k >= pieces || parentId >= parents)
+		throw std::overflow_error("EStep::childId: piece " + std::to_string(k) + " of vector id " +
+								  std::to_string(parentId) + " has no id (at most " + std::to_string(pieces) +
+								  " pieces per vector, parent ids below 2^" + std::to_string(64 - kChildBits) + ")");
+	return (parentId << kChildBits) | k;
+}
+
 std::vector<GridVector> EStep::split(const GridVector& parent,
 									 const std::vector<ProfilePiece>& previous,
 									 std::vector<ProfilePiece>* piecesOut) const
+{
+	std::vector<GridVector> out = pieceVectors(parent, previous, piecesOut);
+	for (size_t k = 0; k < out.size(); ++k) out[k].id = childId(parent.id, k);
+	return out;
+}
+
+std::vector<GridVector> EStep::pieceVectors(const GridVector& parent, const std::vector<ProfilePiece>& previous,
+											std::vector<ProfilePiece>* piecesOut) const
 {
 	const int minCols =
 		std::max(1, int(std::ceil(opts_.minPieceLength / parent.resolution() - 1e-9)));
@@ -113,7 +133,6 @@ std::vector<GridVector> EStep::split(const GridVector& parent,
 		}
 		else
 			out.push_back(subVector(parent, ps[k]));
-		out.back().id = childId(parent.id, k);
 	}
 	return out;
 }
@@ -144,15 +163,21 @@ EStepResult EStep::run(const std::vector<GridVector>& parents, const EStepResult
 
 // Eq. 14 on the converged map: static children must be occupied in nearly every observation,
 // and a stretch reading clearly less than the rest of its vector is a place that changed.
-std::vector<GridVector> EStep::finalSplit(const std::vector<GridVector>& children) const
+std::vector<GridVector> EStep::finalSplit(const std::vector<GridVector>& children,
+										  std::vector<uint64_t>* parentIds) const
 {
 	std::vector<GridVector> out;
 	out.reserve(children.size());
+	if (parentIds) parentIds->clear();
+	uint64_t maxId = 0;
+	for (const GridVector& c : children) maxId = std::max(maxId, c.id);
+	uint64_t nextId = maxId + 1;  // 0 once every id is taken
 	for (const GridVector& c : children)
 	{
 		if (c.state == VectorState::Dynamic)
 		{
 			out.push_back(c);
+			if (parentIds) parentIds->push_back(c.id);
 			continue;
 		}
 		EStepOptions o = opts_;
@@ -163,7 +188,14 @@ std::vector<GridVector> EStep::finalSplit(const std::vector<GridVector>& childre
 			std::nth_element(prof.begin(), prof.begin() + long(prof.size() / 2), prof.end());
 			o.staticThreshold = std::max(o.staticThreshold, prof[prof.size() / 2] - opts_.finalRelativeDrop);
 		}
-		for (auto& k : EStep(o, grid_).split(c)) out.push_back(std::move(k));
+		auto kids = EStep(o, grid_).pieceVectors(c, {}, nullptr);
+		for (auto& k : kids)
+		{
+			if (kids.size() > 1 && nextId == 0) throw std::overflow_error("EStep::finalSplit: no id left for a piece");
+			k.id = kids.size() == 1 ? c.id : nextId++;
+			out.push_back(std::move(k));
+			if (parentIds) parentIds->push_back(c.id);
+		}
 	}
 	return out;
 }

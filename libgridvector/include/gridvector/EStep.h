@@ -36,7 +36,7 @@ struct EStepResult
  * dynamic, mixed -> split at the threshold crossings and merged until no piece
  * is shorter than estep.min_piece_length. Children are sub-grids of the parent:
  * their cells (and so the posterior, Eq. 5) are the parent's, unchanged; they
- * keep the parent's scanIndex and timestamp and get id parent.id * 256 + k. */
+ * keep the parent's scanIndex and timestamp and get id childId(parent.id, k). */
 class EStep
 {
    public:
@@ -63,8 +63,12 @@ class EStep
 	 * that stood still for half the run reads 0.5-0.85. With
 	 * estep.final_relative_drop > 0 the threshold of a child is raised to its
 	 * profile's median minus that drop: a door closed most of the time reads
-	 * 0.8 inside a wall that reads 0.98. New children get childId(child.id, k). */
-	std::vector<GridVector> finalSplit(const std::vector<GridVector>& children) const;
+	 * 0.8 inside a wall that reads 0.98. A child left whole keeps its id; the
+	 * pieces of a split one get new ids above every id in `children` (not
+	 * childId(child.id, k): a second generation could meet another parent's
+	 * first). `parentIds`: per output vector, the id of the child it came from. */
+	std::vector<GridVector> finalSplit(const std::vector<GridVector>& children,
+									   std::vector<uint64_t>* parentIds = nullptr) const;
 
 	/** Column runs of a merged vector that hold observations, split where
 	 * at least `minGapColumns` consecutive columns have none (n_visit = 0 in
@@ -86,10 +90,20 @@ class EStep
 	std::vector<GridVector> splitSpans(const GridVector& v,
 									   const std::vector<std::pair<double, double>>& dynamicSpans) const;
 
-	static uint64_t childId(uint64_t parentId, size_t k) { return parentId * 256 + k; }
-	static uint64_t parentIdOf(uint64_t childId) { return childId / 256; }
+	/** Id of Eq. 14's child k of the vector with id `parentId`: parentId *
+	 * 2^kChildBits + k, so the same piece of the same per-scan vector keeps its
+	 * id from one E-step to the next (the M-step's Eq. 24-25 bookkeeping compares
+	 * ids) and ids sort by (parent, piece). Throws std::overflow_error where that
+	 * does not fit: k >= 2^kChildBits (a vector of more than 65536 pieces, 19.7 km
+	 * at min_piece_length 0.3) or parentId >= 2^(64 - kChildBits). */
+	static uint64_t childId(uint64_t parentId, size_t k);
+	static uint64_t parentIdOf(uint64_t childId) { return childId >> kChildBits; }
+	static constexpr int kChildBits = 16;
 
    private:
+	/** split() without the ids (a single piece is the parent itself, id included). */
+	std::vector<GridVector> pieceVectors(const GridVector& parent, const std::vector<ProfilePiece>& previous,
+										 std::vector<ProfilePiece>* piecesOut) const;
 	void applyHysteresis(std::vector<double>& prof, const std::vector<ProfilePiece>& previous) const;
 	GridVector subVector(const GridVector& parent, const ProfilePiece& p) const;
 

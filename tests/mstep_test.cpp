@@ -1,5 +1,6 @@
 // MStep (Sec. 4.2-4.3, Eq. 16-25): drift removal, loop closure, constraint selection.
 #include "em_world.h"
+#include "match_world.h"
 
 #include <gridvector/EStep.h>
 #include <gridvector/MStep.h>
@@ -246,4 +247,263 @@ TEST(MStep, OverlapEdgeComesFromAPoseFacingTheSameWay)
 	};
 	EXPECT_TRUE(facingEdge(MStepOptions{}.passHeadingWeight));
 	EXPECT_FALSE(facingEdge(0.0));
+}
+
+namespace
+{
+// Two passes through an L-shaped room (walls seen whole, open side on the left). The first
+// pass's scans from x >= 3 m kept only the bottom wall (the E-step made the rest dynamic, as
+// after a misplaced estimate); between the passes the robot leaves the room (empty scans)
+// and the odometry picks up a 1.5 m error along x, so the second pass is placed 1.5 m too
+// far along x: its nearest first-pass poses are the ones with the bottom wall only.
+struct TwoPassRoom
+{
+	std::vector<TPose2D> truth, odo;
+	std::vector<std::vector<MatchSegment>> scans;
+	std::vector<size_t> first, second;  //!< pose indices of the two passes
+};
+
+TwoPassRoom twoPassRoom()
+{
+	const std::vector<matchtest::WorldSeg> room{{0, 0, 6, 0}, {6, 0, 6, 2}, {6, 2, 4, 2}, {4, 2, 4, 5},
+												{4, 5, 0, 5}, {0, 5, 0, 0}, {1, 3, 2, 3}};
+	TwoPassRoom w;
+	auto add = [&](const TPose2D& p, bool inRoom, bool bottomOnly, double shift) {
+		const size_t t = w.truth.size();
+		w.truth.push_back(p);
+		w.odo.emplace_back(p.x + shift, p.y, p.phi);
+		std::vector<MatchSegment> s;
+		if (inRoom) s = matchtest::observe(bottomOnly ? std::vector<matchtest::WorldSeg>{room[0]} : room, p, 0.003,
+										   unsigned(t), 1000 * (t + 1));
+		w.scans.push_back(s);
+	};
+	for (double x = 1; x < 5.6; x += 0.5)  // first pass
+	{
+		w.first.push_back(w.truth.size());
+		add(TPose2D(x, 1, 0), true, x >= 3, 0);
+	}
+	for (int k = 1; k <= 10; ++k) add(TPose2D(5.5, 1 + 0.8 * k, M_PI / 2), false, false, 0);  // out ...
+	for (int k = 10; k >= 1; --k) add(TPose2D(3, 1 + 0.8 * k, -M_PI / 2), false, false, k <= 5 ? 1.5 : 0);  // ... and back
+	for (double x = 3; x < 5.6; x += 0.5)  // second pass
+	{
+		w.second.push_back(w.truth.size());
+		add(TPose2D(x, 1, 0), true, false, 1.5);
+	}
+	return w;
+}
+}  // namespace
+
+// mstep.loop_search_candidate_spacing (off by default, see doc/benchmarks.md): under the
+// misplaced estimate the first pass's poses nearest to the second pass see only a wall
+// along x (a corridor slide: no loop edge); poses of the same pass 1.5-2 m back along the
+// path see the room's corners. With a 1 m spacing they are registered too and the loop
+// closes; with the nearest pose only it stays 1.5 m open.
+TEST(MStep, LoopSearchTriesOtherPosesOfThePass)
+{
+	const TwoPassRoom w = twoPassRoom();
+	auto closing = [&](double spacing, size_t& loopEdges) {
+		GridVectorConfig cfg;
+		cfg.mstep.loopSearchCandidateSpacing = spacing;
+		MStep m(cfg);
+		m.setOdometry(w.odo);
+		std::vector<TPose2D> poses;
+		for (int k = 0; k < 3; ++k) m.run(w.scans, poses);
+		loopEdges = 0;
+		for (const auto& [key, c] : m.constraints())
+			if (c.kind == EdgeKind::Loop && !c.rejected && c.to >= w.second.front()) ++loopEdges;
+		double worst = 0;  // the second pass seen from the first pass's first pose
+		for (size_t i : w.second)
+		{
+			const TPose2D est = gridvector::se2::relative(poses[w.first.front()], poses[i]);
+			const TPose2D tru = gridvector::se2::relative(w.truth[w.first.front()], w.truth[i]);
+			worst = std::max(worst, std::hypot(est.x - tru.x, est.y - tru.y));
+		}
+		return worst;
+	};
+	size_t withSpacing = 0, nearestOnly = 0;
+	EXPECT_LT(closing(1.0, withSpacing), 0.05);
+	EXPECT_GT(withSpacing, 0u);
+	EXPECT_GT(closing(0.0, nearestOnly), 1.0);
+	EXPECT_EQ(nearestOnly, 0u);
+}
+
+namespace
+{
+// A featureless 20 m corridor (2 m wide) with a distinct closed end at x = 20 m, walked
+// twice along +x. Between the passes the robot is outside (empty scans) and the odometry
+// picks up `slide` metres along the corridor, so the second pass is placed that much too
+// far: mid-corridor its overlap edges only fix the lateral offset and the heading
+// (degenerate along the corridor), and near the end the end wall is outside the
+// registration gates.
+TwoPassRoom slidCorridor(double slide)
+{
+	const std::vector<emtest::Wall> walls{{0, 0, 20, 0}, {20, 0, 20, 2}, {20, 2, 0, 2}, {0, 2, 0, 0}};
+	TwoPassRoom w;
+	uint64_t id = 1;
+	auto add = [&](const TPose2D& p, bool inside, double shift) {
+		const size_t t = w.truth.size();
+		w.truth.push_back(p);
+		w.odo.emplace_back(p.x + shift, p.y, p.phi);
+		std::vector<MatchSegment> s;
+		if (inside) s = MatchSegment::fromVectors(emtest::observe(walls, p, 6.0, unsigned(t)).vectors);
+		for (auto& m : s) m.id = EStep::childId(id++, 0);
+		w.scans.push_back(s);
+	};
+	for (double x = 1; x < 19.1; x += 0.5)
+	{
+		w.first.push_back(w.truth.size());
+		add(TPose2D(x, 1, 0), true, 0);
+	}
+	for (int k = 1; k <= 12; ++k) add(TPose2D(19, 1 - 1.5 * k, -M_PI / 2), false, 0);  // out through a side door ...
+	for (int k = 12; k >= 1; --k) add(TPose2D(1, 1 - 1.5 * k, M_PI / 2), false, k <= 6 ? slide : 0);  // ... and back in
+	for (double x = 1; x < 19.1; x += 0.5)
+	{
+		w.second.push_back(w.truth.size());
+		add(TPose2D(x, 1, 0), true, slide);
+	}
+	return w;
+}
+
+// Largest position error of the second pass relative to the first pass's last pose.
+double secondPassError(const TwoPassRoom& w, const std::vector<TPose2D>& poses)
+{
+	double worst = 0;
+	for (size_t i : w.second)
+	{
+		const TPose2D est = gridvector::se2::relative(poses[w.first.back()], poses[i]);
+		const TPose2D tru = gridvector::se2::relative(w.truth[w.first.back()], w.truth[i]);
+		worst = std::max(worst, std::hypot(est.x - tru.x, est.y - tru.y));
+	}
+	return worst;
+}
+}  // namespace
+
+// mstep.loop_search_weak_links: the passes of the slid corridor are linked only by
+// corridor-degenerate overlap edges. With the setting those do not spare the pair the loop
+// search, which finds the corridor's end from its corners and closes the loop; without it
+// the degenerate links stop the search and the second pass stays slid.
+TEST(MStep, DegenerateLinksDoNotSpareThePassesTheLoopSearch)
+{
+	const TwoPassRoom w = slidCorridor(1.5);
+	auto run = [&](bool setting, size_t& degenerateLinks, size_t& loopEdges) {
+		GridVectorConfig cfg;
+		if (!setting) cfg.mstep.loopSearchWeakLinks = false;  // (else the default)
+		MStep m(cfg);
+		m.setOdometry(w.odo);
+		std::vector<TPose2D> poses;
+		for (int k = 0; k < 3; ++k) m.run(w.scans, poses);
+		degenerateLinks = loopEdges = 0;
+		for (const auto& [key, c] : m.constraints())
+		{
+			if (c.from > w.first.back() || c.to < w.second.front() || c.rejected) continue;
+			degenerateLinks += c.kind == EdgeKind::Overlap && c.degeneracy < cfg.matcher.degenerateRatio;
+			loopEdges += c.kind == EdgeKind::Loop;
+		}
+		return secondPassError(w, poses);
+	};
+	size_t degOn = 0, loopOn = 0, degOff = 0, loopOff = 0;
+	const double on = run(true, degOn, loopOn), off = run(false, degOff, loopOff);
+	EXPECT_GT(degOff, 0u);  // the passes are linked, but only along the corridor's normal
+	EXPECT_EQ(loopOff, 0u);
+	EXPECT_GT(off, 1.0);
+	EXPECT_GT(loopOn, 0u);
+	EXPECT_LT(on, 0.05);
+}
+
+namespace
+{
+// The slid corridor with door frames (0.4 m recesses) every 1.5 m along its first 10 m:
+// slid by one period, the second pass's overlap registrations there lock onto the
+// neighbouring frame with full confidence. Each wall is observed on its own so that a
+// vector keeps its id when the frames leave the static set (`frames` false).
+struct FramedCorridor
+{
+	TwoPassRoom w;
+	std::vector<std::vector<MatchSegment>> withoutFrames;
+};
+
+FramedCorridor framedCorridor(double slide)
+{
+	std::vector<emtest::Wall> walls, frames;
+	for (double a = 0; a < 9.9; a += 1.5)
+	{
+		walls.push_back({a, 0, a + 1.1, 0});
+		frames.push_back({a + 1.1, 0, a + 1.1, -0.4});
+		frames.push_back({a + 1.1, -0.4, a + 1.5, -0.4});
+		frames.push_back({a + 1.5, -0.4, a + 1.5, 0});
+	}
+	walls.push_back({10.5, 0, 20, 0});
+	walls.push_back({20, 0, 20, 2});
+	walls.push_back({20, 2, 0, 2});
+	FramedCorridor f;
+	TwoPassRoom& w = f.w;
+	auto add = [&](const TPose2D& p, bool inside, double shift) {
+		const size_t t = w.truth.size();
+		w.truth.push_back(p);
+		w.odo.emplace_back(p.x + shift, p.y, p.phi);
+		std::vector<MatchSegment> all, plain;
+		for (size_t k = 0; inside && k < walls.size() + frames.size(); ++k)
+		{
+			const bool frame = k >= walls.size();
+			const auto seen = emtest::observe({frame ? frames[k - walls.size()] : walls[k]}, p, 6.0, unsigned(100 * t + k));
+			for (auto& m : MatchSegment::fromVectors(seen.vectors))
+			{
+				m.id = EStep::childId(1000 * (t + 1) + k, 0);
+				all.push_back(m);
+				if (!frame) plain.push_back(m);
+			}
+		}
+		w.scans.push_back(all);
+		f.withoutFrames.push_back(plain);
+	};
+	for (double x = 1; x < 19.1; x += 0.5)
+	{
+		w.first.push_back(w.truth.size());
+		add(TPose2D(x, 1, 0), true, 0);
+	}
+	for (int k = 1; k <= 12; ++k) add(TPose2D(19, 1 - 1.5 * k, -M_PI / 2), false, 0);
+	for (int k = 12; k >= 1; --k) add(TPose2D(1, 1 - 1.5 * k, M_PI / 2), false, k <= 6 ? slide : 0);
+	for (double x = 1; x < 19.1; x += 0.5)
+	{
+		w.second.push_back(w.truth.size());
+		add(TPose2D(x, 1, 0), true, slide);
+	}
+	return f;
+}
+}  // namespace
+
+// mstep.reconsider_rejected: in the framed corridor slid by one frame period, the first
+// M-step's aliased overlap edges (many, confident) hold the second pass where the estimate
+// put it, and the correct loop edges at the corridor's end are rejected by the chi2 test.
+// The E-step then turns the frames (door frames) dynamic: the aliased edges lose their
+// frames and only fix the corridor's normal. The rejected correct edges come back with
+// the setting and the second pass moves into place; without it their rejection stands
+// (their scans did not change) and the second pass stays slid.
+TEST(MStep, ACorrectEdgeRejectedAgainstAWrongEstimateComesBack)
+{
+	const FramedCorridor f = framedCorridor(1.5);
+	auto run = [&](bool setting, size_t& rejectedCorrect) {
+		GridVectorConfig cfg;
+		if (!setting) cfg.mstep.reconsiderRejected = false;  // (else the default)
+		cfg.posegraph.odometrySigmaXYPerM = 0.01;  // a good odometry: the second pass does not stretch
+		MStep m(cfg);
+		m.setOdometry(f.w.odo);
+		std::vector<TPose2D> poses;
+		m.run(f.w.scans, poses);
+		rejectedCorrect = 0;  // cross-pass edges that agree with the truth but were rejected
+		for (const auto& [key, c] : m.constraints())
+		{
+			if (c.from > f.w.first.back() || c.to < f.w.second.front() || !c.rejected) continue;
+			const TPose2D tru = gridvector::se2::relative(f.w.truth[c.from], f.w.truth[c.to]);
+			rejectedCorrect += std::hypot(c.z.x - tru.x, c.z.y - tru.y) < 0.05;
+		}
+		for (int k = 0; k < 3; ++k) m.run(f.withoutFrames, poses);
+		return secondPassError(f.w, poses);
+	};
+	size_t rejOn = 0, rejOff = 0;
+	const double on = run(true, rejOn), off = run(false, rejOff);
+	EXPECT_GT(rejOn, 0u);
+	EXPECT_GT(rejOff, 0u);
+	EXPECT_LT(on, 0.05);
+	EXPECT_GT(off, 1.0);
 }

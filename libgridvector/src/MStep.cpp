@@ -39,6 +39,7 @@ class PassFinder
 	struct Pass
 	{
 		uint32_t lo = 0, hi = 0, nearest = 0;
+		std::vector<uint32_t> members;  //!< the pass's poses near pose i, in time order
 	};
 	/** `headingWeight` [m/rad]: a pass's candidate is the pose nearest in position + weight x heading. */
 	PassFinder(double cell, double headingWeight) : cell_(cell), headingWeight_(headingWeight) {}
@@ -65,7 +66,7 @@ class PassFinder
 		{
 			size_t b = a + 1;
 			while (b < near_.size() && near_[b] - near_[b - 1] <= runGap) ++b;
-			Pass p{near_[a], near_[b - 1], near_[a]};
+			Pass p{near_[a], near_[b - 1], near_[a], {near_.begin() + long(a), near_.begin() + long(b)}};
 			// nearest in view: a scan sees what lies ahead of it, so heading counts too
 			auto view = [&](uint32_t j) {
 				return se2::distance(poses[i], poses[j]) +
@@ -377,8 +378,21 @@ bool MStep::fixesPlace(const Constraint& c) const
 		   (!c.rejected && c.degeneracy >= cfg_.matcher.degenerateRatio);
 }
 
+// Beyond the paper: the pass's pose nearest in view, then every pose of the pass at least
+// loop_search_candidate_spacing along the path from those already taken.
+std::vector<uint32_t> MStep::loopCandidates(uint32_t nearest, const std::vector<uint32_t>& members) const
+{
+	std::vector<uint32_t> out{nearest};
+	const double spacing = cfg_.mstep.loopSearchCandidateSpacing;
+	if (spacing <= 0) return out;
+	for (uint32_t j : members)
+		if (std::all_of(out.begin(), out.end(), [&](uint32_t k) { return std::abs(path_[j] - path_[k]) >= spacing; }))
+			out.push_back(j);
+	return out;
+}
+
 // Loop search: for each pose, every earlier pass within the window (its nearest
-// pose) that no edge links to the pose's neighbourhood yet.
+// pose and the other candidates) that no edge links to the pose's neighbourhood yet.
 std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& added,
 										MStepReport& rep)
 {
@@ -400,18 +414,20 @@ std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, 
 		{
 			if (linked(p.lo > K ? p.lo - K : 0, p.hi + K, i > K ? i - K : 0, i)) continue;
 			if (searchedNear(i, p.lo, p.hi, poses)) continue;
-			const EdgeKey key{p.nearest, i};
-			const TPose2D rel = se2::relative(poses[p.nearest], poses[i]);
-			searched_[key] = rel;
+			searched_[{p.nearest, i}] = se2::relative(poses[p.nearest], poses[i]);
 			++rep.loopSearches;
-			++rep.registrations;
-			const MatchResult r = loops_.search(scans[key.first], scans[i], rel, windowOf(key.first, i));
-			if (!r.ok())
+			// the best registration against the pass's candidates (the most matched length)
+			MatchResult best;
+			uint32_t from = p.nearest;
+			for (uint32_t j : loopCandidates(p.nearest, p.members))
 			{
-				++rep.failedRegistrations;
-				continue;
+				if (j != p.nearest && scans[j].empty()) continue;
+				++rep.registrations;
+				MatchResult r = loops_.search(scans[j], scans[i], se2::relative(poses[j], poses[i]), windowOf(j, i));
+				if (!r.ok()) ++rep.failedRegistrations;
+				else if (!best.ok() || r.matchedLength > best.matchedLength) best = std::move(r), from = j;
 			}
-			found.push_back(constraintOf(key, EdgeKind::Loop, r, rel));
+			if (best.ok()) found.push_back(constraintOf({from, i}, EdgeKind::Loop, best, se2::relative(poses[from], poses[i])));
 		}
 	}
 	// added after the search, so that every pose near a found loop is searched too

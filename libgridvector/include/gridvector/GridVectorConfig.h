@@ -218,6 +218,7 @@ struct MStepOptions
 	double loopSearchAmbiguity = 0.7;  //!< a distinct solution matching this share of the best's length makes the place ambiguous
 	double loopSearchDistinct = 0.3;  //!< solutions further apart than this are distinct [m]
 	bool loopSearchWeakLinks = true;  //!< passes linked only by corridor-degenerate or rejected edges are still searched
+	double loopSearchCandidateSpacing = 0.0;  //!< loop search: also register the pass's poses this far apart along the path [m]; 0: nearest only
 
 	template <class V>
 	void visit(V&& v)
@@ -246,6 +247,7 @@ struct MStepOptions
 		v("loop_search_ambiguity", loopSearchAmbiguity, "A loop edge is rejected as ambiguous when a distinct solution matches at least this share of the best one's length");
 		v("loop_search_distinct", loopSearchDistinct, "Loop-search solutions further apart than this are distinct [m]");
 		v("loop_search_weak_links", loopSearchWeakLinks, "The loop search also runs between passes that only edges with a degenerate translation (below matcher.degenerate_ratio: a corridor slide) or rejected edges link; false: any edge spares the pair");
+		v("loop_search_candidate_spacing", loopSearchCandidateSpacing, "The loop search registers a pose against the earlier pass's pose nearest in view and against every pose of that pass inside the window at least this far (odometry path) from the poses already taken, keeping the result with the most matched length (the nearest pose under a misplaced estimate need not be the one that sees the place); 0 (default): the nearest pose only; 1 m lowers the intel loop error but raises the aces one with the EmSlam defaults (doc/benchmarks.md) [m]");
 	}
 };
 

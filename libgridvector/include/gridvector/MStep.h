@@ -94,6 +94,10 @@ class MStep
 	 * of the edges it added or replaced (`added`: the overlap edges added in this step). */
 	std::vector<EdgeKey> searchLoops(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& added,
 									 MStepReport& rep);
+	/** Poses of an earlier pass the loop search registers against: the nearest in view, then
+	 * the members (time order) at least mstep.loop_search_candidate_spacing along the path
+	 * from every pose already taken. */
+	std::vector<uint32_t> loopCandidates(uint32_t nearest, const std::vector<uint32_t>& members) const;
 	/** Loop-search window of the pair from the odometry model along the path between them. */
 	LoopWindow windowOf(uint32_t from, uint32_t to) const;
 	/** Was i searched against a j in [jlo, jhi] from (nearly) its current relative pose? */

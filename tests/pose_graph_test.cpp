@@ -91,11 +91,12 @@ TEST(PoseGraph, LoopClosuresRemoveOdometryDrift)
 	EXPECT_EQ(st.rejected, 0u);
 }
 
-TEST(PoseGraph, WrongEdgesAreDownweightedAndRejected)
+namespace
 {
-	const auto truth = squareLoop();
-	PoseGraph g = buildGraph(truth, {}, 4);
-	// three confident, wrong loop closures
+// the square loop with three confident, wrong loop closures
+PoseGraph graphWithWrongLoops(const PoseGraphOptions& o)
+{
+	PoseGraph g = buildGraph(squareLoop(), o, 4);
 	for (auto [i, j] : {std::pair{5, 25}, std::pair{12, 33}, std::pair{2, 38}})
 	{
 		PoseEdge e;
@@ -104,6 +105,14 @@ TEST(PoseGraph, WrongEdgesAreDownweightedAndRejected)
 		e.information = Eigen::Vector3d(1e4, 1e4, 1e5).asDiagonal();
 		g.addEdge(e);
 	}
+	return g;
+}
+}  // namespace
+
+TEST(PoseGraph, WrongEdgesAreDownweightedAndRejected)
+{
+	const auto truth = squareLoop();
+	PoseGraph g = graphWithWrongLoops({});
 	PoseGraph clean = buildGraph(truth, {}, 4);
 	clean.optimize();
 	const OptimizeStats st = g.optimize();
@@ -136,4 +145,103 @@ TEST(PoseGraph, OdometryInformationGrowsWeakerWithDistance)
 	const auto far = PoseGraph::odometryInformation(TPose2D(2.0, 0, 0), o);
 	EXPECT_GT(near(0, 0), far(0, 0));
 	EXPECT_GT(near(2, 2), far(2, 2));
+}
+
+TEST(PoseGraph, RejectRoundsBoundTheChi2Rejection)
+{
+	EXPECT_EQ(PoseGraphOptions().rejectRounds, 3);  // the value before it became a key
+	PoseGraphOptions o;
+	o.rejectRounds = 0;
+	PoseGraph none = graphWithWrongLoops(o);
+	EXPECT_EQ(none.optimize().rejected, 0u);
+	for (const auto& e : none.edges()) EXPECT_TRUE(e.active);
+	PoseGraph dflt = graphWithWrongLoops({});
+	EXPECT_GE(dflt.optimize().rejected, 3u);
+}
+
+namespace
+{
+struct Outcome
+{
+	int iterations = 0;
+	double offClean = 0;  //!< largest position difference from the clean graph's solution [m]
+};
+
+// graphWithWrongLoops without rejection (the robust kernel and its graduation alone), optionally
+// started from the clean solution with the wrong edges as overlap edges
+Outcome optimiseWrongLoops(PoseGraphOptions o, bool fromClean = false)
+{
+	o.rejectRounds = 0;
+	PoseGraph clean = buildGraph(squareLoop(), {}, 4);
+	clean.optimize();
+	PoseGraph g = graphWithWrongLoops(o);
+	if (fromClean)
+	{
+		g.setNodes(clean.nodes());
+		for (auto& e : g.edges())
+			if (e.kind == EdgeKind::Loop) e.kind = EdgeKind::Overlap;
+	}
+	const OptimizeStats st = g.optimize();
+	return {st.iterations, maxError(g.nodes(), clean.nodes())};
+}
+}  // namespace
+
+TEST(PoseGraph, GraduationFromAWideKernelLetsTheCorrectEdgesOutvoteWrongOnes)
+{
+	const PoseGraphOptions d;
+	EXPECT_EQ(d.graduationTrigger, 10.0);  // the values before they became keys
+	EXPECT_EQ(d.graduationStartPhi, 1e4);
+	EXPECT_EQ(d.graduationFactor, 0.01);
+	EXPECT_EQ(d.graduationIterations, 8);
+	EXPECT_EQ(d.graduationTolerance, 1e-3);
+	const Outcome dflt = optimiseWrongLoops(d);
+	EXPECT_LT(dflt.offClean, 0.1);
+	PoseGraphOptions o;
+	o.graduationTrigger = 1e12;  // never graduate: the wrong loops hold the odometry's drift
+	EXPECT_GT(optimiseWrongLoops(o).offClean, 1.0);
+	o = {}, o.graduationStartPhi = d.robustKernelWidth;  // the same from the start value
+	EXPECT_GT(optimiseWrongLoops(o).offClean, 1.0);
+	o = {}, o.graduationIterations = 1;  // stages too short to follow the kernel
+	EXPECT_GT(optimiseWrongLoops(o).offClean, 0.5);
+	o = {}, o.graduationTolerance = 0.5;  // ... or ended too early
+	EXPECT_GT(optimiseWrongLoops(o).offClean, 0.3);
+	o = {}, o.graduationFactor = 0.5;  // more, gentler stages
+	const Outcome gentle = optimiseWrongLoops(o);
+	EXPECT_LT(gentle.offClean, 1e-3);
+	EXPECT_NE(gentle.iterations, dflt.iterations);
+}
+
+TEST(PoseGraph, GraduationPercentileDecidesWhetherAStartFits)
+{
+	EXPECT_EQ(PoseGraphOptions().graduationPercentile, 95.0);
+	// from the clean solution three of the 21 registration edges (14 %) are far off
+	PoseGraphOptions never;
+	never.graduationTrigger = 1e12;
+	const Outcome ungraduated = optimiseWrongLoops(never, true);
+	const Outcome at95 = optimiseWrongLoops({}, true);
+	EXPECT_NE(at95.iterations, ungraduated.iterations);
+	PoseGraphOptions o;
+	o.graduationPercentile = 50;
+	EXPECT_EQ(optimiseWrongLoops(o, true).iterations, ungraduated.iterations);
+}
+
+TEST(PoseGraph, LevenbergMarquardtKeysSetDampingAndStop)
+{
+	const PoseGraphOptions d;
+	EXPECT_EQ(d.tolerance, 1e-6);  // the values before they became keys
+	EXPECT_EQ(d.lmInitialLambda, 1e-4);
+	EXPECT_EQ(d.lmMinLambda, 1e-9);
+	EXPECT_EQ(d.lmMaxLambda, 1e8);
+	const Outcome dflt = optimiseWrongLoops(d);
+	PoseGraphOptions o;
+	o.tolerance = 0.5;  // the last stage stops after fewer steps, nearly at the same place
+	const Outcome loose = optimiseWrongLoops(o);
+	EXPECT_LT(loose.iterations, dflt.iterations);
+	EXPECT_LT(loose.offClean, 0.1);
+	o = {}, o.lmMaxLambda = 1e-3;  // a stage ends at its first rejected step
+	EXPECT_LT(optimiseWrongLoops(o).iterations, dflt.iterations);
+	o = {}, o.lmMinLambda = 1e-4;
+	EXPECT_NE(optimiseWrongLoops(o).iterations, dflt.iterations);
+	o = {}, o.lmInitialLambda = 1e3;
+	EXPECT_NE(optimiseWrongLoops(o).iterations, dflt.iterations);
 }

@@ -187,6 +187,18 @@ void GridVectorConfig::validate() const
 			"matcher gates and sigma_floor must be > 0");
 	require(posegraph.robustKernelWidth > 0 && posegraph.maxIterations >= 1,
 			"posegraph.robust_kernel_width must be > 0, max_iterations >= 1");
+	require(posegraph.rejectRounds >= 0 && posegraph.graduationIterations >= 1,
+			"posegraph.reject_rounds must be >= 0, graduation_iterations >= 1");
+	require(posegraph.tolerance >= 0 && posegraph.graduationTolerance >= 0,
+			"posegraph.tolerance and graduation_tolerance must be >= 0");
+	require(posegraph.graduationTrigger > 0 && posegraph.graduationPercentile >= 0 &&
+				posegraph.graduationPercentile <= 100 && posegraph.graduationStartPhi > 0,
+			"posegraph: graduation_trigger and graduation_start_phi must be > 0, graduation_percentile in [0,100]");
+	require(posegraph.graduationFactor > 0 && posegraph.graduationFactor < 1,
+			"posegraph.graduation_factor must be in (0,1)");
+	require(posegraph.lmMinLambda > 0 && posegraph.lmInitialLambda >= posegraph.lmMinLambda &&
+				posegraph.lmMaxLambda > posegraph.lmInitialLambda,
+			"posegraph: need 0 < lm_min_lambda <= lm_initial_lambda < lm_max_lambda");
 	require(doors.minDoorLength > 0 && doors.maxDoorLength >= doors.minDoorLength,
 			"doors: need 0 < min_door_length <= max_door_length");
 	require(doors.minSweepDeg >= 0 && doors.minSweepDeg <= 360, "doors.min_sweep_deg must be in [0,360]");

@@ -93,7 +93,7 @@ OptimizeStats PoseGraph::optimize()
 	phi_ = opts_.robustKernelWidth;
 	OptimizeStats st = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
 	// Iterative edge rejection by chi2, then re-optimisation from the robust solution.
-	for (int round = 0; round < 3; ++round)
+	for (int round = 0; round < opts_.rejectRounds; ++round)
 	{
 		updateResiduals(nodes_, false);
 		const size_t rej = rejectOutliers();
@@ -101,7 +101,7 @@ OptimizeStats PoseGraph::optimize()
 		st.rejected += rej;
 		phi_ = opts_.robustKernelWidth;
 		const OptimizeStats again =
-			opts_.useMrptOptimizer ? optimizeMrpt() : levenbergMarquardt(opts_.maxIterations, 1e-6);
+			opts_.useMrptOptimizer ? optimizeMrpt() : levenbergMarquardt(opts_.maxIterations, opts_.tolerance);
 		st.iterations += again.iterations;
 		st.finalError = again.finalError;
 	}
@@ -118,6 +118,7 @@ OptimizeStats PoseGraph::optimizeGaussNewton()
 	OptimizeStats st;
 	bool first = true;
 	const double target = opts_.robustKernelWidth;
+	const double trigger = opts_.graduationTrigger * target;
 	// a start where (nearly) every registration already fits needs no graduation
 	std::vector<double> chi;
 	updateResiduals(nodes_, false);
@@ -126,21 +127,23 @@ OptimizeStats PoseGraph::optimizeGaussNewton()
 		if (e.active && e.kind != EdgeKind::Odometry)
 		{
 			chi.push_back(e.chi2);
-			farLoop = farLoop || (e.kind == EdgeKind::Loop && e.chi2 > 10 * target);
+			farLoop = farLoop || (e.kind == EdgeKind::Loop && e.chi2 > trigger);
 		}
-	double p95 = 0;
+	double pct = 0;  // the chi2 at graduation_percentile
 	if (!chi.empty())
 	{
-		auto k = chi.begin() + long(chi.size() * 95 / 100);
+		auto k = chi.begin() + long(double(chi.size()) * opts_.graduationPercentile / 100);
+		k = std::min(k, chi.end() - 1);
 		std::nth_element(chi.begin(), k, chi.end());
-		p95 = *k;
+		pct = *k;
 	}
-	const double phi0 = p95 < 10 * target && !farLoop ? target : std::max(target, 1e4);
-	for (double phi = phi0;; phi = std::max(target, phi * 0.01))
+	const double phi0 = pct < trigger && !farLoop ? target : std::max(target, opts_.graduationStartPhi);
+	for (double phi = phi0;; phi = std::max(target, phi * opts_.graduationFactor))
 	{
 		phi_ = phi;
 		const bool last = phi <= target;
-		const OptimizeStats s = levenbergMarquardt(last ? opts_.maxIterations : 8, last ? 1e-6 : 1e-3);
+		const OptimizeStats s = levenbergMarquardt(last ? opts_.maxIterations : opts_.graduationIterations,
+												   last ? opts_.tolerance : opts_.graduationTolerance);
 		if (first) st.initialError = s.initialError, first = false;
 		st.iterations += s.iterations;
 		st.finalError = s.finalError;
@@ -191,7 +194,7 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 	NormalEquations eq(n, pairs);
 	SparseCholesky solver;
 	solver.analyze(eq.H());
-	double lambda = 1e-4, nu = 2;
+	double lambda = opts_.lmInitialLambda, nu = 2;
 	double err = updateResiduals(nodes_, true);
 	st.initialError = err;
 	bool linearised = false;  // H and b are at nodes_ (a rejected step changes only lambda)
@@ -219,7 +222,7 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 			const double rel = (err - cerr) / std::max(1e-12, err);
 			const double predicted = dx.dot(lambda * dx - eq.b());  // r^T W r minus the linear model's
 			const double rho = predicted > 0 ? (err - cerr) / predicted : 1;
-			lambda = std::max(1e-9, lambda * std::max(1.0 / 3, 1 - std::pow(2 * rho - 1, 3)));
+			lambda = std::max(opts_.lmMinLambda, lambda * std::max(1.0 / 3, 1 - std::pow(2 * rho - 1, 3)));
 			nu = 2;
 			nodes_.swap(cand);
 			err = cerr;
@@ -232,7 +235,7 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 			// converged as for an accepted step: the cost changes by less than the tolerance
 			if ((cerr - err) / std::max(1e-12, err) < minRelativeDecrease) break;
 			lambda *= nu, nu *= 2;
-			if (lambda > 1e8) break;
+			if (lambda > opts_.lmMaxLambda) break;
 		}
 	}
 	st.finalError = err;

@@ -176,6 +176,17 @@ struct PoseGraphOptions
 	double odometrySigmaXYMin = 0.02;  //!< odometry translation std. dev. floor [m]
 	double odometrySigmaPhi = 0.03;  //!< odometry rotation std. dev. per step [rad]
 	double odometrySigmaPhiPerM = 0.03;  //!< odometry rotation std. dev. per metre travelled [rad/m]
+	int rejectRounds = 3;  //!< chi2 rejection + re-optimisation rounds at most (beyond the paper)
+	double tolerance = 1e-6;  //!< LM stops when the cost changes by less than this share (final stage)
+	double graduationTrigger = 10.0;  //!< graduate Phi when the start's chi2 percentile or a loop edge exceeds this x Phi
+	double graduationPercentile = 95.0;  //!< ... the percentile of the registration edges' chi2 [%]
+	double graduationStartPhi = 1e4;  //!< first Phi of the graduation (chi2 units)
+	double graduationFactor = 0.01;  //!< Phi x this per graduation stage
+	int graduationIterations = 8;  //!< LM iterations per graduation stage before the last
+	double graduationTolerance = 1e-3;  //!< relative cost change ending a graduation stage before the last
+	double lmInitialLambda = 1e-4;  //!< LM damping at the start of each stage
+	double lmMinLambda = 1e-9;  //!< Nielsen's update never damps below this
+	double lmMaxLambda = 1e8;  //!< a stage gives up once rejections raised the damping above this
 
 	template <class V>
 	void visit(V&& v)
@@ -188,6 +199,17 @@ struct PoseGraphOptions
 		v("odometry_sigma_xy_min", odometrySigmaXYMin, "Odometry translation std. dev. floor [m]");
 		v("odometry_sigma_phi", odometrySigmaPhi, "Odometry rotation std. dev. per step [rad]");
 		v("odometry_sigma_phi_per_m", odometrySigmaPhiPerM, "Odometry rotation std. dev. per metre travelled [rad/m]");
+		v("reject_rounds", rejectRounds, "Beyond the paper (Eq. 22 has no outlier test): after optimising, registration edges whose chi2 exceeds reject_chi2 are removed and the graph re-optimised, at most this many times; 0: no rejection");
+		v("tolerance", tolerance, "Beyond the paper: the built-in Levenberg-Marquardt's last stage (at robust_kernel_width) and each re-optimisation after a rejection stop when a step changes the cost by less than this share of it");
+		v("graduation_trigger", graduationTrigger, "Beyond the paper (graduated robustness of the built-in optimiser): Phi starts wide (graduation_start_phi) when the registration edges' chi2 at graduation_percentile, or any loop-search edge's chi2, exceeds this x robust_kernel_width at the start; otherwise the optimiser starts at robust_kernel_width");
+		v("graduation_percentile", graduationPercentile, "Beyond the paper: the percentile of the registration edges' chi2 compared with graduation_trigger x robust_kernel_width [%]");
+		v("graduation_start_phi", graduationStartPhi, "Beyond the paper: Phi of the first graduation stage (nearly least squares; never below robust_kernel_width) [chi2]");
+		v("graduation_factor", graduationFactor, "Beyond the paper: Phi is multiplied by this from one graduation stage to the next, down to robust_kernel_width (0..1)");
+		v("graduation_iterations", graduationIterations, "Beyond the paper: Levenberg-Marquardt iterations per graduation stage before the last (the last has max_iterations)");
+		v("graduation_tolerance", graduationTolerance, "Beyond the paper: a graduation stage before the last stops when a step changes the cost by less than this share of it");
+		v("lm_initial_lambda", lmInitialLambda, "Beyond the paper: Levenberg-Marquardt damping (added to H's diagonal) at the start of every stage");
+		v("lm_min_lambda", lmMinLambda, "Beyond the paper: Nielsen's damping update never lowers the damping below this");
+		v("lm_max_lambda", lmMaxLambda, "Beyond the paper: a stage ends once rejected steps have raised the damping above this");
 	}
 };
 

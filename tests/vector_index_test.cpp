@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <random>
 
 using namespace gridvector;
@@ -73,4 +74,39 @@ TEST(VectorIndex, NegativeAndLargeCoordinates)
 	ASSERT_EQ(out.size(), 1u);
 	EXPECT_EQ(out[0], 0u);
 	EXPECT_THROW(VectorIndex(0.0), std::invalid_argument);
+}
+
+// A grazing wipe triangle's box can span kilometres (csail: 122 km x 37 km at 2 m buckets,
+// 1.1e9 buckets); such boxes are listed once, and queries still find exactly the intersecting slots.
+TEST(VectorIndex, HugeAndNonFiniteBoxesAreFoundWithoutBucketing)
+{
+	VectorIndex idx(2.0);
+	const Box2D huge{-2000.0, -40000.0, 120437.0, 36793.0};
+	idx.insert(0, {0, 0, 1, 1});
+	idx.insert(1, huge);
+	idx.insert(2, {std::nan(""), 0, 1, 1});
+	idx.insert(3, {5e4, 5e4, 5e4 + 1, 5e4 + 1});
+	EXPECT_EQ(idx.size(), 4u);
+	std::vector<uint32_t> out;
+	idx.query({0.5, 0.5, 0.6, 0.6}, out);
+	std::sort(out.begin(), out.end());
+	EXPECT_EQ(out, (std::vector<uint32_t>{0, 1}));
+	out.clear();
+	idx.query({1e5, 3e4, 1e5 + 1, 3e4 + 1}, out);  // inside the huge box only
+	EXPECT_EQ(out, (std::vector<uint32_t>{1}));
+	out.clear();
+	idx.query({-1e6, -1e6, 1e6, 1e6}, out);  // wider than the map: every finite box once
+	std::sort(out.begin(), out.end());
+	EXPECT_EQ(out, (std::vector<uint32_t>{0, 1, 3}));
+	idx.remove(1);
+	idx.remove(2);
+	out.clear();
+	idx.query({1e5, 3e4, 1e5 + 1, 3e4 + 1}, out);
+	EXPECT_TRUE(out.empty());
+	idx.insert(1, {0.2, 0.2, 0.3, 0.3});  // the slot moves back into the buckets
+	out.clear();
+	idx.query({0.25, 0.25, 0.26, 0.26}, out);
+	std::sort(out.begin(), out.end());
+	EXPECT_EQ(out, (std::vector<uint32_t>{0, 1}));
+	EXPECT_EQ(idx.size(), 3u);
 }

@@ -30,10 +30,19 @@ VectorIndex::VectorIndex(double cellSize) : cell_(cellSize)
 void VectorIndex::clear()
 {
 	buckets_.clear();
+	wide_.clear();
 	boxes_.clear();
 	present_.clear();
 	stamp_.clear();
 	live_ = 0;
+}
+
+bool VectorIndex::wide(const Box2D& b) const
+{
+	if (!(std::isfinite(b.minX) && std::isfinite(b.minY) && std::isfinite(b.maxX) && std::isfinite(b.maxY))) return true;
+	const double nx = std::floor(b.maxX / cell_) - std::floor(b.minX / cell_) + 1;
+	const double ny = std::floor(b.maxY / cell_) - std::floor(b.minY / cell_) + 1;
+	return nx * ny > kMaxBuckets;
 }
 
 template <class F>
@@ -57,12 +66,20 @@ void VectorIndex::insert(uint32_t slot, const Box2D& box)
 	boxes_[slot] = box;
 	present_[slot] = 1;
 	++live_;
-	forBuckets(box, [&](uint64_t k) { buckets_[k].push_back(slot); });
+	if (wide(box)) wide_.push_back(slot);
+	else forBuckets(box, [&](uint64_t k) { buckets_[k].push_back(slot); });
 }
 
 void VectorIndex::remove(uint32_t slot)
 {
 	if (!contains(slot)) return;
+	present_[slot] = 0;
+	--live_;
+	if (wide(boxes_[slot]))
+	{
+		wide_.erase(std::find(wide_.begin(), wide_.end(), slot));
+		return;
+	}
 	forBuckets(boxes_[slot], [&](uint64_t k) {
 		auto it = buckets_.find(k);
 		if (it == buckets_.end()) return;
@@ -75,8 +92,6 @@ void VectorIndex::remove(uint32_t slot)
 		}
 		if (v.empty()) buckets_.erase(it);
 	});
-	present_[slot] = 0;
-	--live_;
 }
 
 void VectorIndex::query(const Box2D& box, std::vector<uint32_t>& out) const
@@ -96,15 +111,14 @@ void VectorIndex::query(const Box2D& box, std::vector<uint32_t>& out) const
 	};
 	const double nx = std::floor(box.maxX / cell_) - std::floor(box.minX / cell_) + 1;
 	const double ny = std::floor(box.maxY / cell_) - std::floor(box.minY / cell_) + 1;
-	if (nx * ny > double(buckets_.size()))  // a query wider than the map: walk the buckets
-	{
+	if (!(nx * ny <= double(buckets_.size())))  // a query wider than the map (or not finite): walk the buckets
 		for (const auto& kv : buckets_) scan(kv.second);
-		return;
-	}
-	forBuckets(box, [&](uint64_t k) {
-		auto it = buckets_.find(k);
-		if (it != buckets_.end()) scan(it->second);
-	});
+	else
+		forBuckets(box, [&](uint64_t k) {
+			auto it = buckets_.find(k);
+			if (it != buckets_.end()) scan(it->second);
+		});
+	scan(wide_);
 }
 
 }  // namespace gridvector

@@ -33,6 +33,12 @@ struct Box2D
  * O(n_t ((R/B + 1)^2 + k)) with n_t the scan's vectors: it depends on the map
  * density around the robot, not on the map's size.
  *
+ * A box that would cover more than kMaxBuckets buckets (or is not finite),
+ * e.g. the wipe triangle of a wall seen at a grazing angle, whose hit band
+ * reaches far along the rays, is kept in one list that every query scans
+ * instead of being listed bucket by bucket: memory stays O(slots) whatever
+ * the boxes' sizes.
+ *
  * Not thread-safe: query() uses an internal stamp to report each slot once. */
 class VectorIndex
 {
@@ -52,6 +58,9 @@ class VectorIndex
 	void query(const Box2D& box, std::vector<uint32_t>& out) const;
 
    private:
+	/** Boxes covering more buckets than this are listed once, not per bucket (memory bound, no effect on results). */
+	static constexpr double kMaxBuckets = 4096;
+	bool wide(const Box2D& b) const;
 	template <class F>
 	void forBuckets(const Box2D& b, F&& f) const;
 	static uint64_t key(int64_t ix, int64_t iy)
@@ -61,6 +70,7 @@ class VectorIndex
 
 	double cell_;
 	std::unordered_map<uint64_t, std::vector<uint32_t>> buckets_;
+	std::vector<uint32_t> wide_;  //!< slots whose boxes are too large (or not finite) for the buckets
 	std::vector<Box2D> boxes_;
 	std::vector<uint8_t> present_;
 	mutable std::vector<uint32_t> stamp_;

@@ -158,3 +158,39 @@ TEST(VectorMatcher, ReusedWorkspaceGivesIdenticalResults)
 		EXPECT_EQ(again.pairs, first.pairs);
 	}
 }
+
+TEST(VectorMatcher, RobustScaleGateShareSetsHowMuchMovedFurnitureBiasesThePose)
+{
+	EXPECT_EQ(MatcherOptions().robustScaleGateShare, 0.5);  // the value before it became a key
+	const TPose2D xa(1.0, 1.0, 0.3), xb(1.6, 1.4, 0.45);
+	std::vector<WorldSeg> moved = room();
+	moved[11] = {6, 4.1, 5.2, 4.7};  // a table and a cupboard side moved 0.1 / 0.08 m between the scans,
+	moved[7] = {2.08, 2, 2.08, 3.2};  // still inside the final line-offset gate
+	const auto a = observe(room(), xa, 0.0, 1, 1), b = observe(moved, xb, 0.0, 2, 100);
+	const TPose2D truth = relative(xa, xb);
+	auto errorWith = [&](double share) {
+		MatcherOptions o;
+		o.robustScaleGateShare = share;
+		const MatchResult r = VectorMatcher(o).match(a, b, TPose2D(truth.x + 0.25, truth.y - 0.2, truth.phi + 0.12));
+		EXPECT_TRUE(r.ok()) << share;
+		return std::hypot(r.pose.x - truth.x, r.pose.y - truth.y);
+	};
+	const double atFloor = errorWith(1e-3), dflt = errorWith(0.5), leastSquares = errorWith(100);
+	EXPECT_LT(atFloor, dflt);  // a narrower Cauchy kernel discounts the moved pieces more
+	EXPECT_LT(dflt, leastSquares);
+	EXPECT_GT(leastSquares, 0.01);
+	// never below sigma_floor: 0.05 x the widest rho gate (0.6 m) is sigma_floor (0.03 m) already
+	EXPECT_EQ(errorWith(0.05), atFloor);
+}
+
+TEST(VectorMatcher, GateShrinkIsValidatedToItsClampedRange)
+{
+	// the matcher clamps gate_shrink to [kMinGateShrink, 1]; validate() rejects what it would clamp
+	GridVectorConfig cfg;
+	cfg.matcher.gateShrink = MatcherOptions::kMinGateShrink;
+	EXPECT_NO_THROW(cfg.validate());
+	cfg.matcher.gateShrink = 0.04;
+	EXPECT_THROW(cfg.validate(), std::invalid_argument);
+	cfg.matcher.gateShrink = 1.01;
+	EXPECT_THROW(cfg.validate(), std::invalid_argument);
+}

@@ -182,7 +182,8 @@ void GridVectorConfig::validate() const
 	require(estep.minPieceLength >= 0 && estep.hysteresis >= 0 && estep.freeWeight > 0,
 			"estep: min_piece_length and hysteresis must be >= 0, free_weight > 0");
 	require(matcher.maxIterations >= 1 && matcher.minMatches >= 1, "matcher.max_iterations and min_matches must be >= 1");
-	require(matcher.gateShrink > 0 && matcher.gateShrink <= 1, "matcher.gate_shrink must be in (0,1]");
+	require(matcher.gateShrink >= MatcherOptions::kMinGateShrink && matcher.gateShrink <= 1, "matcher.gate_shrink must be in [0.05,1]");
+	require(matcher.robustScaleGateShare > 0, "matcher.robust_scale_gate_share must be > 0");
 	require(matcher.gateRhoFinal > 0 && matcher.gatePsiFinalDeg > 0 && matcher.sigmaFloor > 0,
 			"matcher gates and sigma_floor must be > 0");
 	require(posegraph.robustKernelWidth > 0 && posegraph.maxIterations >= 1,

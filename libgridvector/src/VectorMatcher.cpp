@@ -66,7 +66,7 @@ MatchGates VectorMatcher::finalGates(double factor) const
 // Gates start wide and shrink geometrically to their final values.
 MatchGates VectorMatcher::gatesAt(int iteration) const
 {
-	const double k = std::pow(std::clamp(opts_.gateShrink, 0.05, 1.0), iteration);
+	const double k = std::pow(std::clamp(opts_.gateShrink, MatcherOptions::kMinGateShrink, 1.0), iteration);
 	MatchGates g;
 	g.psi = std::max(opts_.gatePsiFinalDeg, opts_.gatePsiInitialDeg * k) * kDeg;
 	g.rho = std::max(opts_.gateRhoFinal, opts_.gateRhoInitial * k);
@@ -229,7 +229,8 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 		T.y = cen.y() + sd * t0.x() + cd * t0.y();
 		T.phi = wrap(T.phi + dphi);
 		// joint Gauss-Newton step on point-to-line distances (translation and rotation)
-		normalEquations(b, T, std::max(opts_.sigmaFloor, 0.5 * gates.rho), H, g, sumW, sumWr2);
+		normalEquations(b, T, std::max(opts_.sigmaFloor, opts_.robustScaleGateShare * gates.rho), H, g, sumW,
+						sumWr2);
 		const double damp = 1e-6 * std::max(1e-12, H.trace());
 		const Vector3d delta = -(H + damp * Matrix3d::Identity()).ldlt().solve(g);
 		if (!delta.allFinite()) break;

@@ -136,6 +136,7 @@ struct MatcherOptions
 	double gateRhoInitial = 0.60;  //!< criterion 2 gate (line offset) at the first iteration [m]
 	double gateRhoFinal = 0.12;  //!< criterion 2 gate once tightened [m]
 	double gateShrink = 0.7;  //!< factor applied to the gates per iteration
+	static constexpr double kMinGateShrink = 0.05;  //!< gate_shrink's lower bound (validate(); the matcher clamps to it)
 	double minOverlap = 0.10;  //!< matched segments must overlap along the line by this [m]
 	int minMatches = 2;  //!< fewest matched vector pairs
 	double minMatchedLength = 1.5;  //!< fewest metres of overlapping matched vectors [m]
@@ -144,6 +145,7 @@ struct MatcherOptions
 	double sigmaFloor = 0.03;  //!< smallest residual std. dev. per metre of line used in the information [m]
 	double convergenceTranslation = 1e-4;  //!< stop when a step moves less than this [m]
 	double convergenceRotation = 1e-5;  //!< ... and turns less than this [rad]
+	double robustScaleGateShare = 0.5;  //!< Cauchy scale while iterating = this x the rho gate (>= sigma_floor)
 
 	template <class V>
 	void visit(V&& v)
@@ -153,7 +155,7 @@ struct MatcherOptions
 		v("gate_psi_final_deg", gatePsiFinalDeg, "Correspondence criterion 1 (direction) gate after tightening [deg]");
 		v("gate_rho_initial", gateRhoInitial, "Correspondence criterion 2 (line offset) gate at the first iteration [m]");
 		v("gate_rho_final", gateRhoFinal, "Correspondence criterion 2 (line offset) gate after tightening [m]");
-		v("gate_shrink", gateShrink, "Factor by which the gates tighten each iteration (0..1]");
+		v("gate_shrink", gateShrink, "Factor by which the gates tighten each iteration, in [0.05, 1] (1: the gates stay at their initial values; the matcher treats a smaller factor as 0.05)");
 		v("min_overlap", minOverlap, "Matched vectors must overlap along their line by at least this [m]");
 		v("min_matches", minMatches, "Fewest matched vector pairs for an accepted registration");
 		v("min_matched_length", minMatchedLength, "Fewest metres of overlapping matched vectors for an accepted registration [m]");
@@ -162,6 +164,7 @@ struct MatcherOptions
 		v("sigma_floor", sigmaFloor, "Smallest residual std. dev. per metre of matched line used for the information matrix [m]");
 		v("convergence_translation", convergenceTranslation, "Registration converged when a step moves less than this [m]");
 		v("convergence_rotation", convergenceRotation, "Registration converged when a step turns less than this [rad]");
+		v("robust_scale_gate_share", robustScaleGateShare, "Beyond the paper (Sec. 4.2 and Sohn & Kim 2008 weight no residuals): while iterating, a point-to-line residual r weighs 1 / (1 + r^2 / c^2) (Cauchy) with c = this x the current line-offset gate, never below sigma_floor; large: least squares over the gated pairs");
 	}
 };
 

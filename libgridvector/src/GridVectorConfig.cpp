@@ -1,6 +1,6 @@
 #include <gridvector/GridVectorConfig.h>
 
-#include <mrpt/config/CConfigFile.h>
+#include <mrpt/config/CConfigFileMemory.h>
 
 #include <cctype>
 #include <cerrno>
@@ -8,7 +8,9 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <charconv>
 #include <set>
 #include <sstream>
@@ -112,9 +114,13 @@ void GridVectorConfig::loadFromConfigFile(
 
 void GridVectorConfig::loadFromFile(const std::string& iniPath, const std::string& prefix)
 {
-	std::ifstream probe(iniPath);
-	if (!probe) throw std::runtime_error(iniPath + ": cannot open config file");
-	mrpt::config::CConfigFile cfg(iniPath);
+	// read here, not by CConfigFile: it sizes the file by seeking, which fails on pipes (--config <(...))
+	if (std::filesystem::is_directory(iniPath)) throw std::runtime_error(iniPath + ": cannot read config file (it is a directory)");
+	std::ifstream in(iniPath, std::ios::binary);
+	if (!in) throw std::runtime_error(iniPath + ": cannot open config file");
+	const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+	if (in.bad()) throw std::runtime_error(iniPath + ": cannot read config file (read error)");
+	mrpt::config::CConfigFileMemory cfg(text);
 	try
 	{
 		loadFromConfigFile(cfg, prefix, iniPath);

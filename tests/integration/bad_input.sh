@@ -92,6 +92,10 @@ expect 1 "typo.ini: unknown key 'resolutoin'" g8/trajectory.txt -- "$B/gv-graphs
 expect 1 "badval.ini: [gridvector_grid] half_width = '1.5' is not an integer" e8/report.json -- "$B/gv-em-slam" --input room.log --out e8 --config badval.ini --quiet
 expect 1 "badval.ini: [gridvector_grid] half_width = '1.5' is not an integer" - -- "$B/gv-config" --check badval.ini
 expect 1 "typo.ini: no [gv_sim] section" s8/sim.log -- "$B/gv-sim" --config typo.ini --out s8 --quiet
+# a config from a pipe (--config <(...)): read, not sized by seeking; a directory is named as such
+expect 1 "unknown key 'resolutoin'" - -- "$B/gv-config" --check <(cat typo.ini)
+"$B/gv-config" --check <(printf '[gridvector_grid]\nresolution = 0.1\n') > /dev/null || fail "gv-config: a config from a pipe is refused"
+expect 1 "ok: cannot read config file (it is a directory)" - -- "$B/gv-config" --check ok
 # unwritable output (the parent is a file)
 expect 1 "room.log/x: cannot write (Not a directory)" - -- "$B/gv-em-slam" --input room.log --out room.log/x --quiet
 expect 1 "room.log/x: cannot write (Not a directory)" - -- "$B/gv-sim" --out room.log/x --quiet --scans 20

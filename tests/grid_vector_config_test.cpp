@@ -207,3 +207,33 @@ TEST(GridVectorConfig, ValuesThatAreNotNumbersAreErrorsNamingSectionKeyAndValue)
 	EXPECT_EQ(c.grid.halfWidth, 2);
 	EXPECT_FALSE(c.map.mergeOnInsert);
 }
+
+TEST(GridVectorConfig, MStepKeysFromTheCodeKeepTheirOldValuesAndRanges)
+{
+	const gridvector::MStepOptions m;
+	// the constants of MStep.cpp they replace
+	EXPECT_EQ(m.dropDistanceFactor, 1.5);
+	EXPECT_EQ(m.dropLengthShare, 0.5);
+	EXPECT_EQ(m.changedTranslation, 1e-3);
+	EXPECT_EQ(m.changedRotation, 1e-4);
+	EXPECT_EQ(m.movedGateShare, 0.5);
+	EXPECT_EQ(m.searchedNearDistance, 0.5);
+	EXPECT_EQ(m.searchedNearDeg * M_PI / 180, 10 * M_PI / 180);
+	EXPECT_EQ(m.loopWindowMinTranslation, 1.0);
+	EXPECT_EQ(m.loopWindowMinRotationDeg * M_PI / 180, 10 * M_PI / 180);
+	EXPECT_EQ(m.consistencyInfoXY, 1.0);
+	EXPECT_EQ(m.consistencyInfoPhi, 10.0);
+	EXPECT_EQ(m.consistencyChainVarXY, 1e-3);
+	EXPECT_EQ(m.consistencyChainVarPhi, 1e-4);
+	EXPECT_EQ(m.strongMinCorrespondences, 4);
+	EXPECT_EQ(m.strongMinShare, 0.4);
+	EXPECT_EQ(m.strongMinDegeneracy, 0.05);
+	// the loop window's floor must not pass its ceiling (std::clamp's order)
+	GridVectorConfig c;
+	c.mstep.loopWindowMinTranslation = c.mstep.loopSearchMaxRadius;
+	EXPECT_NO_THROW(c.validate());
+	c.mstep.loopWindowMinTranslation = c.mstep.loopSearchMaxRadius + 0.1;
+	EXPECT_THROW(c.validate(), std::invalid_argument);
+	c = {}, c.mstep.consistencyInfoPhi = 0;  // the edge covariance must stay invertible
+	EXPECT_THROW(c.validate(), std::invalid_argument);
+}

@@ -184,6 +184,20 @@ void GridVectorConfig::validate() const
 	require(estep.staticThreshold > 0 && estep.staticThreshold < 1, "estep.static_threshold must be in (0,1)");
 	require(mstep.maxIterations >= 1, "mstep.max_iterations must be >= 1");
 	require(mstep.sequentialWindow >= 1, "mstep.sequential_window must be >= 1");
+	require(mstep.dropDistanceFactor > 0 && mstep.dropLengthShare >= 0 && mstep.movedGateShare >= 0,
+			"mstep: drop_distance_factor must be > 0, drop_length_share and moved_gate_share >= 0");
+	require(mstep.changedTranslation >= 0 && mstep.changedRotation >= 0 && mstep.searchedNearDistance >= 0 &&
+				mstep.searchedNearDeg >= 0,
+			"mstep: changed_* and searched_near_* must be >= 0");
+	require(mstep.loopWindowMinTranslation >= 0 && mstep.loopWindowMinTranslation <= mstep.loopSearchMaxRadius &&
+				mstep.loopWindowMinRotationDeg >= 0 &&
+				mstep.loopWindowMinRotationDeg <= 180,
+			"mstep: loop_window_min_translation must be in [0, loop_search_max_radius], loop_window_min_rotation_deg in [0,180]");
+	require(mstep.consistencyInfoXY > 0 && mstep.consistencyInfoPhi > 0 && mstep.consistencyChainVarXY >= 0 &&
+				mstep.consistencyChainVarPhi >= 0,
+			"mstep: consistency_info_* must be > 0, consistency_chain_var_* >= 0");
+	require(mstep.strongMinCorrespondences >= 0 && mstep.strongMinShare >= 0 && mstep.strongMinDegeneracy >= 0,
+			"mstep: strong_min_* must be >= 0");
 	require(mstep.keyframeDistance >= 0 && mstep.keyframeRotationDeg >= 0, "mstep.keyframe_* must be >= 0");
 	require(estep.minPieceLength >= 0 && estep.hysteresis >= 0 && estep.freeWeight > 0,
 			"estep: min_piece_length and hysteresis must be >= 0, free_weight > 0");

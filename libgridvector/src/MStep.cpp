@@ -210,7 +210,7 @@ bool MStep::sameScans(const Constraint& c) const
 // Eq. 24-25: an edge is recomputed only if its data association changed.
 void MStep::updateExisting(const Scans& scans, const Poses& poses, MStepReport& rep)
 {
-	const double far = 1.5 * cfg_.mstep.overlapDistance;
+	const double far = cfg_.mstep.dropDistanceFactor * cfg_.mstep.overlapDistance;
 	for (auto it = constraints_.begin(); it != constraints_.end();)
 	{
 		Constraint& c = it->second;
@@ -219,7 +219,7 @@ void MStep::updateExisting(const Scans& scans, const Poses& poses, MStepReport& 
 		// (a loop-search edge was accepted on its own criteria, not on the overlap length)
 		if (nonSeq && (se2::distance(poses[c.from], poses[c.to]) > far ||
 					   (c.kind == EdgeKind::Overlap &&
-						overlapLength(c.from, c.to, scans, poses) < 0.5 * cfg_.mstep.overlapMinLength)))
+						overlapLength(c.from, c.to, scans, poses) < cfg_.mstep.dropLengthShare * cfg_.mstep.overlapMinLength)))
 		{
 			it = constraints_.erase(it);  // no longer overlapping: drop (Sec. 4.3)
 			++rep.removed;
@@ -246,8 +246,8 @@ void MStep::updateExisting(const Scans& scans, const Poses& poses, MStepReport& 
 			continue;
 		}
 		const bool changed = fresh.correspondences != c.correspondences ||
-							 se2::distance(fresh.z, c.z) > 1e-3 ||
-							 std::abs(mrpt::math::wrapToPi(fresh.z.phi - c.z.phi)) > 1e-4;
+							 se2::distance(fresh.z, c.z) > cfg_.mstep.changedTranslation ||
+							 std::abs(mrpt::math::wrapToPi(fresh.z.phi - c.z.phi)) > cfg_.mstep.changedRotation;
 		if (changed) ++rep.recomputed;
 		else fresh.rejected = c.rejected;
 		c = std::move(fresh);
@@ -287,9 +287,9 @@ bool MStep::retry(const EdgeKey& key, const TPose2D& rel) const
 
 bool MStep::movedSince(const TPose2D& before, const TPose2D& now) const
 {
-	return se2::distance(before, now) > 0.5 * cfg_.matcher.gateRhoFinal ||
+	return se2::distance(before, now) > cfg_.mstep.movedGateShare * cfg_.matcher.gateRhoFinal ||
 		   std::abs(mrpt::math::wrapToPi(before.phi - now.phi)) >
-			   0.5 * cfg_.matcher.gatePsiFinalDeg * M_PI / 180;
+			   cfg_.mstep.movedGateShare * cfg_.matcher.gatePsiFinalDeg * M_PI / 180;
 }
 
 bool MStep::hasEdgeNear(uint32_t i, uint32_t jlo, uint32_t jhi) const
@@ -343,8 +343,8 @@ bool MStep::searchedNear(uint32_t i, uint32_t jlo, uint32_t jhi, const Poses& po
 	{
 		if (it->first.second != i) continue;
 		const TPose2D rel = se2::relative(poses[it->first.first], poses[i]);
-		if (se2::distance(it->second, rel) < 0.5 &&
-			std::abs(mrpt::math::wrapToPi(it->second.phi - rel.phi)) < 10 * M_PI / 180)
+		if (se2::distance(it->second, rel) < cfg_.mstep.searchedNearDistance &&
+			std::abs(mrpt::math::wrapToPi(it->second.phi - rel.phi)) < cfg_.mstep.searchedNearDeg * M_PI / 180)
 			return true;
 	}
 	return false;
@@ -356,9 +356,10 @@ LoopWindow MStep::windowOf(uint32_t from, uint32_t to) const
 	const double len = path_[to] - path_[from];
 	const double k = cfg_.mstep.loopSearchSigmas;
 	LoopWindow w;
-	w.translation = std::clamp(k * o.odometrySigmaXYPerM * len, 1.0, cfg_.mstep.loopSearchMaxRadius);
+	w.translation = std::clamp(k * o.odometrySigmaXYPerM * len, cfg_.mstep.loopWindowMinTranslation,
+							   cfg_.mstep.loopSearchMaxRadius);
 	const double sr = o.odometrySigmaPhiPerM * len + o.odometrySigmaPhi * std::sqrt(double(to - from));
-	w.rotation = std::clamp(k * sr, 10 * M_PI / 180, M_PI);
+	w.rotation = std::clamp(k * sr, cfg_.mstep.loopWindowMinRotationDeg * M_PI / 180, M_PI);
 	return w;
 }
 
@@ -460,7 +461,8 @@ std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, 
 void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh, MStepReport& rep)
 {
 	const uint32_t K = uint32_t(std::max(1, cfg_.mstep.overlapRunGap));
-	const Matrix3d reg = Vector3d(1.0, 1.0, 10.0).asDiagonal();  // caps sigma at 1 m / 0.3 rad
+	const auto& m = cfg_.mstep;
+	const Matrix3d reg = Vector3d(m.consistencyInfoXY, m.consistencyInfoXY, m.consistencyInfoPhi).asDiagonal();
 	std::vector<EdgeKey> drop;
 	for (const EdgeKey& key : fresh)
 	{
@@ -479,12 +481,13 @@ void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh
 				se2::relative(poses[c.to], poses[o.to]));
 			const Vector3d d = PoseGraph::error(TPose2D(0, 0, 0), pred, o.z);
 			const double steps = std::abs(double(o.from) - c.from) + std::abs(double(o.to) - c.to);
-			const Matrix3d chain = Vector3d(1e-3, 1e-3, 1e-4).asDiagonal() * (1.0 + steps);
+			const Matrix3d chain = Vector3d(m.consistencyChainVarXY, m.consistencyChainVarXY, m.consistencyChainVarPhi).asDiagonal() *
+								 (1.0 + steps);
 			const Matrix3d cov = covC + (o.information + reg).inverse() + chain;
 			(d.dot(cov.ldlt().solve(d)) < cfg_.mstep.consistencyChi2 ? support : against)++;
 		}
-		const bool strong = c.correspondences.size() >= 4 && c.matchedShare >= 0.4 &&
-							c.degeneracy >= 0.05;
+		const bool strong = c.correspondences.size() >= size_t(m.strongMinCorrespondences) &&
+							c.matchedShare >= m.strongMinShare && c.degeneracy >= m.strongMinDegeneracy;
 		if (support > against || (support == 0 && against == 0 && strong)) continue;
 		drop.push_back(key);
 	}

@@ -244,6 +244,22 @@ struct MStepOptions
 	double loopSearchDistinct = 0.3;  //!< solutions further apart than this are distinct [m]
 	bool loopSearchWeakLinks = true;  //!< passes linked only by corridor-degenerate or rejected edges are still searched
 	double loopSearchCandidateSpacing = 0.0;  //!< loop search: also register the pass's poses this far apart along the path [m]; 0: nearest only
+	double dropDistanceFactor = 1.5;  //!< a non-sequential edge whose poses are further apart than this x overlap_distance is dropped
+	double dropLengthShare = 0.5;  //!< an overlap edge whose overlap falls below this x overlap_min_length is dropped
+	double changedTranslation = 1e-3;  //!< a re-registered edge changed when its pose moved more than this [m]
+	double changedRotation = 1e-4;  //!< ... or turned more than this [rad]
+	double movedGateShare = 0.5;  //!< a failed pair is retried once its relative pose moved this x the final matcher gates
+	double searchedNearDistance = 0.5;  //!< a pair searched from within this of the relative pose is not searched again [m]
+	double searchedNearDeg = 10.0;  //!< ... and within this turn [deg]
+	double loopWindowMinTranslation = 1.0;  //!< loop-search translation window floor [m]
+	double loopWindowMinRotationDeg = 10.0;  //!< loop-search rotation window floor [deg]
+	double consistencyInfoXY = 1.0;  //!< information added to an edge's in the consistency test [1/m^2]
+	double consistencyInfoPhi = 10.0;  //!< ... [1/rad^2]
+	double consistencyChainVarXY = 1e-3;  //!< chain covariance per scan step in the consistency test [m^2]
+	double consistencyChainVarPhi = 1e-4;  //!< ... [rad^2]
+	int strongMinCorrespondences = 4;  //!< an unsupported overlap edge is kept with at least this many correspondences,
+	double strongMinShare = 0.4;  //!< ... this matched share
+	double strongMinDegeneracy = 0.05;  //!< ... and this translation degeneracy ratio
 
 	template <class V>
 	void visit(V&& v)
@@ -273,6 +289,22 @@ struct MStepOptions
 		v("loop_search_distinct", loopSearchDistinct, "Loop-search solutions further apart than this are distinct [m]");
 		v("loop_search_weak_links", loopSearchWeakLinks, "The loop search also runs between passes that only edges with a degenerate translation (below matcher.degenerate_ratio: a corridor slide) or rejected edges link; false: any edge spares the pair");
 		v("loop_search_candidate_spacing", loopSearchCandidateSpacing, "The loop search registers a pose against the earlier pass's pose nearest in view and against every pose of that pass inside the window at least this far (odometry path) from the poses already taken, keeping the result with the most matched length (the nearest pose under a misplaced estimate need not be the one that sees the place); 0 (default): the nearest pose only; 1 m lowers the intel loop error but raises the aces one with the EmSlam defaults (doc/benchmarks.md) [m]");
+		v("drop_distance_factor", dropDistanceFactor, "Beyond the paper (Sec. 4.3 drops edges whose scans no longer overlap): a non-sequential edge whose poses are further apart than this x overlap_distance is removed");
+		v("drop_length_share", dropLengthShare, "Beyond the paper: an overlap edge whose scans' corresponding static length falls below this x overlap_min_length is removed (Sec. 4.3)");
+		v("changed_translation", changedTranslation, "Eq. 24-25 bookkeeping, beyond the paper: a re-registered edge with the same correspondences counts as changed when its relative pose moved more than this [m]");
+		v("changed_rotation", changedRotation, "... or turned more than this [rad]");
+		v("moved_gate_share", movedGateShare, "Beyond the paper: a pair whose registration failed is tried again once its relative pose moved more than this x matcher.gate_rho_final or turned more than this x matcher.gate_psi_final_deg (or its scans' vectors changed)");
+		v("searched_near_distance", searchedNearDistance, "Beyond the paper: the loop search does not search a pair again from a relative pose within this of one it was searched from [m]");
+		v("searched_near_deg", searchedNearDeg, "... and turned less than this from it [deg]");
+		v("loop_window_min_translation", loopWindowMinTranslation, "Beyond the paper: the loop-search translation window (loop_search_sigmas x the odometry model) is at least this [m]");
+		v("loop_window_min_rotation_deg", loopWindowMinRotationDeg, "Beyond the paper: the loop-search rotation window is at least this (and at most 180) [deg]");
+		v("consistency_info_xy", consistencyInfoXY, "Beyond the paper, pairwise consistency test of overlap edges: this information is added to each edge's before inverting (caps its translation std. dev. at 1/sqrt(this)) [1/m^2]");
+		v("consistency_info_phi", consistencyInfoPhi, "... and this to its rotation information (10: 0.32 rad) [1/rad^2]");
+		v("consistency_chain_var_xy", consistencyChainVarXY, "Beyond the paper: consistency test, translation variance of the local trajectory chain per scan step between the two edges' ends (times 1 + steps) [m^2]");
+		v("consistency_chain_var_phi", consistencyChainVarPhi, "... its rotation variance per step [rad^2]");
+		v("strong_min_correspondences", strongMinCorrespondences, "Beyond the paper: an overlap edge that no other edge supports or contradicts is kept only when it is strong: at least this many vector correspondences,");
+		v("strong_min_share", strongMinShare, "... at least this matched share of the shorter scan's static length");
+		v("strong_min_degeneracy", strongMinDegeneracy, "... and a translation degeneracy ratio (weakest / strongest direction's information) of at least this");
 	}
 };
 

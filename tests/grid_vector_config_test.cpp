@@ -228,6 +228,14 @@ TEST(GridVectorConfig, MStepKeysFromTheCodeKeepTheirOldValuesAndRanges)
 	EXPECT_EQ(m.strongMinCorrespondences, 4);
 	EXPECT_EQ(m.strongMinShare, 0.4);
 	EXPECT_EQ(m.strongMinDegeneracy, 0.05);
+	EXPECT_EQ(m.loopCornerMinLength, 0.3);  // LoopSearch.cpp's constants
+	EXPECT_EQ(m.loopCornerMinAngleDeg * (M_PI / 180.0), 30 * (M_PI / 180.0));
+	EXPECT_EQ(m.loopCornerMaxGap, 1.0);
+	EXPECT_EQ(m.loopCornerTurnToleranceDeg * (M_PI / 180.0), 10 * (M_PI / 180.0));
+	EXPECT_EQ(m.loopDuplicateDistance, 0.1);
+	EXPECT_EQ(m.loopDuplicateDeg * (M_PI / 180.0), 2 * (M_PI / 180.0));
+	EXPECT_EQ(m.loopScoreGateFactor, 2.0);
+	EXPECT_EQ(m.loopDistinctDeg * (M_PI / 180.0), 5 * (M_PI / 180.0));
 	// the loop window's floor must not pass its ceiling (std::clamp's order)
 	GridVectorConfig c;
 	c.mstep.loopWindowMinTranslation = c.mstep.loopSearchMaxRadius;

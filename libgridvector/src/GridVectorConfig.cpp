@@ -198,6 +198,12 @@ void GridVectorConfig::validate() const
 			"mstep: consistency_info_* must be > 0, consistency_chain_var_* >= 0");
 	require(mstep.strongMinCorrespondences >= 0 && mstep.strongMinShare >= 0 && mstep.strongMinDegeneracy >= 0,
 			"mstep: strong_min_* must be >= 0");
+	require(mstep.loopCornerMinLength >= 0 && mstep.loopCornerMinAngleDeg >= 0 && mstep.loopCornerMinAngleDeg <= 90 &&
+				mstep.loopCornerMaxGap >= 0 && mstep.loopCornerTurnToleranceDeg >= 0,
+			"mstep: loop_corner_* must be >= 0, loop_corner_min_angle_deg <= 90");
+	require(mstep.loopDuplicateDistance >= 0 && mstep.loopDuplicateDeg >= 0 && mstep.loopScoreGateFactor > 0 &&
+				mstep.loopDistinctDeg >= 0,
+			"mstep: loop_duplicate_* and loop_distinct_deg must be >= 0, loop_score_gate_factor > 0");
 	require(mstep.keyframeDistance >= 0 && mstep.keyframeRotationDeg >= 0, "mstep.keyframe_* must be >= 0");
 	require(estep.minPieceLength >= 0 && estep.hysteresis >= 0 && estep.freeWeight > 0,
 			"estep: min_piece_length and hysteresis must be >= 0, free_weight > 0");

@@ -46,7 +46,7 @@ LoopSearch::LoopSearch(const MatcherOptions& matcher, const MStepOptions& opts)
 // Corners: two long vectors at least 30 deg apart whose lines meet near both.
 std::vector<LoopSearch::Corner> LoopSearch::corners(const std::vector<MatchSegment>& s) const
 {
-	const auto idx = longest(s, size_t(std::max(2, opts_.loopSearchVectors)), 0.3);
+	const auto idx = longest(s, size_t(std::max(2, opts_.loopSearchVectors)), opts_.loopCornerMinLength);
 	std::vector<Corner> out;
 	for (size_t i = 0; i < idx.size(); ++i)
 		for (size_t j = 0; j < idx.size(); ++j)
@@ -55,12 +55,13 @@ std::vector<LoopSearch::Corner> LoopSearch::corners(const std::vector<MatchSegme
 			const MatchSegment &u = s[idx[i]], &v = s[idx[j]];
 			const Vector2d du = (u.e - u.s).normalized(), dv = (v.e - v.s).normalized();
 			const double cross = du.x() * dv.y() - du.y() * dv.x();
-			if (std::abs(cross) < std::sin(30 * kDeg)) continue;
+			if (std::abs(cross) < std::sin(opts_.loopCornerMinAngleDeg * kDeg)) continue;
 			// u.s + a du = v.s + b dv
 			const Vector2d w = v.s - u.s;
 			const double a = (w.x() * dv.y() - w.y() * dv.x()) / cross;
 			const Vector2d p = u.s + a * du;
-			if (toSegment(p, u.s, u.e) > 1.0 || toSegment(p, v.s, v.e) > 1.0) continue;
+			if (toSegment(p, u.s, u.e) > opts_.loopCornerMaxGap || toSegment(p, v.s, v.e) > opts_.loopCornerMaxGap)
+				continue;
 			Corner c;
 			c.p = p;
 			c.psi1 = std::atan2(du.y(), du.x());
@@ -82,7 +83,7 @@ std::vector<TPose2D> LoopSearch::hypotheses(const std::vector<MatchSegment>& a,
 	};
 	std::vector<Scored> cand{{prior, 0}};
 	const auto ca = corners(a), cb = corners(b);
-	const double turnTol = 10 * kDeg;
+	const double turnTol = opts_.loopCornerTurnToleranceDeg * kDeg;
 	for (const Corner& A : ca)
 		for (const Corner& B : cb)
 		{
@@ -94,15 +95,15 @@ std::vector<TPose2D> LoopSearch::hypotheses(const std::vector<MatchSegment>& a,
 			if (std::hypot(t.x() - prior.x, t.y() - prior.y) > w.translation) continue;
 			bool dup = false;
 			for (const Scored& h : cand)
-				if (std::hypot(h.pose.x - t.x(), h.pose.y - t.y()) < 0.1 &&
-					std::abs(wrap(h.pose.phi - phi)) < 2 * kDeg)
+				if (std::hypot(h.pose.x - t.x(), h.pose.y - t.y()) < opts_.loopDuplicateDistance &&
+					std::abs(wrap(h.pose.phi - phi)) < opts_.loopDuplicateDeg * kDeg)
 				{
 					dup = true;
 					break;
 				}
 			if (!dup) cand.push_back({TPose2D(t.x(), t.y(), phi), 0});
 		}
-	const MatchGates gates = matcher_.finalGates(2.0);
+	const MatchGates gates = matcher_.finalGates(opts_.loopScoreGateFactor);
 	for (Scored& h : cand) h.score = matcher_.correspondences(a, b, h.pose, gates, nullptr);
 	std::stable_sort(cand.begin(), cand.end(), [](const Scored& x, const Scored& y) { return x.score > y.score; });
 	std::vector<TPose2D> out;
@@ -139,7 +140,7 @@ bool LoopSearch::ambiguous(const MatchResult& best, const std::vector<MatchResul
 {
 	for (const MatchResult& r : others)
 		if ((std::hypot(r.pose.x - best.pose.x, r.pose.y - best.pose.y) > opts_.loopSearchDistinct ||
-			 std::abs(wrap(r.pose.phi - best.pose.phi)) > 5 * kDeg) &&
+			 std::abs(wrap(r.pose.phi - best.pose.phi)) > opts_.loopDistinctDeg * kDeg) &&
 			r.matchedLength >= opts_.loopSearchAmbiguity * best.matchedLength)
 			return true;
 	return false;

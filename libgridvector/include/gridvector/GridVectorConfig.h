@@ -260,6 +260,14 @@ struct MStepOptions
 	int strongMinCorrespondences = 4;  //!< an unsupported overlap edge is kept with at least this many correspondences,
 	double strongMinShare = 0.4;  //!< ... this matched share
 	double strongMinDegeneracy = 0.05;  //!< ... and this translation degeneracy ratio
+	double loopCornerMinLength = 0.3;  //!< loop search: corners only from static vectors this long [m]
+	double loopCornerMinAngleDeg = 30.0;  //!< ... whose directions differ by at least this [deg]
+	double loopCornerMaxGap = 1.0;  //!< ... and whose lines meet within this of both segments [m]
+	double loopCornerTurnToleranceDeg = 10.0;  //!< paired corners' turns agree within this [deg]
+	double loopDuplicateDistance = 0.1;  //!< hypotheses closer than this are one [m]
+	double loopDuplicateDeg = 2.0;  //!< ... and turned less than this [deg]
+	double loopScoreGateFactor = 2.0;  //!< hypotheses scored with the final matcher gates x this
+	double loopDistinctDeg = 5.0;  //!< solutions turned more than this apart are distinct [deg]
 
 	template <class V>
 	void visit(V&& v)
@@ -305,6 +313,14 @@ struct MStepOptions
 		v("strong_min_correspondences", strongMinCorrespondences, "Beyond the paper: an overlap edge that no other edge supports or contradicts is kept only when it is strong: at least this many vector correspondences,");
 		v("strong_min_share", strongMinShare, "... at least this matched share of the shorter scan's static length");
 		v("strong_min_degeneracy", strongMinDegeneracy, "... and a translation degeneracy ratio (weakest / strongest direction's information) of at least this");
+		v("loop_corner_min_length", loopCornerMinLength, "Beyond the paper (loop search): corners are made only from static vectors at least this long [m]");
+		v("loop_corner_min_angle_deg", loopCornerMinAngleDeg, "Beyond the paper: a corner's two vectors differ in direction by at least this [deg]");
+		v("loop_corner_max_gap", loopCornerMaxGap, "Beyond the paper: a corner's lines meet within this distance of both segments [m]");
+		v("loop_corner_turn_tolerance_deg", loopCornerTurnToleranceDeg, "Beyond the paper: two scans' corners pair into a hypothesis when their turns agree within this [deg]");
+		v("loop_duplicate_distance", loopDuplicateDistance, "Beyond the paper: loop hypotheses closer than this are one [m]");
+		v("loop_duplicate_deg", loopDuplicateDeg, "... and turned less than this from each other [deg]");
+		v("loop_score_gate_factor", loopScoreGateFactor, "Beyond the paper: hypotheses are ranked by the length matched under the final matcher gates widened by this factor");
+		v("loop_distinct_deg", loopDistinctDeg, "Beyond the paper: loop-search solutions turned more than this apart are distinct (as loop_search_distinct for translation) [deg]");
 	}
 };
 

@@ -1,5 +1,6 @@
 // gv-eval: trajectory accuracy (as ../shared/bench/evaltraj.py) and map quality
 // against gv-sim's truth.
+#include <gridvector/eval/FalseStatic.h>
 #include <gridvector/eval/MapEval.h>
 #include <gridvector/eval/TrajectoryEval.h>
 #include <gridvector/io/ArgParser.h>
@@ -83,8 +84,24 @@ int mapCommand(const io::ArgParser& a)
 		doors = eval::transformDoors(doors, T);
 	}
 	const auto m = eval::evaluateMap(vectors, truth, a.has("doors") ? &doors : nullptr, o);
-	if (a.has("json")) std::cout << eval::formatJson(m) << "\n";
-	else std::cout << a.positional()[1] << ": " << vectors.size() << " vectors\n" << eval::formatText(m);
+	eval::FalseStaticBreakdown b;
+	if (a.has("breakdown"))
+	{
+		b = eval::falseStaticBreakdown(vectors, truth, o);
+		const auto truePath = io::readTrajectory(a.positional()[2] + "/" + sim::SimFiles::trajectory);
+		if (!truePath.empty()) b.timeOrigin = truePath.front().first;
+	}
+	if (a.has("json"))
+	{
+		std::string j = eval::formatJson(m);
+		if (a.has("breakdown")) j.insert(j.size() - 1, ", \"false_static\": " + eval::formatJson(b));
+		std::cout << j << "\n";
+	}
+	else
+	{
+		std::cout << a.positional()[1] << ": " << vectors.size() << " vectors\n" << eval::formatText(m);
+		if (a.has("breakdown")) std::cout << eval::formatText(b);
+	}
 	return 0;
 }
 }  // namespace
@@ -99,6 +116,7 @@ int main(int argc, char** argv)
 	args.flag("log-pose", "traj: for logs, use the poses the log attaches to scans instead of odometry");
 	args.option("trajectory", "EST", "map: the trajectory the map was built with; aligns the map to the truth like the ATE");
 	args.option("doors", "FILE", "map: detected doors 'hinge_x hinge_y length ...' to score door recall");
+	args.flag("breakdown", "map: the static length off every true wall by its nearest dynamic truth, and each door's passes");
 	args.option("tolerance", "M", "map: distance for 'on a wall' / 'on a dynamic object' (default 0.1 m)");
 	args.option("door-tolerance", "M", "map: hinge match distance (default 0.3 m)");
 	return io::runTool(args, argc, argv, [&]() -> int {

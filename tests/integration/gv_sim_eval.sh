@@ -59,6 +59,22 @@ echo "$json" | grep -q '"static_precision": 1.000000' || fail "precision: $json"
 echo "$json" | grep -q '"static_recall": 1.000000' || fail "recall: $json"
 echo "$json" | grep -q '"dynamic_detection": 1.000000' || fail "detection: $json"
 echo "$json" | grep -q '"door_recall": 1.000000' || fail "doors: $json"
+# --breakdown: nothing off the walls in the perfect map; every closed leaf added as static is
+# false static, attributed to the doors (0.7 m each: 0.1 m at either end lies within the walls' tolerance)
+json=$("$BIN/gv-eval" map "$T/perfect.txt" "$T/a" --json --breakdown)
+echo "$json" | grep -q '"false_static": {"false_static_m": 0.000000' || fail "breakdown, perfect map: $json"
+awk '!/^#/{print $1, $2, $1 + $3 * cos($4), $2 + $3 * sin($4), 1.0}' "$T/a/truth_doors.txt" > "$T/leaves.txt"
+cat "$T/perfect.txt" "$T/leaves.txt" > "$T/closed.txt"
+text=$("$BIN/gv-eval" map "$T/closed.txt" "$T/a" --breakdown)
+doors=$(grep -c . "$T/leaves.txt")
+line=$(echo "$text" | grep '^false static:')
+python3 - "$doors" "$line" <<'PY' || fail "breakdown, closed leaves: $line"
+import re, sys
+n = int(sys.argv[1]); v = [float(x) for x in re.findall(r"[0-9]+\.[0-9]+", sys.argv[2])]
+total, one, two, obj, people, other = v
+assert abs(total - 0.7 * n) < 0.02 * n and abs(one + two - total) < 0.011 and obj == people == other == 0, v
+PY
+[ "$(echo "$text" | grep -c '^door [0-9]*: ')" = "$doors" ] || fail "breakdown: a line per door: $text"
 set +e
 printf '0 0 1 1\n' > "$T/bad.txt"
 "$BIN/gv-eval" map "$T/bad.txt" "$T/a" 2> "$T/err.txt"; rc=$?

@@ -26,17 +26,11 @@ double lengthWhere(const Segment& s, double step, const std::function<bool(const
 	return len * hits / n;
 }
 
-/** Door leaves every 3 deg between closed and open: together they cover the swept sector. */
 std::vector<Segment> doorSweeps(const std::vector<sim::DoorTruth>& doors)
 {
 	std::vector<Segment> out;
 	for (const auto& d : doors)
-	{
-		const double span = std::remainder(d.openAngle - d.closedAngle, 2 * M_PI);
-		const int n = std::max(1, int(std::ceil(std::abs(span) / (3 * M_PI / 180))));
-		for (int k = 0; k <= n; k++)
-			out.emplace_back(d.hinge, d.hinge + Vec2::polar(d.length, d.closedAngle + span * k / n));
-	}
+		for (const auto& s : doorSweep(d)) out.push_back(s);
 	return out;
 }
 
@@ -47,27 +41,6 @@ std::string f(double v, const char* fmt = "%.4f")
 	char b[64];
 	std::snprintf(b, sizeof b, fmt, v);
 	return b;
-}
-
-/** Per true door: did the laser see its leaf at two angles >= minDiff apart (truth hit runs)? */
-std::vector<bool> doorsSeenSwinging(const sim::Truth& truth, const MapEvalOptions& opt)
-{
-	std::vector<double> lo(truth.doors.size(), 1e9), hi(truth.doors.size(), -1e9);
-	for (const auto& h : truth.hits)
-	{
-		if (h.kind != sim::HitKind::Door || h.id < 0 || size_t(h.id) >= truth.doors.size()) continue;
-		if (h.seg.length() < opt.doorMinRunLength) continue;
-		// leaf direction from the hinge, so that the angle does not wrap with the run's order
-		const Vec2 hinge = truth.doors[size_t(h.id)].hinge;
-		const Vec2 far = (h.seg.a - hinge).norm() > (h.seg.b - hinge).norm() ? h.seg.a : h.seg.b;
-		const double a = std::atan2(far.y - hinge.y, far.x - hinge.x);
-		const double ref = truth.doors[size_t(h.id)].closedAngle;
-		const double rel = std::atan2(std::sin(a - ref), std::cos(a - ref));
-		lo[size_t(h.id)] = std::min(lo[size_t(h.id)], rel), hi[size_t(h.id)] = std::max(hi[size_t(h.id)], rel);
-	}
-	std::vector<bool> seen(truth.doors.size(), false);
-	for (size_t i = 0; i < seen.size(); ++i) seen[i] = hi[i] - lo[i] >= opt.doorMinStateDiffDeg * M_PI / 180.0;
-	return seen;
 }
 
 void evaluateDoors(MapMetrics& m, const sim::Truth& truth, const std::vector<sim::DoorTruth>& detected,
@@ -100,6 +73,40 @@ void evaluateDoors(MapMetrics& m, const sim::Truth& truth, const std::vector<sim
 	m.doorPrecision = ratio(double(m.detectedCorrect), double(m.detectedDoors));
 }
 }  // namespace
+
+// Door leaves every 3 deg between closed and open: together they cover the swept sector.
+std::vector<Segment> doorSweep(const sim::DoorTruth& d)
+{
+	std::vector<Segment> out;
+	const double span = std::remainder(d.openAngle - d.closedAngle, 2 * M_PI);
+	const int n = std::max(1, int(std::ceil(std::abs(span) / (3 * M_PI / 180))));
+	for (int k = 0; k <= n; k++)
+		out.emplace_back(d.hinge, d.hinge + Vec2::polar(d.length, d.closedAngle + span * k / n));
+	return out;
+}
+
+// The direction of the leaf's far end from the hinge, so that the angle does not wrap with the run's order.
+double leafAngle(const sim::HitRun& h, const sim::DoorTruth& d)
+{
+	const Vec2 far = (h.seg.a - d.hinge).norm() > (h.seg.b - d.hinge).norm() ? h.seg.a : h.seg.b;
+	const double a = std::atan2(far.y - d.hinge.y, far.x - d.hinge.x);
+	return std::atan2(std::sin(a - d.closedAngle), std::cos(a - d.closedAngle));
+}
+
+std::vector<bool> doorsSeenSwinging(const sim::Truth& truth, const MapEvalOptions& opt)
+{
+	std::vector<double> lo(truth.doors.size(), 1e9), hi(truth.doors.size(), -1e9);
+	for (const auto& h : truth.hits)
+	{
+		if (h.kind != sim::HitKind::Door || h.id < 0 || size_t(h.id) >= truth.doors.size()) continue;
+		if (h.seg.length() < opt.doorMinRunLength) continue;
+		const double rel = leafAngle(h, truth.doors[size_t(h.id)]);
+		lo[size_t(h.id)] = std::min(lo[size_t(h.id)], rel), hi[size_t(h.id)] = std::max(hi[size_t(h.id)], rel);
+	}
+	std::vector<bool> seen(truth.doors.size(), false);
+	for (size_t i = 0; i < seen.size(); ++i) seen[i] = hi[i] - lo[i] >= opt.doorMinStateDiffDeg * M_PI / 180.0;
+	return seen;
+}
 
 std::vector<MapVector> readVectors(const std::string& path)
 {

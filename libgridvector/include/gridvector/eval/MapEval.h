@@ -74,6 +74,16 @@ struct MapMetrics
 	double doorRecallObserved = 0;
 };
 
+/** Per true door: was its leaf seen in two states, i.e. truth hit runs
+ * (truth_dynamic.txt, `hit door`) of at least doorMinRunLength whose leaf
+ * angles differ by doorMinStateDiffDeg or more? */
+std::vector<bool> doorsSeenSwinging(const sim::Truth& truth, const MapEvalOptions& opt = {});
+/** The leaf angle of a door's hit run from its closed angle [rad] (the run's end
+ * farther from the hinge). */
+double leafAngle(const sim::HitRun& h, const sim::DoorTruth& d);
+/** A door's swept sector as leaves every 3 deg from closed to open. */
+std::vector<sim::Segment> doorSweep(const sim::DoorTruth& d);
+
 /** detectedDoors may be null (door recall not evaluated). */
 MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& truth,
 					   const std::vector<sim::DoorTruth>* detectedDoors, const MapEvalOptions& opt = {});

@@ -1,0 +1,168 @@
+#include <gridvector/eval/FalseStatic.h>
+#include <gridvector/eval/SegmentIndex.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace gridvector::eval
+{
+namespace
+{
+using sim::Segment;
+using sim::Vec2;
+
+std::string f(double v, const char* fmt = "%.2f")
+{
+	char b[64];
+	std::snprintf(b, sizeof b, fmt, v);
+	return b;
+}
+
+constexpr double kDeg = 180.0 / M_PI;
+}  // namespace
+
+// Passes: a door's leaf hit runs in time order, split where no run came for passGap seconds.
+std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const MapEvalOptions& opt, double passGap)
+{
+	const std::vector<bool> seen = doorsSeenSwinging(truth, opt);
+	std::vector<DoorObservation> out(truth.doors.size());
+	std::vector<std::vector<const sim::HitRun*>> runs(truth.doors.size());
+	for (const auto& h : truth.hits)
+		if (h.kind == sim::HitKind::Door && h.id >= 0 && size_t(h.id) < truth.doors.size()) runs[size_t(h.id)].push_back(&h);
+	for (const auto& s : truth.doorSwings)
+		if (s.door >= 0 && size_t(s.door) < out.size()) out[size_t(s.door)].swingTimes.push_back(s);
+	for (size_t i = 0; i < out.size(); ++i)
+	{
+		const sim::DoorTruth& d = truth.doors[i];
+		DoorObservation& o = out[i];
+		o.swings = d.swings;
+		o.openDeg = std::abs(std::remainder(d.openAngle - d.closedAngle, 2 * M_PI)) * kDeg;
+		o.seenSwinging = seen[i];
+		std::stable_sort(runs[i].begin(), runs[i].end(), [](const auto* a, const auto* b) { return a->t < b->t; });
+		for (const sim::HitRun* h : runs[i])
+		{
+			if (o.passes.empty() || h->t - o.passes.back().t1 > passGap) o.passes.push_back({h->t, h->t, 0, false, 0, 0});
+			DoorPass& p = o.passes.back();
+			p.t1 = h->t;
+			p.runs++;
+			if (h->seg.length() < opt.doorMinRunLength) continue;
+			const double a = std::abs(leafAngle(*h, d)) * kDeg;
+			p.minDeg = p.angled ? std::min(p.minDeg, a) : a;
+			p.maxDeg = p.angled ? std::max(p.maxDeg, a) : a;
+			p.angled = true;
+		}
+	}
+	return out;
+}
+
+FalseStaticBreakdown falseStaticBreakdown(const std::vector<MapVector>& vectors, const sim::Truth& truth,
+										  const MapEvalOptions& opt, double passGap)
+{
+	FalseStaticBreakdown b;
+	b.doors = doorObservations(truth, opt, passGap);
+	std::vector<std::vector<Segment>> doorPlaces(truth.doors.size());
+	std::vector<Segment> object, people;
+	for (size_t i = 0; i < truth.doors.size(); ++i) doorPlaces[i] = doorSweep(truth.doors[i]);
+	for (const auto& e : truth.objectEdges) object.push_back(e.edge);
+	for (const auto& h : truth.hits)
+	{
+		if (h.kind == sim::HitKind::Door && h.id >= 0 && size_t(h.id) < truth.doors.size())
+			doorPlaces[size_t(h.id)].push_back(h.seg);
+		else if (h.kind == sim::HitKind::Object) object.push_back(h.seg);
+		else if (h.kind == sim::HitKind::Person) people.push_back(h.seg);
+	}
+	// places[0..doors) are the doors, then the object, then people
+	std::vector<SegmentIndex> places;
+	for (auto& p : doorPlaces) places.emplace_back(std::move(p));
+	places.emplace_back(std::move(object));
+	places.emplace_back(std::move(people));
+	const size_t objectIdx = truth.doors.size(), peopleIdx = objectIdx + 1;
+	const SegmentIndex walls(truth.walls);
+	for (const auto& v : vectors)
+	{
+		if (!v.isStatic) continue;
+		const double len = v.seg.length();
+		if (len <= 0) continue;
+		const int n = std::max(1, int(std::ceil(len / opt.sampleStep)));
+		const double w = len / n;
+		for (int k = 0; k < n; ++k)
+		{
+			const Vec2 p = v.seg.at((k + 0.5) / n);
+			if (walls.within(p, opt.wallTolerance)) continue;
+			b.total += w;
+			double best = sim::kNoHit;
+			size_t which = places.size();
+			for (size_t q = 0; q < places.size(); ++q)
+			{
+				const double dq = places[q].nearest(p, opt.dynamicTolerance);
+				if (dq < best) best = dq, which = q;
+			}
+			if (which == places.size()) b.other += w;
+			else if (which == objectIdx) b.movedObject += w;
+			else if (which == peopleIdx) b.people += w;
+			else
+			{
+				b.doors[which].falseStatic += w;
+				(b.doors[which].seenSwinging ? b.twoStateDoors : b.oneStateDoors) += w;
+			}
+		}
+	}
+	return b;
+}
+
+std::string formatText(const FalseStaticBreakdown& b)
+{
+	std::ostringstream os;
+	os << "false static:      " << f(b.total) << " m off every true wall: doors seen in one state " << f(b.oneStateDoors)
+	   << ", doors seen in two states " << f(b.twoStateDoors) << ", moved object " << f(b.movedObject) << ", people "
+	   << f(b.people) << ", other " << f(b.other) << " m\n";
+	for (size_t i = 0; i < b.doors.size(); ++i)
+	{
+		const DoorObservation& d = b.doors[i];
+		os << "door " << i << ": " << d.swings << " swings (open " << f(d.openDeg, "%.0f") << " deg), "
+		   << (d.seenSwinging ? "seen in two states" : "seen in one state") << ", false static " << f(d.falseStatic)
+		   << " m, " << d.passes.size() << " passes:";
+		for (const DoorPass& p : d.passes)
+		{
+			os << " [" << f(p.t0 - b.timeOrigin, "%.0f") << "-" << f(p.t1 - b.timeOrigin, "%.0f") << " s, " << p.runs << " scans, ";
+			if (!p.angled) os << "no angle]";
+			else if (p.maxDeg - p.minDeg < 1) os << f(p.minDeg, "%.0f") << " deg]";
+			else os << f(p.minDeg, "%.0f") << "-" << f(p.maxDeg, "%.0f") << " deg]";
+		}
+		os << "; swings at";
+		for (const auto& s : d.swingTimes)
+			os << " " << f(s.t0 - b.timeOrigin, "%.0f") << "-" << f(s.t1 - b.timeOrigin, "%.0f") << " s (" << f(std::abs(s.from) * kDeg, "%.0f") << "->"
+			   << f(std::abs(s.to) * kDeg, "%.0f") << ")";
+		os << "\n";
+	}
+	return os.str();
+}
+
+std::string formatJson(const FalseStaticBreakdown& b)
+{
+	std::ostringstream os;
+	os << "{\"false_static_m\": " << f(b.total, "%.6f") << ", \"one_state_doors_m\": " << f(b.oneStateDoors, "%.6f")
+	   << ", \"two_state_doors_m\": " << f(b.twoStateDoors, "%.6f") << ", \"moved_object_m\": " << f(b.movedObject, "%.6f")
+	   << ", \"people_m\": " << f(b.people, "%.6f") << ", \"other_m\": " << f(b.other, "%.6f") << ", \"doors\": [";
+	for (size_t i = 0; i < b.doors.size(); ++i)
+	{
+		const DoorObservation& d = b.doors[i];
+		os << (i ? ", " : "") << "{\"swings\": " << d.swings << ", \"seen_swinging\": " << (d.seenSwinging ? "true" : "false")
+		   << ", \"false_static_m\": " << f(d.falseStatic, "%.6f") << ", \"passes\": [";
+		for (size_t k = 0; k < d.passes.size(); ++k)
+		{
+			const DoorPass& p = d.passes[k];
+			os << (k ? ", " : "") << "{\"t0\": " << f(p.t0, "%.3f") << ", \"t1\": " << f(p.t1, "%.3f")
+			   << ", \"scans\": " << p.runs;
+			if (p.angled) os << ", \"min_deg\": " << f(p.minDeg, "%.1f") << ", \"max_deg\": " << f(p.maxDeg, "%.1f");
+			os << "}";
+		}
+		os << "]}";
+	}
+	os << "]}";
+	return os.str();
+}
+
+}  // namespace gridvector::eval

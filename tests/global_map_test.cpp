@@ -441,91 +441,25 @@ TEST(GlobalMap, PiecesOfACurvedWallAreNotChainedIntoOneChord)
 	EXPECT_EQ(ids.size(), perScan.size());  // every input in exactly one output
 }
 
-namespace
-{
-/** insertScan as it was before it reused the wipe's search: the wipe, then insertVector
- * (a new search) for each of the scan's vectors. */
-void insertSearchingAgain(GlobalMap& map, const TPose2D& pose, const LocalScan& l)
-{
-	map.wipe(pose, l);
-	for (const GridVector& v : l.vectors)
-	{
-		GridVector m = v.compose(pose);
-		m.scanIndex = l.scanIndex;
-		m.timestamp = l.timestamp;
-		map.insertVector(std::move(m));
-	}
-}
-
-void expectSameMap(const GlobalMap& x, const GlobalMap& y)
-{
-	ASSERT_EQ(x.size(), y.size());
-	for (size_t i = 0; i < x.size(); ++i)
-	{
-		const GridVector &a = x.vectors()[i], &b = y.vectors()[i];
-		ASSERT_EQ(a.id, b.id) << i;
-		EXPECT_EQ(a.start(), b.start()) << i;
-		EXPECT_EQ(a.end(), b.end()) << i;
-		ASSERT_EQ(a.cells().size(), b.cells().size()) << i;
-		for (size_t c = 0; c < a.cells().size(); ++c)
-		{
-			const GridCell &p = a.cells()[c], &q = b.cells()[c];
-			EXPECT_TRUE(p.x_acc == q.x_acc && p.y_acc == q.y_acc && p.n_acc == q.n_acc && p.n_occupy == q.n_occupy &&
-						p.n_visit == q.n_visit)
-				<< i << " " << c;
-		}
-	}
-}
-}  // namespace
-
-TEST(GlobalMap, InsertScanReusesTheWipesSearchOnlyWhileItHolds)
-{
-	// A room with a free-standing wall and a post that split the walls behind
-	// them into several vectors of one scan, driven around twice with noisy
-	// poses: a scan's first piece of a wall merges the map vector its second
-	// piece corresponds to, so some searches must be made again. insertScan
-	// reuses the wipe's search only while it holds: the same map, id for id and
-	// cell for cell, as searching again for every vector.
-	std::vector<gvtest::Seg> walls = gvtest::room(-5, -3, 5, 3);
-	walls.push_back({-1, 1.5, 1, 1.5});
-	const std::vector<gvtest::Disc> posts = {{2.5, -1.5, 0.15}};
-	std::mt19937 rng(3);
-	std::normal_distribution<double> nxy(0, 0.03), nphi(0, 0.5 * M_PI / 180);
-	const VectorExtractor ex;
-	GlobalMap reusing, searching;
-	size_t reused = 0, inserted = 0;
-	for (int t = 0; t < 80; ++t)
-	{
-		const double a = 2 * M_PI * t / 40;
-		const TPose2D truth(3.5 * std::cos(a), 2.0 * std::sin(a), a + M_PI / 2);
-		LocalScan l = ex.extract(gvtest::castScan(truth, walls, posts));
-		l.scanIndex = t;
-		l.timestamp = 0.1 * t;
-		const TPose2D pose(truth.x + nxy(rng), truth.y + nxy(rng), truth.phi + nphi(rng));
-		reusing.insertScan(pose, l);
-		reused += reusing.lastInsertStats().searchesReused;
-		inserted += reusing.lastInsertStats().inserted;
-		insertSearchingAgain(searching, pose, l);
-	}
-	EXPECT_GT(reused, inserted / 2);  // 206 of 320
-	EXPECT_LT(reused, inserted);  // some searches were stale
-	expectSameMap(reusing, searching);
-}
-
-TEST(GlobalMap, InsertScanSearchesAgainWhenItsOwnVectorsCorrespond)
+TEST(GlobalMap, InsertScanMergesTheScansOwnOverlappingVectors)
 {
 	// two overlapping vectors of one scan (a wall seen in two pieces that
-	// overlap) into an empty map: the wipe's search found nothing for either,
-	// but the second corresponds to the first once it is in the map
+	// overlap) into an empty map: nothing corresponds to either when the scan
+	// arrives, but the second corresponds to the first once it is in the map
 	LocalScan l;
 	l.vectors = {wallPiece({0, 2}, {2, 2}), wallPiece({1, 2.05}, {3, 2.05})};
 	l.scanIndex = 0;
-	GlobalMap reusing, searching;
-	reusing.insertScan(TPose2D(0, 0, 0), l);
-	insertSearchingAgain(searching, TPose2D(0, 0, 0), l);
-	EXPECT_EQ(reusing.lastInsertStats().searchesReused, 1u);
-	EXPECT_EQ(reusing.size(), 1u);
-	expectSameMap(reusing, searching);
+	GlobalMap map;
+	map.insertScan(TPose2D(0, 0, 0), l);
+	EXPECT_EQ(map.lastInsertStats().inserted, 2u);
+	EXPECT_EQ(map.lastInsertStats().merges, 1u);
+	EXPECT_EQ(map.lastInsertStats().absorbed, 1u);
+	ASSERT_EQ(map.size(), 1u);
+	const GridVector& m = map.vectors()[0];
+	EXPECT_EQ(m.scanIndex, -1);  // a merged vector
+	EXPECT_NEAR(std::min(m.start().x, m.end().x), 0, 0.05);
+	EXPECT_NEAR(std::max(m.start().x, m.end().x), 3, 0.05);
+	EXPECT_NEAR(0.5 * (m.start().y + m.end().y), 2.025, 0.03);
 }
 
 TEST(GlobalMap, MergeAllGroupRoundsLetAGrownSpanReachFurther)

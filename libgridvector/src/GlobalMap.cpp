@@ -56,13 +56,12 @@ void GlobalMap::addSlot(GridVector m)
 }
 
 // Removes slots by moving the last vector into each hole (largest slot first).
-void GlobalMap::removeSlots(std::vector<size_t> slots, std::vector<size_t>* changed)
+void GlobalMap::removeSlots(std::vector<size_t> slots)
 {
 	std::sort(slots.rbegin(), slots.rend());
 	for (size_t i : slots)
 	{
 		const size_t last = vectors_.size() - 1;
-		if (changed) changed->insert(changed->end(), {i, last});
 		index_.remove(uint32_t(i));
 		if (i != last)
 		{
@@ -92,68 +91,43 @@ std::vector<size_t> GlobalMap::correspondents(const GridVector& v) const
 	return out;
 }
 
-// m_{i,t} = x_t (+) v_{i,t} (Sec. 3.2), and the map vectors each is about to be merged into.
-GlobalMap::PendingScan GlobalMap::pending(const mrpt::math::TPose2D& robotPose, const LocalScan& scan) const
-{
-	PendingScan p;
-	p.vectors.reserve(scan.vectors.size());
-	for (const auto& v : scan.vectors)
-	{
-		p.vectors.push_back(v.compose(robotPose));
-		p.vectors.back().scanIndex = scan.scanIndex;
-		p.vectors.back().timestamp = scan.timestamp;
-	}
-	if (!cfg_.map.mergeOnInsert) return p;
-	for (const GridVector& m : p.vectors) p.targets.push_back(correspondents(m));
-	p.fresh.assign(p.vectors.size(), 1);
-	return p;
-}
-
+// Eq. 8: the triangles of V_t over the vectors already in the map.
 ScanWipe::Stats GlobalMap::wipe(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
 {
-	return wipe(robotPose, scan, pending(robotPose, scan));
-}
-
-// Eq. 8: the triangles of V_t over the vectors already in the map.
-ScanWipe::Stats GlobalMap::wipe(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, const PendingScan& p)
-{
 	std::vector<ScanWipe::Segment> segs;
-	segs.reserve(p.vectors.size());
-	for (const GridVector& m : p.vectors) segs.push_back(ScanWipe::segmentOf(m));
+	segs.reserve(scan.vectors.size());
+	std::vector<std::vector<size_t>> mergeTargets(scan.vectors.size());
+	for (size_t j = 0; j < scan.vectors.size(); ++j)
+	{
+		const GridVector m = scan.vectors[j].compose(robotPose);
+		segs.push_back(ScanWipe::segmentOf(m));
+		// a vector's own beams are counted by Algorithm 1 in the vectors it merges into
+		if (cfg_.map.mergeOnInsert) mergeTargets[j] = correspondents(m);
+	}
 	const int64_t own = scan.scanIndex;
-	// a vector's own beams are counted by Algorithm 1 in the vectors it merges into
 	auto limit = [&](size_t seg, uint32_t slot) {
 		if (own >= 0 && vectors_[slot].scanIndex == own) return WipePart::Outside;
-		if (p.targets.empty()) return WipePart::Hit;
-		const auto& t = p.targets[seg];
+		const auto& t = mergeTargets[seg];
 		return std::binary_search(t.begin(), t.end(), size_t(slot)) ? WipePart::Visited : WipePart::Hit;
 	};
 	return wiper_.apply(sensorPosition(robotPose, scan), segs, vectors_, index_, limit);
 }
 
-void GlobalMap::insertVector(GridVector m) { insertVector(std::move(m), nullptr, nullptr); }
-
 // Algorithm 2 with every correspondent the guard allows, repeated while the merged vector finds new ones.
-// firstCorrespondents: correspondents(m) if already known (the first round's search);
-// changedSlots: if given, gets the slots the merges emptied or refilled.
-void GlobalMap::insertVector(GridVector m, const std::vector<size_t>* firstCorrespondents,
-							 std::vector<size_t>* changedSlots)
+void GlobalMap::insertVector(GridVector m)
 {
 	m.id = nextId_++;
 	if (cfg_.map.mergeOnInsert)
 	{
 		auto mapCorresponding = [&](const GridVector& v) {  // keyed by id: merges move the slots
-			std::vector<size_t> found;
-			const std::vector<size_t>& slots = firstCorrespondents ? *firstCorrespondents : (found = correspondents(v));
-			firstCorrespondents = nullptr;
 			std::vector<MergeCandidate> out;
-			for (size_t s : slots) out.push_back({vectors_[s].id, &vectors_[s]});
+			for (size_t s : correspondents(v)) out.push_back({vectors_[s].id, &vectors_[s]});
 			return out;
 		};
 		auto absorb = [&](const std::vector<MergeCandidate>& taken) {
 			std::vector<size_t> slots;
 			for (const MergeCandidate& c : taken) slots.push_back(size_t(c.vector - vectors_.data()));
-			removeSlots(slots, changedSlots);
+			removeSlots(slots);
 		};
 		const MergeCascadeStats st = mergeCascade(merger_, m, {mapCorresponding, absorb});
 		stats_.merges += st.merges;
@@ -172,44 +146,28 @@ void GlobalMap::insertVector(GridVector m, const std::vector<size_t>* firstCorre
 void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
 {
 	stats_ = {};
-	PendingScan p = pending(robotPose, scan);
-	stats_.wipe = wipe(robotPose, scan, p);
-	insertVectors(p);
+	stats_.wipe = wipe(robotPose, scan);
+	insertVectors(robotPose, scan);
 }
 
 void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, const ScanBeams& beams)
 {
 	stats_ = {};
-	PendingScan p = pending(robotPose, scan);
-	stats_.wipe = wipe(robotPose, scan, p);
+	stats_.wipe = wipe(robotPose, scan);
 	if (cfg_.map.wipeVectorlessBeams)  // beyond the paper (BeamWipe)
 		stats_.beams = BeamWipe::apply(robotPose, beams, vectors_, index_, scan.scanIndex);
-	insertVectors(p);
+	insertVectors(robotPose, scan);
 }
 
-// The correspondents found before the wipe are still vector j's (the wipes change cells, not
-// geometry): this scan's earlier vectors emptied or refilled none of their slots (merged them
-// away, moved the last vector into a hole), and none of the vectors they added corresponds to it.
-bool GlobalMap::targetsStillHold(const PendingScan& p, size_t j) const
+void GlobalMap::insertVectors(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
 {
-	if (p.fresh.empty() || !p.fresh[j]) return false;
-	for (size_t s : p.changedSlots)
-		if (std::binary_search(p.targets[j].begin(), p.targets[j].end(), s)) return false;
-	return true;
-}
-
-void GlobalMap::insertVectors(PendingScan& p)
-{
-	for (size_t j = 0; j < p.vectors.size(); ++j)
+	for (const auto& v : scan.vectors)
 	{
-		const bool reuse = targetsStillHold(p, j);
-		stats_.searchesReused += reuse;
-		insertVector(std::move(p.vectors[j]), reuse ? &p.targets[j] : nullptr, &p.changedSlots);
+		GridVector m = v.compose(robotPose);
+		m.scanIndex = scan.scanIndex;
+		m.timestamp = scan.timestamp;
+		insertVector(std::move(m));
 		++stats_.inserted;
-		if (p.fresh.empty()) continue;
-		const GridVector& added = vectors_.back();  // the one vector the insertion left in the map
-		for (size_t k = j + 1; k < p.vectors.size(); ++k)
-			if (p.fresh[k] && corresponds(p.vectors[k], added, cfg_.map)) p.fresh[k] = 0;
 	}
 }
 

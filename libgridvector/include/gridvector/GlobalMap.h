@@ -84,7 +84,6 @@ class GlobalMap
 		size_t merges = 0;  //!< Algorithm 2 runs
 		size_t absorbed = 0;  //!< map vectors merged away
 		size_t refused = 0;  //!< correspondents kept apart by the guard (map.merge_holds_wall)
-		size_t searchesReused = 0;  //!< new vectors whose correspondents the wipe's search still gave
 		BeamWipe::Stats beams;  //!< map.wipe_vectorless_beams
 	};
 	const InsertStats& lastInsertStats() const { return stats_; }
@@ -120,23 +119,9 @@ class GlobalMap
 	static MergeResult mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg);
 
    private:
-	/** A scan on its way into the map (insertScan). */
-	struct PendingScan
-	{
-		std::vector<GridVector> vectors;  //!< m = x (+) v, with the scan's index and timestamp
-		// when merging on insert: each vector's correspondents() before the scan changed the map
-		std::vector<std::vector<size_t>> targets;
-		std::vector<char> fresh;  //!< no vector inserted since corresponds to it
-		std::vector<size_t> changedSlots;  //!< slots emptied or refilled since (removeSlots)
-	};
-	PendingScan pending(const mrpt::math::TPose2D& robotPose, const LocalScan& scan) const;
-	ScanWipe::Stats wipe(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, const PendingScan& p);
-	void insertVectors(PendingScan& p);
-	bool targetsStillHold(const PendingScan& p, size_t j) const;
-	void insertVector(GridVector m, const std::vector<size_t>* firstCorrespondents, std::vector<size_t>* changedSlots);
+	void insertVectors(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
 	void addSlot(GridVector m);
-	/** changed: if given, gets every slot emptied or refilled. */
-	void removeSlots(std::vector<size_t> slots, std::vector<size_t>* changed = nullptr);
+	void removeSlots(std::vector<size_t> slots);
 	void rebuildIndex();
 
 	GridVectorConfig cfg_;

@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Installs gridvector's build and test dependencies from Debian's packages.
 set -euo pipefail
+# libopenblas0-serial: CHOLMOD's BLAS/LAPACK for the pose graph (about 2x less CPU at 5,000
+# scans than the reference libblas3, doc/benchmarks.md "BLAS for CHOLMOD"); Debian's package
+# makes itself libblas.so.3 / liblapack.so.3 through the alternatives (priority 90 > 10).
 SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 PKGS="build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgtest-dev googletest
  libmrpt-maps-dev libmrpt-slam-dev libmrpt-graphslam-dev libmrpt-obs-dev libmrpt-gui-dev
- mrpt-apps mrpt-common python3 zlib1g-dev"
+ mrpt-apps mrpt-common python3 zlib1g-dev
+ libopenblas0-serial"
 missing=""
 for p in $PKGS; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
 if [ -n "$missing" ]; then

@@ -162,6 +162,81 @@ TEST(DoorDetector, VectorsFromTheHingeIntoTheSweptArcJoinTheDoor)
 	EXPECT_EQ(doors[0].angles.size(), 3u);  // the part is no state of its own
 }
 
+TEST(DoorDetector, AWholeLeafJoinsADoorFoundFromLeavesSeenInPart)
+{
+	// the corners that found the door are leaves seen in part (0.55 and 0.75 m; their mean is
+	// 0.65 m); the whole open leaf (0.92 m, static) lies beyond that mean + max_length_diff
+	// but within the longest corner leaf's reach: it is a state too
+	const std::vector<GridVector> v = {
+		vec(0, 0, 3, 0, S), vec(3.9, 0, 6, 0, S),  // the walls either side of the doorway
+		vec(3, 0, 3 + 0.55 * std::cos(M_PI / 6), 0.55 * std::sin(M_PI / 6), D),  // 30 deg, in part
+		vec(3, 0, 3 + 0.75 * std::cos(M_PI / 3), 0.75 * std::sin(M_PI / 3), D),  // 60 deg, in part
+		vec(3, 0, 3 + 0.92 * std::cos(85 * M_PI / 180), 0.92 * std::sin(85 * M_PI / 180), S)};  // whole, 85 deg
+	const auto doors = DoorDetector().detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_NEAR(doors[0].length, 0.65, 1e-6);
+	std::vector<size_t> leaves = doors[0].leaves;
+	std::sort(leaves.begin(), leaves.end());
+	EXPECT_EQ(leaves, (std::vector<size_t>{2, 3, 4}));
+	EXPECT_EQ(doors[0].angles.size(), 3u);
+}
+
+namespace
+{
+GridVector polarVec(double x, double y, double fromHinge, double len, double deg, VectorState s)
+{
+	const double c = std::cos(deg * M_PI / 180), sn = std::sin(deg * M_PI / 180);
+	return vec(x + fromHinge * c, y + fromHinge * sn, x + (fromHinge + len) * c, y + (fromHinge + len) * sn, s);
+}
+}  // namespace
+
+TEST(DoorDetector, ADynamicPieceAndItsCollinearStaticPieceAreOneLeaf)
+{
+	// the open leaf (-70 deg) was split by Fig. 4: 0.3 m dynamic at the hinge, the rest static
+	std::vector<GridVector> v = {vec(0, 0, 3, 0, S), vec(3.9, 0, 6, 0, S), vec(3, 0, 3.9, 0, D),
+								 polarVec(3, 0, 0, 0.3, -70, D), polarVec(3, 0, 0.32, 0.58, -70, S)};
+	auto doors = DoorDetector().detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_EQ(doors[0].leaves, (std::vector<size_t>{2, 3, 4}));  // the chain's leaves are its pieces
+	ASSERT_EQ(doors[0].angles.size(), 2u);
+	EXPECT_NEAR(doors[0].angles[0], -70 * M_PI / 180, 0.03);
+	// two dynamic pieces in a line are no leaf (people's tracks): no second state, no door
+	v[4].state = D;
+	EXPECT_TRUE(DoorDetector().detect(v).empty());
+}
+
+TEST(DoorDetector, AStaticLeafActingAsTheWallIsAStateAndTheLongWallIsTheDoorsWall)
+{
+	// a wall merged across the doorway runs through the hinge (0, 0), the closed leaf inside
+	// it (+y); open states at 15 deg (static: Eq. 6 kept it), 33 and 52 deg (dynamic). The T
+	// corners on the long wall have no state along it; the 15 deg leaf is the others' wall
+	const std::vector<GridVector> v = {vec(0, -2, 0, 3, S), polarVec(0, 0, 0, 0.82, 15, S), polarVec(0, 0, 0, 0.84, 52, D),
+									   polarVec(0, 0, 0, 0.87, 33, D)};
+	const auto doors = DoorDetector().detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_EQ(doors[0].wall, 0u);
+	std::vector<size_t> leaves = doors[0].leaves;
+	std::sort(leaves.begin(), leaves.end());
+	EXPECT_EQ(leaves, (std::vector<size_t>{1, 2, 3}));
+	EXPECT_EQ(doors[0].angles.size(), 3u);
+}
+
+TEST(DoorDetector, TheSweptArcRunsFromTheWallsLineThroughTheStates)
+{
+	// states -45 and -79 deg, the closed state not among them: the arc runs from the wall's
+	// line (0 deg) through them, so a leaf at -5 deg (its end 0.22 m from the hinge: no corner)
+	// is a state, one at -150 deg is not
+	DoorOptions o;
+	o.maxCornerGap = 0.1;
+	const std::vector<GridVector> v = {vec(0, 0, 3, 0, S), polarVec(3, 0, 0, 0.9, -45, D), polarVec(3, 0, 0, 0.85, -79, D),
+									   polarVec(3, 0, 0.22, 0.8, -5, S), polarVec(3, 0, 0.22, 0.8, -150, S)};
+	const auto doors = DoorDetector(o).detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	std::vector<size_t> leaves = doors[0].leaves;
+	std::sort(leaves.begin(), leaves.end());
+	EXPECT_EQ(leaves, (std::vector<size_t>{1, 2, 3}));
+}
+
 TEST(DoorDetector, LeavesMakeNoSecondDoorAtTheLatchSide)
 {
 	// the closed and a slightly open state also meet the wall on the latch side (3.9, 0) with

@@ -25,10 +25,11 @@ DoorDetector::DoorDetector(const DoorOptions& opts) : opts_(opts) {}
 std::vector<Corner> DoorDetector::corners(const std::vector<GridVector>& v) const
 {
 	std::vector<Corner> out;
+	const double minLen = opts_.minDoorLength - opts_.maxLengthDiff;
 	for (size_t d = 0; d < v.size(); ++d)
 	{
 		const double len = v[d].length();
-		if (len < opts_.minDoorLength - opts_.maxLengthDiff || len > opts_.maxDoorLength + opts_.maxLengthDiff)
+		if (len < minLen || len > opts_.maxDoorLength + opts_.maxLengthDiff)
 			continue;
 		for (size_t s = 0; s < v.size(); ++s)
 		{
@@ -153,8 +154,66 @@ bool DoorDetector::sameDoor(const Corner& a, const Corner& b) const
 		   std::abs(a.leafLength - b.leafLength) <= opts_.maxLengthDiff;
 }
 
+// A leaf cut by Fig. 4's split into a short dynamic piece and a collinear static piece (the
+// part of an open leaf that was never seen through after the door closed stays static): the
+// two pieces, end to end, are one door candidate (two dynamic pieces are not: people's tracks). Returns the pieces of each chain (index n + k of
+// the candidates appended to `v`).
+std::vector<std::pair<size_t, size_t>> DoorDetector::leafChains(std::vector<GridVector>& v) const
+{
+	const size_t n = v.size();
+	const double maxTurn = opts_.minStateDiffDeg * M_PI / 180, gap = opts_.maxTeeOffset;
+	std::vector<std::pair<size_t, size_t>> parts;
+	for (size_t a = 0; a < n; ++a)
+	{
+		if (v[a].state != VectorState::Dynamic || v[a].length() >= opts_.minDoorLength) continue;
+		for (size_t b = 0; b < n; ++b)
+		{
+			if (b == a || v[b].state != VectorState::Static || v[b].length() > opts_.maxDoorLength) continue;
+			for (int ea = 0; ea < 2; ++ea)
+				for (int eb = 0; eb < 2; ++eb)
+				{
+					// a's end ea meets b's end eb; the chain runs from a's other end to b's other end
+					const TPoint2D from = ea ? v[a].start() : v[a].end(), joint = ea ? v[a].end() : v[a].start();
+					const TPoint2D meet = eb ? v[b].end() : v[b].start(), to = eb ? v[b].start() : v[b].end();
+					if (dist(joint, meet) > gap) continue;
+					const double ta = std::atan2(joint.y - from.y, joint.x - from.x);
+					const double tb = std::atan2(to.y - meet.y, to.x - meet.x);
+					if (std::abs(mrpt::math::wrapToPi(ta - tb)) > maxTurn) continue;
+					const double len = dist(from, to);
+					if (len < opts_.minDoorLength || len > opts_.maxDoorLength) continue;
+					GridVector chain(from, to, GridOptions{});
+					chain.state = VectorState::Dynamic;  // its dynamic piece is the door candidate
+					v.push_back(std::move(chain));
+					parts.emplace_back(a, b);
+				}
+		}
+	}
+	return parts;
+}
+
 // Sec. 5.4: corners sharing the wall, close vertices, equal leaf lengths -> hinge + states.
-std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
+std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& input) const
+{
+	std::vector<GridVector> v = input;
+	const size_t n = input.size();
+	const auto chainParts = leafChains(v);
+	std::vector<Door> doors = detectIn(v);
+	for (Door& d : doors)  // a chain's leaves are its pieces
+	{
+		std::vector<size_t> leaves;
+		for (size_t leaf : d.leaves)
+		{
+			if (leaf < n) leaves.push_back(leaf);
+			else leaves.push_back(chainParts[leaf - n].first), leaves.push_back(chainParts[leaf - n].second);
+		}
+		std::sort(leaves.begin(), leaves.end());
+		leaves.erase(std::unique(leaves.begin(), leaves.end()), leaves.end());
+		d.leaves = std::move(leaves);
+	}
+	return doors;
+}
+
+std::vector<Door> DoorDetector::detectIn(const std::vector<GridVector>& v) const
 {
 	auto cs = corners(v);
 	// the longest wall first: a static open leaf can also act as a "wall" of the closed state
@@ -197,6 +256,9 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 			d.leaves.push_back(cs[k].leaf);
 		}
 		d.length = len / group.size();
+		// leaves seen in part make the mean short: a whole leaf of the group is a state, so reach it
+		double longest = 0;
+		for (size_t k : group) longest = std::max(longest, cs[k].leafLength);
 		if (d.length < opts_.minDoorLength || d.length > opts_.maxDoorLength) continue;
 		std::sort(angles.begin(), angles.end());
 		d.angles = angles;
@@ -210,14 +272,48 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& v) const
 		std::sort(door.leaves.begin(), door.leaves.end());
 		door.leaves.erase(std::unique(door.leaves.begin(), door.leaves.end()), door.leaves.end());
 		for (size_t leaf : door.leaves) taken[leaf] = true;
-		joinStates(v, door, taken);
+		const double reach = std::max(door.length, longest) + opts_.maxLengthDiff;
+		wallAsState(v, door, reach, taken);
+		joinStates(v, door, reach, taken);
 	}
 	return doors;
 }
 
+// A door whose corners shared a static vector of leaf length from the hinge (an open state Eq. 6
+// kept static, acting as the other states' "wall"): the door's wall is the longest static vector
+// through the hinge (end or interior), and the short one, if it lies in the arc the door sweeps
+// from that wall, is a state too. Without a longer wall nothing changes.
+void DoorDetector::wallAsState(const std::vector<GridVector>& v, Door& d, double reach, std::vector<bool>& taken) const
+{
+	const size_t shortWall = d.wall;
+	const GridVector& w = v[shortWall];
+	if (w.length() > reach || taken[shortWall]) return;
+	double best = opts_.maxDoorLength;
+	for (size_t s = 0; s < v.size(); ++s)
+	{
+		if (v[s].state != VectorState::Static || taken[s] || v[s].length() <= best) continue;
+		const auto [along, off] = alongAndOff(v[s], d.hinge);
+		if (off <= opts_.maxTeeOffset && std::abs(along) <= v[s].length() / 2 + opts_.maxCornerGap)
+			best = v[s].length(), d.wall = s;
+	}
+	if (d.wall == shortWall) return;
+	const bool startAtHinge = dist(w.start(), d.hinge) <= dist(w.end(), d.hinge);
+	const TPoint2D vertex = startAtHinge ? w.start() : w.end(), tip = startAtHinge ? w.end() : w.start();
+	const double a = std::atan2(tip.y - d.hinge.y, tip.x - d.hinge.x), minDiff = opts_.minStateDiffDeg * M_PI / 180;
+	if (dist(vertex, d.hinge) > opts_.maxVertexDistance || !inSweep(d, v[d.wall], a)) return;
+	d.leaves.push_back(shortWall);
+	taken[shortWall] = true;
+	if (dist(tip, d.hinge) >= d.length - opts_.maxLengthDiff &&
+		std::all_of(d.angles.begin(), d.angles.end(), [&](double b) { return std::abs(mrpt::math::wrapToPi(a - b)) >= minDiff; }))
+	{
+		d.angles.push_back(a);
+		std::sort(d.angles.begin(), d.angles.end());
+	}
+}
+
 // The arc a door's leaf sweeps: the smallest arc holding all states (the complement of the
-// largest gap between them), widened to doors.min_sweep_deg (a right angle) from the state
-// nearest the wall's line (the closed one) when the states seen span less.
+// largest gap between them); when the states seen span less than doors.min_sweep_deg (a right
+// angle), the arc from the wall's line (the closed leaf) through the states, at least that wide.
 bool DoorDetector::inSweep(const Door& d, const GridVector& wall, double angle) const
 {
 	const std::vector<double>& as = d.angles;  // ascending
@@ -232,19 +328,29 @@ bool DoorDetector::inSweep(const Door& d, const GridVector& wall, double angle) 
 	const double minSweep = M_PI * (opts_.minSweepDeg / 180);  // exactly M_PI / 2 for 90 deg
 	if (width < minSweep)
 	{
-		if (bendDeg(as[from], wall) < bendDeg(start, wall)) start = as[from] - minSweep;  // closed at the arc's end
-		width = minSweep;
+		// the closed leaf lies along the wall, in the wall's direction nearer the states (a state
+		// or not: a closed leaf inside a wall merged across the doorway is none); the arc runs
+		// from there through the states, at least minSweep wide
+		const double mid = start + width / 2;
+		double closed = wall.psi();
+		if (std::abs(mrpt::math::wrapToPi(closed + M_PI - mid)) < std::abs(mrpt::math::wrapToPi(closed - mid)))
+			closed += M_PI;
+		if (mrpt::math::wrapToPi(mid - closed) >= 0)  // states counter-clockwise from the closed leaf
+			width = std::max(minSweep, mrpt::math::wrapTo2Pi(start + width - closed)), start = closed;
+		else
+			width = std::max(minSweep, mrpt::math::wrapTo2Pi(closed - start)), start = closed - width;
 	}
 	const double rel = mrpt::math::wrapTo2Pi(angle - start), tol = opts_.minStateDiffDeg * M_PI / 180;
 	return rel <= width + tol || rel >= 2 * M_PI - tol;
 }
 
-// Every other vector from the hinge into the swept arc, no longer than the leaf, is one more
+// Every other vector from the hinge into the swept arc, reaching no farther than the longest leaf
+// of the door's corners (plus doors.max_length_diff), is one more
 // state (a door opened to different angles; a state whose corner went to another wall piece)
 // or a part of one (a leaf seen in part: occluded, or cut by the split of Fig. 4).
-void DoorDetector::joinStates(const std::vector<GridVector>& v, Door& d, std::vector<bool>& taken) const
+void DoorDetector::joinStates(const std::vector<GridVector>& v, Door& d, double reach, std::vector<bool>& taken) const
 {
-	const double minDiff = opts_.minStateDiffDeg * M_PI / 180, reach = d.length + opts_.maxLengthDiff;
+	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
 	for (size_t k = 0; k < v.size(); ++k)
 	{
 		if (taken[k] || v[k].length() > reach) continue;

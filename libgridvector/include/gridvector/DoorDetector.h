@@ -49,10 +49,17 @@ struct Door
  * along it); a door of T corners only needs that closed state (people by a
  * wall make T corners too, none along it). Once a door is found, every other vector from its hinge into
  * the arc its states sweep (at least a right angle from the closed state)
- * and no longer than the leaf is one more state (a
+ * and reaching no farther than the longest leaf of its corners (+ doors.max_length_diff;
+ * the mean leaf length is short when leaves seen in part joined the corners) is one more state (a
  * door opened to different angles) or part of one (a leaf seen in part). A vector is a state of one door only: the corners a
  * door's leaves make elsewhere (e.g. their tips at the latch-side frame) make
- * no second door. */
+ * no second door. A leaf that Fig. 4's split cut into a short dynamic piece and
+ * a collinear static piece (the part never seen through again) is one
+ * candidate made of both. Where a static vector of leaf length from the hinge
+ * served as the corners' wall, the door's wall is the long static vector
+ * through the hinge and the short one, in the swept arc, is a state. The arc
+ * runs from the wall's line (the closed leaf, whether seen as a state or not)
+ * through the states. */
 class DoorDetector
 {
    public:
@@ -67,11 +74,14 @@ class DoorDetector
 	std::vector<std::pair<double, double>> stateSpans(const std::vector<Door>& doors, const GridVector& v) const;
 
    private:
+	std::vector<std::pair<size_t, size_t>> leafChains(std::vector<GridVector>& v) const;
+	std::vector<Door> detectIn(const std::vector<GridVector>& v) const;
 	bool endCorner(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	void teeCorners(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	bool sameDoor(const Corner& a, const Corner& b) const;
+	void wallAsState(const std::vector<GridVector>& v, Door& d, double reach, std::vector<bool>& taken) const;
 	bool inSweep(const Door& d, const GridVector& wall, double angle) const;
-	void joinStates(const std::vector<GridVector>& v, Door& d, std::vector<bool>& taken) const;
+	void joinStates(const std::vector<GridVector>& v, Door& d, double reach, std::vector<bool>& taken) const;
 	bool collinearBeyond(const GridVector& wall, const mrpt::math::TPoint2D& vertex,
 						 const mrpt::math::TPoint2D& tip) const;
 	DoorOptions opts_;

@@ -20,6 +20,17 @@ GridOptions grid01()
 	g.halfWidth = 1;
 	return g;
 }
+
+// The part forEachCell reports for each cell of m (row-major; 0 = not reported), each cell at most once.
+std::vector<int> walked(const WipeTriangle& t, const GridVector& m)
+{
+	std::vector<int> seen(m.cells().size(), 0);
+	t.forEachCell(m, [&](int r, int c, WipePart p) {
+		EXPECT_EQ(seen[size_t(r) * m.cols() + c], 0) << "cell reported twice";
+		seen[size_t(r) * m.cols() + c] = int(p);
+	});
+	return seen;
+}
 }  // namespace
 
 TEST(WipeTriangle, ClassifiesPartsABC)
@@ -36,6 +47,65 @@ TEST(WipeTriangle, ClassifiesPartsABC)
 	EXPECT_EQ(t.classify({1.5, 1.0}), WipePart::Outside);  // beside the fan
 	EXPECT_EQ(t.classify({0.5, 1.0}), WipePart::Visited);  // on the fan's edge ray
 	EXPECT_EQ(t.classify({0, 0}), WipePart::Visited);  // the apex itself
+}
+
+// A wall along y = 0 from (1, 0) to (3, 0) seen from 5 cm off its line: grazing incidence
+// (d(O) = hitBand, so the band |d| <= hitBand alone would reach twice the range along the rays).
+TEST(WipeTriangle, GrazingHitStaysNearTheSegment)
+{
+	const TPoint2D o(0, 0.05), s(1, 0), e(3, 0);
+	const WipeTriangle t(o, s, e, 0.05);
+	ASSERT_FALSE(t.degenerate());
+	const TPoint2D far(o.x + 1.9 * (e.x - o.x), o.y + 1.9 * (e.y - o.y));  // on the ray to E, 2.7 m past E
+	ASSERT_NEAR(far.y, -0.045, 1e-12);  // within the band of the line, in the cone
+	EXPECT_EQ(t.classify(far), WipePart::Outside);  // no beam ended there
+	EXPECT_EQ(t.classify({o.x + 1.01 * (e.x - o.x), o.y + 1.01 * (e.y - o.y)}), WipePart::Hit);  // 3 cm past E
+	EXPECT_EQ(t.classify({o.x + 1.03 * (e.x - o.x), o.y + 1.03 * (e.y - o.y)}), WipePart::Outside);  // 9 cm past E
+	EXPECT_EQ(t.classify({2, 0}), WipePart::Hit);  // on the wall
+	EXPECT_EQ(t.classify({2, 0.01}), WipePart::Hit);  // just in front
+	EXPECT_EQ(t.classify({2, -0.004}), WipePart::Hit);  // just behind (in the cone)
+	EXPECT_EQ(t.classify({0.5, 0.03}), WipePart::Visited);  // between the sensor and S: passed, not hit
+	EXPECT_EQ(t.classify({0.98, 0.0015}), WipePart::Hit);  // 2 cm before S, in the box
+	// the bounding box hugs the triangle and the box around SE, not the rays' far reach
+	EXPECT_NEAR(t.minX(), 0.0, 1e-12);
+	EXPECT_NEAR(t.maxX(), 3.05, 1e-9);
+	EXPECT_NEAR(t.maxY(), 0.05, 1e-12);
+	EXPECT_GE(t.minY(), -0.05 - 1e-12);
+	EXPECT_TRUE(t.misses(3.1, -0.1, 6, 0.1));  // behind E along the rays
+	EXPECT_FALSE(t.misses(3.0, -0.1, 6, 0.1));
+}
+
+// Both ends seen within 45 deg of the normal: the parts are those of the band |d| <= hitBand alone.
+TEST(WipeTriangle, NearNormalIncidenceKeepsTheBand)
+{
+	std::mt19937 rng(3);
+	std::uniform_real_distribution<double> U(-3, 3), D(0.3, 4);
+	size_t hits = 0, compared = 0;
+	for (int trial = 0; trial < 200; ++trial)
+	{
+		// wall on y = 0 from x = sx to x = ex, sensor at (ox, dO) with |ex - ox|, |sx - ox| <= dO
+		const double dO = D(rng), ox = U(rng), len = D(rng);
+		const double sx = ox + std::uniform_real_distribution<double>(-dO, dO - std::min(len, 2 * dO))(rng);
+		const double ex = std::min(sx + len, ox + dO), band = 0.05 + 0.1 * (trial % 3);
+		ASSERT_LE(std::abs(sx - ox), dO + 1e-12);
+		ASSERT_LE(std::abs(ex - ox), dO + 1e-12);
+		const WipeTriangle t({ox, dO}, {sx, 0}, {ex, 0}, band);
+		for (int k = 0; k < 200; ++k)
+		{
+			const TPoint2D p(std::uniform_real_distribution<double>(sx - 1, ex + 1)(rng),
+							 std::uniform_real_distribution<double>(-2 * band, 3 * band)(rng));
+			const double a = (p.x - ox) * (0 - dO) - (p.y - dO) * (sx - ox);  // sides of the rays O->S, O->E
+			const double b = (p.x - ox) * (0 - dO) - (p.y - dO) * (ex - ox);
+			if (!(a <= -1e-9 && b >= 1e-9)) continue;  // strictly inside the cone
+			const WipePart band_only = p.y > band ? WipePart::Visited : p.y >= -band ? WipePart::Hit : WipePart::Outside;
+			if (std::abs(std::abs(p.y) - band) < 1e-9) continue;  // on the band's edge: rounding
+			EXPECT_EQ(t.classify(p), band_only) << trial << " " << p.x << " " << p.y;
+			hits += band_only == WipePart::Hit;
+			++compared;
+		}
+	}
+	EXPECT_GT(compared, 5000u);
+	EXPECT_GT(hits, 1000u);
 }
 
 TEST(WipeTriangle, DegenerateWhenSensorOnTheLine)
@@ -109,11 +179,7 @@ TEST(WipeTriangle, RasterisationEqualsBruteForce)
 		GridOptions g = grid01();
 		g.halfWidth = trial % 3;
 		const GridVector m({U(rng), U(rng)}, {U(rng), U(rng)}, g);
-		std::vector<int> seen(m.cells().size(), 0);
-		t.forEachCell(m, [&](int r, int c, WipePart p) {
-			EXPECT_EQ(seen[size_t(r) * m.cols() + c], 0) << "cell reported twice";
-			seen[size_t(r) * m.cols() + c] = int(p);
-		});
+		const std::vector<int> seen = walked(t, m);
 		for (int r = 0; r < m.rows(); ++r)
 			for (int c = 0; c < m.cols(); ++c)
 			{
@@ -125,6 +191,50 @@ TEST(WipeTriangle, RasterisationEqualsBruteForce)
 	}
 	EXPECT_GT(checked, 10000u);
 	EXPECT_GT(nonEmpty, 500u);
+}
+
+// As above with the sensor within a few hit bands of the new vector's line (the box around SE cuts parts b and c).
+TEST(WipeTriangle, RasterisationEqualsBruteForceAtGrazingIncidence)
+{
+	std::mt19937 rng(11);
+	std::uniform_real_distribution<double> U(-4, 4), off(-0.3, 0.3);
+	size_t checked = 0, hit = 0, visited = 0;
+	for (int trial = 0; trial < 400; ++trial)
+	{
+		const TPoint2D s(U(rng), U(rng)), e(U(rng), U(rng));
+		// O at S + k dir on the new vector's line, moved h off it
+		const double len = std::hypot(e.x - s.x, e.y - s.y), k = U(rng), h = off(rng);
+		if (len < 0.5) continue;
+		const TPoint2D dir((e.x - s.x) / len, (e.y - s.y) / len);
+		const TPoint2D o(s.x + k * dir.x - h * dir.y, s.y + k * dir.y + h * dir.x);
+		const WipeTriangle t(o, s, e, 0.05 + 0.1 * (trial % 3));
+		if (t.degenerate()) continue;
+		GridOptions g = grid01();
+		g.halfWidth = 1 + trial % 3;
+		// a map vector along the new one's line, past its ends
+		const GridVector m({s.x - 2 * dir.x, s.y - 2 * dir.y}, {e.x + 2 * dir.x, e.y + 2 * dir.y}, g);
+		const std::vector<int> seen = walked(t, m);
+		for (int r = 0; r < m.rows(); ++r)
+			for (int c = 0; c < m.cols(); ++c)
+			{
+				const TPoint2D p = m.cellCentre(r, c);
+				const WipePart want = t.classify(p);
+				EXPECT_EQ(seen[size_t(r) * m.cols() + c], int(want)) << trial << " r" << r << " c" << c;
+				hit += want == WipePart::Hit;
+				visited += want == WipePart::Visited;
+				if (want != WipePart::Outside)  // inside the bounding box, and never missed
+				{
+					EXPECT_TRUE(p.x >= t.minX() - 1e-9 && p.x <= t.maxX() + 1e-9 && p.y >= t.minY() - 1e-9 &&
+								p.y <= t.maxY() + 1e-9)
+						<< trial;
+					EXPECT_FALSE(t.misses(p.x - 1e-3, p.y - 1e-3, p.x + 1e-3, p.y + 1e-3)) << trial;
+				}
+				++checked;
+			}
+	}
+	EXPECT_GT(checked, 20000u);
+	EXPECT_GT(hit, 2000u);
+	EXPECT_GT(visited, 500u);
 }
 
 TEST(WipeTriangle, BoundingBoxContainsTheFanAndBand)

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace gridvector
 {
@@ -24,12 +25,44 @@ WipeTriangle::WipeTriangle(const TPoint2D& sensor, const TPoint2D& start, const 
 	i10_ = -ay / det, i11_ = ax / det;
 	sHit_ = 1.0 - hitBand / dO;
 	sMax_ = 1.0 + hitBand / dO;
-	const double xs[3] = {sensor.x, sensor.x + sMax_ * ax, sensor.x + sMax_ * bx};
-	const double ys[3] = {sensor.y, sensor.y + sMax_ * ay, sensor.y + sMax_ * by};
-	minX_ = *std::min_element(xs, xs + 3), maxX_ = *std::max_element(xs, xs + 3);
-	minY_ = *std::min_element(ys, ys + 3), maxY_ = *std::max_element(ys, ys + 3);
+	// part c's box along SE; an end cuts parts b and c only where the triangle stays inside it
+	const double uS = along(start.x, start.y), uE = along(end.x, end.y);
+	hitLo_ = uS - hitBand, hitHi_ = uE + hitBand;
+	constexpr double inf = std::numeric_limits<double>::infinity();
+	lo_ = hitLo_ <= 0 ? hitLo_ : -inf;  // along(O) = 0
+	hi_ = hitHi_ >= 0 ? hitHi_ : inf;
+	boundingBox(sensor, {sensor.x + sMax_ * ax, sensor.y + sMax_ * ay}, {sensor.x + sMax_ * bx, sensor.y + sMax_ * by});
 	// no cell is crossed by more beams than the fan holds
 	maxWeight_ = std::max(1.0, beams_ * std::abs(std::atan2(det, ax * bx + ay * by)) + 1.0);
+}
+
+// The cone cut at d = -hitBand (triangle O, O + sMax (S - O), O + sMax (E - O)) clipped to lo_ <= along() <= hi_.
+void WipeTriangle::boundingBox(const TPoint2D& o, const TPoint2D& s, const TPoint2D& e)
+{
+	TPoint2D poly[5] = {o, s, e}, out[5];  // a triangle cut twice: at most 5 corners
+	int n = 3;
+	const auto clip = [&](double sign, double bound) {  // keep sign * (along() - bound) <= 0
+		if (!std::isfinite(bound)) return;
+		int k = 0;
+		for (int i = 0; i < n; ++i)
+		{
+			const TPoint2D &p = poly[i], &q = poly[(i + 1) % n];
+			const double fp = sign * (along(p.x, p.y) - bound), fq = sign * (along(q.x, q.y) - bound);
+			if (fp <= 0) out[k++] = p;
+			if ((fp < 0 && fq > 0) || (fp > 0 && fq < 0))
+				out[k++] = TPoint2D(p.x + fp / (fp - fq) * (q.x - p.x), p.y + fp / (fp - fq) * (q.y - p.y));
+		}
+		std::copy(out, out + k, poly);
+		n = k;
+	};
+	clip(-1, lo_);
+	clip(1, hi_);
+	minX_ = maxX_ = poly[0].x, minY_ = maxY_ = poly[0].y;  // O is never cut off
+	for (int i = 1; i < n; ++i)
+	{
+		minX_ = std::min(minX_, poly[i].x), maxX_ = std::max(maxX_, poly[i].x);
+		minY_ = std::min(minY_, poly[i].y), maxY_ = std::max(maxY_, poly[i].y);
+	}
 }
 
 double WipeTriangle::beamDensity(const TPoint2D& o, const TPoint2D& s, const TPoint2D& e, double points)
@@ -60,12 +93,13 @@ double WipeTriangle::weight(const TPoint2D& p, const TPoint2D& axis, double res,
 	return std::min(maxWeight_, beams_ * across / r);
 }
 
-// Separating axes among the cone's edges a = 0, b = 0, a + b = sMax (the box's corners all beyond one).
+// Separating axes among the edges of parts b and c: a = 0, b = 0, a + b = sMax, along() = lo_, hi_
+// (the box's corners all beyond one).
 bool WipeTriangle::misses(double minX, double minY, double maxX, double maxY) const
 {
 	if (degenerate_) return true;
 	constexpr double eps = 1e-9;
-	bool allA = true, allB = true, allFar = true;
+	bool allA = true, allB = true, allFar = true, allLo = true, allHi = true;
 	for (const double x : {minX, maxX})
 		for (const double y : {minY, maxY})
 		{
@@ -74,8 +108,11 @@ bool WipeTriangle::misses(double minX, double minY, double maxX, double maxY) co
 			allA = allA && a < -eps;
 			allB = allB && b < -eps;
 			allFar = allFar && a + b > sMax_ + eps;
+			const double u = along(x, y);
+			allLo = allLo && u < lo_ - eps;
+			allHi = allHi && u > hi_ + eps;
 		}
-	return allA || allB || allFar;
+	return allA || allB || allFar || allLo || allHi;
 }
 
 WipePart WipeTriangle::classify(const TPoint2D& p) const
@@ -84,8 +121,9 @@ WipePart WipeTriangle::classify(const TPoint2D& p) const
 	double a, b;
 	coords(p.x, p.y, a, b);
 	constexpr double eps = 1e-12;
-	if (a < -eps || b < -eps || a + b > sMax_) return WipePart::Outside;
-	return a + b < sHit_ ? WipePart::Visited : WipePart::Hit;
+	const double u = along(p.x, p.y);
+	if (a < -eps || b < -eps || a + b > sMax_ || u < lo_ || u > hi_) return WipePart::Outside;
+	return a + b >= sHit_ && u >= hitLo_ && u <= hitHi_ ? WipePart::Hit : WipePart::Visited;
 }
 
 // Eq. 8 / Fig. 2: part c -> n_occupy, n_visit += 1; part b -> n_visit += 1; part a untouched.

@@ -33,11 +33,12 @@ struct Box2D
  * O(n_t ((R/B + 1)^2 + k)) with n_t the scan's vectors: it depends on the map
  * density around the robot, not on the map's size.
  *
- * A box that would cover more than kMaxBuckets buckets (or is not finite),
- * e.g. the wipe triangle of a wall seen at a grazing angle, whose hit band
- * reaches far along the rays, is kept in one list that every query scans
- * instead of being listed bucket by bucket: memory stays O(slots) whatever
- * the boxes' sizes.
+ * A box that would cover more than kMaxBuckets buckets (or is not finite)
+ * is kept in one list that every query scans instead of being listed bucket
+ * by bucket: memory stays O(slots) whatever the boxes' sizes. (Wipe triangles
+ * of walls seen at grazing angles had such boxes while their hit band reached
+ * along the rays past the vector's ends; bounded to the vector since, they
+ * stay under the cap on every benchmark log.)
  *
  * Not thread-safe: query() uses an internal stamp to report each slot once. */
 class VectorIndex

@@ -24,10 +24,24 @@ enum class WipePart : uint8_t
  * produced v_j (Eq. 8, Fig. 2).
  *
  * A point P = O + a (S - O) + b (E - O) lies in the beams' cone when a, b >= 0;
- * its signed distance to the far edge SE (towards O) is d(O) (1 - a - b).
- * Part c: in the cone with |d| <= hitBand (on the vector, also slightly behind
- * it, where noisy endpoints land). Part b: in the cone with d > hitBand
- * (between the sensor and the vector). Everything else is part a.
+ * its signed distance to the line of SE (towards O) is d = d(O) (1 - a - b),
+ * and u is its coordinate along SE (u(S) <= u <= u(E) over the segment).
+ * Part c ("near v_j", Fig. 2): in the cone, |d| <= hitBand and
+ * u(S) - hitBand <= u <= u(E) + hitBand, i.e. within hitBand of the segment
+ * SE (a box around it): on the vector, also slightly behind it, where noisy
+ * endpoints land. Part b: the rest of the triangle OSE (beams passed through,
+ * none ended). Everything else is part a.
+ *
+ * The box, not just the band along SE's line: at grazing incidence d(O) is
+ * tiny and the cone behind the line widens fast, so a band |d| <= hitBand
+ * alone reached metres (km on csail) past the segment's ends along the rays,
+ * where no beam ended, and in front of the line it made the whole thin
+ * triangle, up to the sensor, "hit". Near normal incidence (both ends seen
+ * within 45 deg of the normal) the cone within the band never leaves the box:
+ * the parts are those of the band alone. Parts b and c together are convex:
+ * the cone cut at d = -hitBand and by the box's two ends (an end is not a cut
+ * where the triangle itself reaches past it, on the sensor's side), so a grid
+ * row still meets them in one interval (forEachCellAt).
  *
  * Weight of an increment (see weight()): the paper's Fig. 2 adds 1 per cell
  * per triangle. Algorithm 1, however, counts one per beam endpoint, so a cell
@@ -60,7 +74,7 @@ class WipeTriangle
 	bool degenerate() const { return degenerate_; }
 	WipePart classify(const mrpt::math::TPoint2D& p) const;
 
-	/** Axis-aligned bounding box of parts b and c (the cone cut at d = -hitBand). */
+	/** Axis-aligned bounding box of parts b and c (the cone cut at d = -hitBand and by the box's ends). */
 	double minX() const { return minX_; }
 	double minY() const { return minY_; }
 	double maxX() const { return maxX_; }
@@ -80,7 +94,7 @@ class WipeTriangle
 	void forEachCellAt(const GridVector& m, F&& f) const;
 
 	/** True if the axis-aligned box [minX, maxX] x [minY, maxY] lies wholly
-	 * outside parts b and c (beyond one of the triangle's three edges): no cell
+	 * outside parts b and c (beyond one of the edges of their polygon): no cell
 	 * whose centre is in the box can be updated. Conservative (false when unsure). */
 	bool misses(double minX, double minY, double maxX, double maxY) const;
 	/** Eq. 8 for this triangle on one map vector (weights as weight()); returns cells updated. */
@@ -94,6 +108,10 @@ class WipeTriangle
 		a = i00_ * px + i01_ * py;
 		b = i10_ * px + i11_ * py;
 	}
+	/** Coordinate along SE from O's foot (inline: as coords). */
+	double along(double x, double y) const { return edge_.x * (x - o_.x) + edge_.y * (y - o_.y); }
+	/** Sets the bounding box of the triangle o, s, e clipped to lo_ <= along() <= hi_. */
+	void boundingBox(const mrpt::math::TPoint2D& o, const mrpt::math::TPoint2D& s, const mrpt::math::TPoint2D& e);
 	/** Columns [k0, k1] of a grid row whose centres lie in the cone (inline: once per row and map vector). */
 	bool rowSpan(const GridVector& m, const mrpt::math::TPoint2D& rowOrigin,
 				 const mrpt::math::TPoint2D& dir, int& k0, int& k1) const;
@@ -103,6 +121,8 @@ class WipeTriangle
 	mrpt::math::TPoint2D o_;
 	double i00_ = 0, i01_ = 0, i10_ = 0, i11_ = 0;  //!< inverse of [S-O, E-O]
 	double sHit_ = 1, sMax_ = 1;  //!< a+b bounds of part c
+	double hitLo_ = 0, hitHi_ = 0;  //!< along() bounds of part c: the segment's ends +- hitBand
+	double lo_ = 0, hi_ = 0;  //!< along() bounds of parts b and c (+-infinity where no cut)
 	double minX_ = 0, minY_ = 0, maxX_ = 0, maxY_ = 0;
 	double beams_ = 0, maxWeight_ = 1;
 	mrpt::math::TPoint2D edge_{1, 0};  //!< unit direction S -> E
@@ -135,6 +155,8 @@ inline bool WipeTriangle::rowSpan(const GridVector& m, const mrpt::math::TPoint2
 	if (!clipLinear(a0, a1, -eps, lo, hi) || !clipLinear(b0, b1, -eps, lo, hi) ||
 		!clipLinear(-(a0 + b0), -(a1 + b1), -sMax_ - eps, lo, hi))
 		return false;
+	const double u0 = along(q.x, q.y), u1 = edge_.x * d.x + edge_.y * d.y;
+	if (!clipLinear(u0, u1, lo_ - eps, lo, hi) || !clipLinear(-u0, -u1, -hi_ - eps, lo, hi)) return false;
 	// ceil and floor of values in [-1e-9, cols]: int(ceil(x)) and int(floor(x)) without the libm calls
 	const double x0 = lo / res - 0.5 - 1e-9, x1 = hi / res - 0.5 + 1e-9;
 	int c0 = int(x0), c1 = int(x1);
@@ -152,11 +174,11 @@ void WipeTriangle::forEachCellAt(const GridVector& m, F&& f) const
 	const mrpt::math::TPoint2D d = m.direction(), n = m.leftNormal();
 	const double res = m.resolution();
 	constexpr int block = 64;
-	double cx[block], cy[block], sum[block];
+	double cx[block], cy[block], sum[block], us[block];
 	for (int r = 0; r < m.rows(); ++r)
 	{
-		const double w = (r - m.halfWidth()) * res;
-		const mrpt::math::TPoint2D q(m.start().x + w * n.x, m.start().y + w * n.y);
+		const double w = (r - m.halfWidth()) * res, wx = w * n.x, wy = w * n.y;
+		const mrpt::math::TPoint2D q(m.start().x + wx, m.start().y + wy);
 		int k0, k1;
 		if (!rowSpan(m, q, d, k0, k1)) continue;
 		for (int b = k0; b <= k1; b += block)
@@ -165,15 +187,17 @@ void WipeTriangle::forEachCellAt(const GridVector& m, F&& f) const
 			for (int j = 0; j < nb; ++j)  // the cells' centres and a + b, branch-free (vectorised)
 			{
 				const double u = (b + j + 0.5) * res;
-				cx[j] = q.x + u * d.x;
-				cy[j] = q.y + u * d.y;
+				cx[j] = m.start().x + u * d.x + wx;  // as GridVector::cellCentre, to the last bit
+				cy[j] = m.start().y + u * d.y + wy;
 				const double px = cx[j] - o_.x, py = cy[j] - o_.y;
 				sum[j] = (i00_ * px + i01_ * py) + (i10_ * px + i11_ * py);  // a + b (coords)
+				us[j] = edge_.x * px + edge_.y * py;  // along()
 			}
 			for (int j = 0; j < nb; ++j)
 			{
-				if (sum[j] > sMax_) continue;  // guards the interval's rounding
-				f(r, b + j, sum[j] < sHit_ ? WipePart::Visited : WipePart::Hit, mrpt::math::TPoint2D(cx[j], cy[j]));
+				if (sum[j] > sMax_ || us[j] < lo_ || us[j] > hi_) continue;  // guards the interval's rounding
+				const bool hit = sum[j] >= sHit_ && us[j] >= hitLo_ && us[j] <= hitHi_;
+				f(r, b + j, hit ? WipePart::Hit : WipePart::Visited, mrpt::math::TPoint2D(cx[j], cy[j]));
 			}
 		}
 	}

@@ -221,6 +221,30 @@ TEST(DoorDetector, AStaticLeafActingAsTheWallIsAStateAndTheLongWallIsTheDoorsWal
 	EXPECT_EQ(doors[0].angles.size(), 3u);
 }
 
+TEST(DoorDetector, TheClosedLeafInsideAWallMergedAcrossTheDoorwayIsDynamic)
+{
+	// as above: the wall runs through the hinge and on past it on the states' side (+y), no
+	// state lies along it: the closed leaf is inside the wall, from the hinge up one leaf length
+	const std::vector<GridVector> v = {vec(0, -2, 0, 3, S), polarVec(0, 0, 0, 0.82, 15, S), polarVec(0, 0, 0, 0.84, 52, D),
+									   polarVec(0, 0, 0, 0.87, 33, D)};
+	const DoorDetector det;
+	const auto doors = det.detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_TRUE(doors[0].closedInWall);
+	EXPECT_NEAR(doors[0].closedAngle, M_PI / 2, 1e-6);
+	EXPECT_EQ(doors[0].angles.size(), 3u);  // no state seen: not among the angles
+	const auto spans = det.stateSpans(doors, v[0]);
+	ASSERT_EQ(spans.size(), 1u);
+	EXPECT_NEAR(spans[0].first, 2.0, 0.03);
+	EXPECT_NEAR(spans[0].second, 2.0 + doors[0].length, 0.03);
+	// a wall ending at the hinge (the doorway beyond it) holds no closed leaf
+	const std::vector<GridVector> atEnd = {vec(0, 0, 3, 0, S), vec(4.0, 0, 6, 0, S), vec(3.02, 0.03, 3.02, 0.92, D),
+										   vec(3.01, 0.0, 3.64, 0.64, D)};
+	const auto d2 = det.detect(atEnd);
+	ASSERT_EQ(d2.size(), 1u);
+	EXPECT_FALSE(d2[0].closedInWall);
+}
+
 TEST(DoorDetector, TheSweptArcRunsFromTheWallsLineThroughTheStates)
 {
 	// states -45 and -79 deg, the closed state not among them: the arc runs from the wall's

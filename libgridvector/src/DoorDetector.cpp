@@ -12,6 +12,29 @@ using mrpt::math::TPoint2D;
 namespace
 {
 double dist(const TPoint2D& a, const TPoint2D& b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+/** The smallest arc holding all angles (ascending): counter-clockwise from `start`, `width` wide. */
+std::pair<double, double> statesArc(const std::vector<double>& as)
+{
+	double gap = -1;
+	size_t from = 0;
+	for (size_t k = 0; k < as.size(); ++k)
+	{
+		const double g = k + 1 < as.size() ? as[k + 1] - as[k] : as[0] + 2 * M_PI - as[k];
+		if (g > gap) gap = g, from = k;
+	}
+	return {as[(from + 1) % as.size()], 2 * M_PI - gap};
+}
+
+/** The closed leaf's direction: the wall's direction (either way) nearer the states' arc. */
+double closedDirection(const std::vector<double>& as, const GridVector& wall)
+{
+	const auto [start, width] = statesArc(as);
+	const double mid = start + width / 2;
+	double closed = wall.psi();
+	if (std::abs(mrpt::math::wrapToPi(closed + M_PI - mid)) < std::abs(mrpt::math::wrapToPi(closed - mid))) closed += M_PI;
+	return closed;
+}
 }  // namespace
 
 DoorDetector::DoorDetector(const DoorOptions& opts) : opts_(opts) {}
@@ -127,14 +150,18 @@ bool DoorDetector::collinearBeyond(const GridVector& wall, const TPoint2D& verte
 	return off <= opts_.maxCornerGap && std::abs(tipAlong) > std::abs(alongAndOff(wall, vertex).first);
 }
 
-// Sec. 5.4: a door's states are dynamic, also where a static wall runs along one of them.
+// Sec. 5.4: a door's states are dynamic, also where a static wall runs along one of them (and
+// its closed leaf inside a wall merged across the doorway, closedInWall).
 std::vector<std::pair<double, double>> DoorDetector::stateSpans(const std::vector<Door>& doors,
 																const GridVector& v) const
 {
 	std::vector<std::pair<double, double>> out;
 	const double half = v.length() / 2;
 	for (const Door& d : doors)
-		for (double a : d.angles)
+	{
+		std::vector<double> states = d.angles;
+		if (d.closedInWall) states.push_back(d.closedAngle);
+		for (double a : states)
 		{
 			if (bendDeg(a, v) >= opts_.minCornerAngleDeg) continue;
 			const TPoint2D tip(d.hinge.x + d.length * std::cos(a), d.hinge.y + d.length * std::sin(a));
@@ -145,6 +172,7 @@ std::vector<std::pair<double, double>> DoorDetector::stateSpans(const std::vecto
 			const double u1 = std::clamp(std::max(h, t) + half, 0.0, v.length());
 			if (u1 > u0) out.emplace_back(u0, u1);
 		}
+	}
 	return out;
 }
 
@@ -275,6 +303,7 @@ std::vector<Door> DoorDetector::detectIn(const std::vector<GridVector>& v) const
 		const double reach = std::max(door.length, longest) + opts_.maxLengthDiff;
 		wallAsState(v, door, reach, taken);
 		joinStates(v, door, reach, taken);
+		closedInWall(v, door);
 	}
 	return doors;
 }
@@ -311,30 +340,40 @@ void DoorDetector::wallAsState(const std::vector<GridVector>& v, Door& d, double
 	}
 }
 
+// A door whose wall runs through the hinge and on past it, on the states' side, for a leaf's
+// length (merged across the doorway: the door was closed in most observations, so Eq. 6 kept
+// its closed leaf static with the wall), and with no state along it: the closed leaf lies
+// there, inside the wall. It is no state seen (not in angles); stateSpans makes it dynamic.
+void DoorDetector::closedInWall(const std::vector<GridVector>& v, Door& d) const
+{
+	const GridVector& w = v[d.wall];
+	if (w.length() <= opts_.maxDoorLength) return;
+	const double closed = closedDirection(d.angles, w), minDiff = opts_.minStateDiffDeg * M_PI / 180;
+	if (std::any_of(d.angles.begin(), d.angles.end(), [&](double a) { return std::abs(mrpt::math::wrapToPi(a - closed)) < minDiff; }))
+		return;  // the closed state is a state: stateSpans has it
+	const auto [along, off] = alongAndOff(w, d.hinge);
+	const double ahead = std::cos(closed - w.psi()) > 0 ? along : -along;  // the hinge's place in the closed direction
+	if (off > opts_.maxTeeOffset || std::abs(along) >= w.length() / 2 ||
+		w.length() / 2 - ahead < d.length - opts_.maxLengthDiff)
+		return;
+	d.closedInWall = true;
+	d.closedAngle = closed;
+}
+
 // The arc a door's leaf sweeps: the smallest arc holding all states (the complement of the
 // largest gap between them); when the states seen span less than doors.min_sweep_deg (a right
 // angle), the arc from the wall's line (the closed leaf) through the states, at least that wide.
+
 bool DoorDetector::inSweep(const Door& d, const GridVector& wall, double angle) const
 {
-	const std::vector<double>& as = d.angles;  // ascending
-	double gap = -1;
-	size_t from = 0;
-	for (size_t k = 0; k < as.size(); ++k)
-	{
-		const double g = k + 1 < as.size() ? as[k + 1] - as[k] : as[0] + 2 * M_PI - as[k];
-		if (g > gap) gap = g, from = k;
-	}
-	double start = as[(from + 1) % as.size()], width = 2 * M_PI - gap;  // counter-clockwise from start
+	auto [start, width] = statesArc(d.angles);  // counter-clockwise from start
 	const double minSweep = M_PI * (opts_.minSweepDeg / 180);  // exactly M_PI / 2 for 90 deg
 	if (width < minSweep)
 	{
 		// the closed leaf lies along the wall, in the wall's direction nearer the states (a state
 		// or not: a closed leaf inside a wall merged across the doorway is none); the arc runs
 		// from there through the states, at least minSweep wide
-		const double mid = start + width / 2;
-		double closed = wall.psi();
-		if (std::abs(mrpt::math::wrapToPi(closed + M_PI - mid)) < std::abs(mrpt::math::wrapToPi(closed - mid)))
-			closed += M_PI;
+		const double mid = start + width / 2, closed = closedDirection(d.angles, wall);
 		if (mrpt::math::wrapToPi(mid - closed) >= 0)  // states counter-clockwise from the closed leaf
 			width = std::max(minSweep, mrpt::math::wrapTo2Pi(start + width - closed)), start = closed;
 		else

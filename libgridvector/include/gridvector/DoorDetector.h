@@ -33,6 +33,11 @@ struct Door
 	std::vector<double> angles;  //!< leaf directions of the states, ascending [rad]
 	size_t wall = 0;  //!< index of the shared static vector
 	std::vector<size_t> leaves;  //!< indices of the dynamic vectors
+	/** The closed leaf lies inside the door's wall, merged across the doorway (the wall runs
+	 * through the hinge and on past it, on the states' side, for a leaf's length, and no state
+	 * lies along it): direction closedAngle. Not a state seen (not in angles). */
+	bool closedInWall = false;
+	double closedAngle = 0;
 };
 
 /** Two corners sharing the static vector, with close vertices and leaves of
@@ -67,8 +72,8 @@ class DoorDetector
 
 	std::vector<Corner> corners(const std::vector<GridVector>& vectors) const;
 	std::vector<Door> detect(const std::vector<GridVector>& vectors) const;
-	/** Where the doors' states lie on v: [from, to] in metres from v's start,
-	 * for every state parallel to v (within min_corner_angle_deg) whose hinge
+	/** Where the doors' states (and a closed leaf inside the wall, Door::closedInWall) lie on
+	 * v: [from, to] in metres from v's start, for every state parallel to v (within min_corner_angle_deg) whose hinge
 	 * and tip are within max_tee_offset of v's line (a closed leaf inside a
 	 * wall merged across the doorway: part of the door, so dynamic). */
 	std::vector<std::pair<double, double>> stateSpans(const std::vector<Door>& doors, const GridVector& v) const;
@@ -79,6 +84,7 @@ class DoorDetector
 	bool endCorner(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	void teeCorners(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	bool sameDoor(const Corner& a, const Corner& b) const;
+	void closedInWall(const std::vector<GridVector>& v, Door& d) const;
 	void wallAsState(const std::vector<GridVector>& v, Door& d, double reach, std::vector<bool>& taken) const;
 	bool inSweep(const Door& d, const GridVector& wall, double angle) const;
 	void joinStates(const std::vector<GridVector>& v, Door& d, double reach, std::vector<bool>& taken) const;

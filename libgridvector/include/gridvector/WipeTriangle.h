@@ -112,7 +112,7 @@ class WipeTriangle
 	double along(double x, double y) const { return edge_.x * (x - o_.x) + edge_.y * (y - o_.y); }
 	/** Sets the bounding box of the triangle o, s, e clipped to lo_ <= along() <= hi_. */
 	void boundingBox(const mrpt::math::TPoint2D& o, const mrpt::math::TPoint2D& s, const mrpt::math::TPoint2D& e);
-	/** Columns [k0, k1] of a grid row whose centres lie in the cone (inline: once per row and map vector). */
+	/** Columns [k0, k1] of a grid row whose centres lie in parts b and c (inline: once per row and map vector). */
 	bool rowSpan(const GridVector& m, const mrpt::math::TPoint2D& rowOrigin,
 				 const mrpt::math::TPoint2D& dir, int& k0, int& k1) const;
 	/** Intersect [lo, hi] with {u : g0 + g1 u >= c}; false if it becomes empty. */

@@ -266,3 +266,56 @@ TEST(WipeTriangle, MissesOnlyBoxesBeyondAnEdge)
 				EXPECT_FALSE(tri.misses(x - 0.01, y - 0.01, x + 0.01, y + 0.01));
 			}
 }
+
+// Cell centres on, or within 1e-9 of, the cone's edge rays (a = 0, b = 0): the walk's row intervals are
+// widened against rounding, and every cell it reports must still be one classify() puts in b or c, and
+// the other way round. The grid is shifted by a_off (S - O) + b_off (E - O) from a lattice through which
+// both edge rays run, so the centres on the rays get a = a_off or b = b_off (to ~1e-15).
+TEST(WipeTriangle, RasterisationEqualsClassifyOnTheConeEdges)
+{
+	std::mt19937 rng(5);
+	std::uniform_int_distribution<int> step(-3, 3), reach(4, 30), cols(20, 80);
+	const double offsets[] = {0, 1e-13, -1e-13, 1e-12, -1e-12, 3e-12, -3e-12, 1e-10, -1e-10, 5e-10, -5e-10,
+							  9e-10, -9e-10, 2e-9, -2e-9};
+	size_t checked = 0, inside = 0, nearEdgeOut = 0, nearEdgeIn = 0;
+	for (int trial = 0; trial < 600; ++trial)
+	{
+		GridOptions g = grid01();
+		g.halfWidth = 2 + trial % 5;
+		const int n = cols(rng);
+		const GridVector lattice({0, 0}, {n * g.resolution, 0}, g);  // its centres: the lattice
+		const int r0 = int(rng() % unsigned(lattice.rows())), c0 = int(rng() % unsigned(n));
+		int di1 = step(rng), dj1 = step(rng), di2 = step(rng), dj2 = step(rng);
+		if (di1 * dj2 - dj1 * di2 == 0) continue;  // parallel rays
+		const TPoint2D o = lattice.cellCentre(r0, c0);
+		const double k1 = reach(rng) * g.resolution, k2 = reach(rng) * g.resolution;
+		const TPoint2D s(o.x + k1 * di1, o.y + k1 * dj1), e(o.x + k2 * di2, o.y + k2 * dj2);
+		const WipeTriangle t(o, s, e, 0.05 + 0.1 * (trial % 3));
+		if (t.degenerate()) continue;
+		const double aOff = offsets[rng() % std::size(offsets)], bOff = offsets[rng() % std::size(offsets)];
+		const TPoint2D w(aOff * (s.x - o.x) + bOff * (e.x - o.x), aOff * (s.y - o.y) + bOff * (e.y - o.y));
+		const GridVector m({w.x, w.y}, {w.x + n * g.resolution, w.y}, g);
+		const std::vector<int> seen = walked(t, m);
+		const double det = (s.x - o.x) * (e.y - o.y) - (s.y - o.y) * (e.x - o.x);
+		for (int r = 0; r < m.rows(); ++r)
+			for (int c = 0; c < m.cols(); ++c)
+			{
+				const TPoint2D p = m.cellCentre(r, c);
+				const WipePart want = t.classify(p);
+				EXPECT_EQ(seen[size_t(r) * m.cols() + c], int(want))
+					<< trial << " r" << r << " c" << c << " offsets " << aOff << " " << bOff;
+				// cone coordinates, for the counts: a along S - O, b along E - O
+				const double a = ((p.x - o.x) * (e.y - o.y) - (p.y - o.y) * (e.x - o.x)) / det;
+				const double b = ((s.x - o.x) * (p.y - o.y) - (s.y - o.y) * (p.x - o.x)) / det;
+				const bool nearEdge = (std::abs(a) < 3e-9 && b > -3e-9) || (std::abs(b) < 3e-9 && a > -3e-9);
+				nearEdgeOut += nearEdge && want == WipePart::Outside;
+				nearEdgeIn += nearEdge && want != WipePart::Outside;
+				inside += want != WipePart::Outside;
+				++checked;
+			}
+	}
+	EXPECT_GT(checked, 100000u);
+	EXPECT_GT(inside, 10000u);
+	EXPECT_GT(nearEdgeOut, 500u);  // centres just outside an edge ray (within the walk's old 1e-9 slack)
+	EXPECT_GT(nearEdgeIn, 500u);  // and on or just inside one
+}

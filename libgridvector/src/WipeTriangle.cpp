@@ -115,17 +115,6 @@ bool WipeTriangle::misses(double minX, double minY, double maxX, double maxY) co
 	return allA || allB || allFar || allLo || allHi;
 }
 
-WipePart WipeTriangle::classify(const TPoint2D& p) const
-{
-	if (degenerate_) return WipePart::Outside;
-	double a, b;
-	coords(p.x, p.y, a, b);
-	constexpr double eps = 1e-12;
-	const double u = along(p.x, p.y);
-	if (a < -eps || b < -eps || a + b > sMax_ || u < lo_ || u > hi_) return WipePart::Outside;
-	return a + b >= sHit_ && u >= hitLo_ && u <= hitHi_ ? WipePart::Hit : WipePart::Visited;
-}
-
 // Eq. 8 / Fig. 2: part c -> n_occupy, n_visit += 1; part b -> n_visit += 1; part a untouched.
 size_t WipeTriangle::apply(GridVector& m) const
 {

@@ -72,7 +72,14 @@ class WipeTriangle
 
 	/** No area: the sensor (nearly) on the vector's line, or a zero-length vector. */
 	bool degenerate() const { return degenerate_; }
-	WipePart classify(const mrpt::math::TPoint2D& p) const;
+	/** Fig. 2's part of a point (partOf() on its cone coordinates; forEachCellAt uses the same predicate). */
+	WipePart classify(const mrpt::math::TPoint2D& p) const
+	{
+		if (degenerate_) return WipePart::Outside;
+		double a, b;
+		coords(p.x, p.y, a, b);
+		return partOf(a, b, along(p.x, p.y));
+	}
 
 	/** Axis-aligned bounding box of parts b and c (the cone cut at d = -hitBand and by the box's ends). */
 	double minX() const { return minX_; }
@@ -110,9 +117,18 @@ class WipeTriangle
 	}
 	/** Coordinate along SE from O's foot (inline: as coords). */
 	double along(double x, double y) const { return edge_.x * (x - o_.x) + edge_.y * (y - o_.y); }
+	/** Tolerance of the cone's edges a = 0, b = 0 (a point on an edge ray is in the cone). */
+	static constexpr double kEdgeTol = 1e-12;
+	/** Fig. 2 in cone coordinates: the one predicate of classify() and of the walk's cells. */
+	WipePart partOf(double a, double b, double u) const
+	{
+		if (a < -kEdgeTol || b < -kEdgeTol || a + b > sMax_ || u < lo_ || u > hi_) return WipePart::Outside;
+		return a + b >= sHit_ && u >= hitLo_ && u <= hitHi_ ? WipePart::Hit : WipePart::Visited;
+	}
 	/** Sets the bounding box of the triangle o, s, e clipped to lo_ <= along() <= hi_. */
 	void boundingBox(const mrpt::math::TPoint2D& o, const mrpt::math::TPoint2D& s, const mrpt::math::TPoint2D& e);
-	/** Columns [k0, k1] of a grid row whose centres lie in parts b and c (inline: once per row and map vector). */
+	/** Columns [k0, k1] of a grid row holding every centre in parts b and c (a superset: its bounds are
+	 * widened by 1e-9 against rounding, the cells are then tested by partOf; inline: once per row and map vector). */
 	bool rowSpan(const GridVector& m, const mrpt::math::TPoint2D& rowOrigin,
 				 const mrpt::math::TPoint2D& dir, int& k0, int& k1) const;
 	/** Intersect [lo, hi] with {u : g0 + g1 u >= c}; false if it becomes empty. */
@@ -151,7 +167,7 @@ inline bool WipeTriangle::rowSpan(const GridVector& m, const mrpt::math::TPoint2
 	a1 = i00_ * d.x + i01_ * d.y;
 	b1 = i10_ * d.x + i11_ * d.y;
 	double lo = 0.5 * res, hi = (m.cols() - 0.5) * res;  // column centres
-	constexpr double eps = 1e-9;
+	constexpr double eps = 1e-9;  // widens the interval only: partOf decides each cell
 	if (!clipLinear(a0, a1, -eps, lo, hi) || !clipLinear(b0, b1, -eps, lo, hi) ||
 		!clipLinear(-(a0 + b0), -(a1 + b1), -sMax_ - eps, lo, hi))
 		return false;
@@ -174,7 +190,7 @@ void WipeTriangle::forEachCellAt(const GridVector& m, F&& f) const
 	const mrpt::math::TPoint2D d = m.direction(), n = m.leftNormal();
 	const double res = m.resolution();
 	constexpr int block = 64;
-	double cx[block], cy[block], sum[block], us[block];
+	double cx[block], cy[block], as[block], bs[block], us[block];
 	for (int r = 0; r < m.rows(); ++r)
 	{
 		const double w = (r - m.halfWidth()) * res, wx = w * n.x, wy = w * n.y;
@@ -184,20 +200,20 @@ void WipeTriangle::forEachCellAt(const GridVector& m, F&& f) const
 		for (int b = k0; b <= k1; b += block)
 		{
 			const int nb = std::min(block, k1 - b + 1);
-			for (int j = 0; j < nb; ++j)  // the cells' centres and a + b, branch-free (vectorised)
+			for (int j = 0; j < nb; ++j)  // the cells' centres and cone coordinates, branch-free (vectorised)
 			{
 				const double u = (b + j + 0.5) * res;
 				cx[j] = m.start().x + u * d.x + wx;  // as GridVector::cellCentre, to the last bit
 				cy[j] = m.start().y + u * d.y + wy;
 				const double px = cx[j] - o_.x, py = cy[j] - o_.y;
-				sum[j] = (i00_ * px + i01_ * py) + (i10_ * px + i11_ * py);  // a + b (coords)
+				as[j] = i00_ * px + i01_ * py;  // coords(), same operations
+				bs[j] = i10_ * px + i11_ * py;
 				us[j] = edge_.x * px + edge_.y * py;  // along()
 			}
 			for (int j = 0; j < nb; ++j)
 			{
-				if (sum[j] > sMax_ || us[j] < lo_ || us[j] > hi_) continue;  // guards the interval's rounding
-				const bool hit = sum[j] >= sHit_ && us[j] >= hitLo_ && us[j] <= hitHi_;
-				f(r, b + j, hit ? WipePart::Hit : WipePart::Visited, mrpt::math::TPoint2D(cx[j], cy[j]));
+				const WipePart part = partOf(as[j], bs[j], us[j]);  // classify()'s predicate, cell by cell
+				if (part != WipePart::Outside) f(r, b + j, part, mrpt::math::TPoint2D(cx[j], cy[j]));
 			}
 		}
 	}

@@ -1,6 +1,7 @@
 // gv-sim: determinism, beam labels against the geometry, odometry noisy while
 // the truth is not, output files readable by the project's own readers.
 #include <gridvector/eval/TrajectoryEval.h>
+#include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/LogReader.h>
 #include <gridvector/sim/BuiltinWorlds.h>
 #include <gridvector/sim/OdometryNoise.h>
@@ -209,6 +210,42 @@ TEST(Simulator, WritesALogTheReadersAcceptAndTruthFiles)
 	size_t swings = 0;
 	for (const auto& d : t.doors) swings += size_t(d.swings);
 	EXPECT_EQ(swings, t.doorSwings.size());
+	fs::remove_all(dir);
+}
+
+// truth_dynamic.txt may only name doors of truth_doors.txt: an unknown door's hit would be a dynamic
+// place to the ghost figures but no door to the breakdown and the recalls (they would not add up).
+TEST(Simulator, TruthRejectsDoorsNotInTheDoorsFile)
+{
+	const std::string dir = (fs::temp_directory_path() / "gv_simulator_truth_doors").string();
+	fs::remove_all(dir);
+	fs::create_directories(dir);
+	const auto write = [&](const char* name, const std::string& text) {
+		io::writeFileAtomically(dir + "/" + name, [&](std::ostream& os) { os << text; });
+	};
+	write(SimFiles::walls, "0 0 10 0\n");
+	write(SimFiles::seenWalls, "0 0 10 0\n");
+	write(SimFiles::doors, "5 0 0.9 0 1.5 1\n");
+	const auto errorOf = [&](const std::string& dynamic) {
+		write(SimFiles::dynamic, dynamic);
+		try
+		{
+			const Truth t = readTruth(dir);
+			return "read " + std::to_string(t.hits.size()) + " hits, " + std::to_string(t.doorSwings.size()) + " swings";
+		}
+		catch (const std::runtime_error& e)
+		{
+			return std::string(e.what());
+		}
+	};
+	const std::string file = dir + "/" + SimFiles::dynamic;
+	EXPECT_EQ(errorOf("hit door 0 1 5 0.1 5 0.8 4\ndoor_swing 0 2 3 0 1.5\nhit person 7 1 3 1 4 1 5\n"),
+			  "read 2 hits, 1 swings");
+	EXPECT_EQ(errorOf("hit person 0 1 3 1 4 1 5\nhit door 1 1 5 0.1 5 0.8 4\n"),
+			  file + ":2: door 1 is not in truth_doors.txt (1 doors)");
+	EXPECT_EQ(errorOf("door_swing 3 2 3 0 1.5\n"), file + ":1: door 3 is not in truth_doors.txt (1 doors)");
+	write(SimFiles::doors, "");
+	EXPECT_EQ(errorOf("hit door 0 1 5 0.1 5 0.8 4\n"), file + ":1: door 0 is not in truth_doors.txt (0 doors)");
 	fs::remove_all(dir);
 }
 

@@ -161,6 +161,17 @@ HitKind hitKind(std::string_view k, const TextPos& pos)
 	io::parseError(pos, "unknown hit kind '" + io::printableToken(k) + "'");
 }
 
+/** A door's index in truth_doors.txt (read first): a door the doors file lacks would be a dynamic
+ * place to evaluateMap's ghost figures but no door to the breakdown and the door recalls. */
+int doorId(std::string_view tok, const TextPos& pos, const Truth& t)
+{
+	const long id = io::parseInt(tok, pos, "door", 0, 1000000);
+	if (size_t(id) >= t.doors.size())
+		io::parseError(pos, "door " + std::to_string(id) + " is not in " + SimFiles::doors + " (" +
+								std::to_string(t.doors.size()) + " doors)");
+	return int(id);
+}
+
 void readDynamicLine(const Tokens& t, const TextPos& pos, Truth& out)
 {
 	if (t[0] == "object_move") return expectFields(t, 2, pos, "object_move"), void(out.objectMoveTime = io::parseDouble(t[1], pos, "t"));
@@ -173,7 +184,7 @@ void readDynamicLine(const Tokens& t, const TextPos& pos, Truth& out)
 	if (t[0] == "door_swing")
 	{
 		expectFields(t, 6, pos, "door_swing");
-		return out.doorSwings.push_back({int(io::parseInt(t[1], pos, "door", 0, 100000)), io::parseDouble(t[2], pos, "t0"),
+		return out.doorSwings.push_back({doorId(t[1], pos, out), io::parseDouble(t[2], pos, "t0"),
 										 io::parseDouble(t[3], pos, "t1"), io::parseDouble(t[4], pos, "from"),
 										 io::parseDouble(t[5], pos, "to")});
 	}
@@ -182,7 +193,7 @@ void readDynamicLine(const Tokens& t, const TextPos& pos, Truth& out)
 		expectFields(t, 9, pos, "hit");
 		HitRun h;
 		h.kind = hitKind(t[1], pos);
-		h.id = int(io::parseInt(t[2], pos, "id", 0, 1000000));
+		h.id = h.kind == HitKind::Door ? doorId(t[2], pos, out) : int(io::parseInt(t[2], pos, "id", 0, 1000000));
 		h.t = io::parseDouble(t[3], pos, "t");
 		h.seg = segAt(t, 4, pos);
 		h.beams = int(io::parseInt(t[8], pos, "beams", 1, 1000000));

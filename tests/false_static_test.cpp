@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 using namespace gridvector;
 
 namespace
@@ -72,6 +74,23 @@ TEST(FalseStatic, AttributesEachStretchToTheNearestDynamicTruth)
 	EXPECT_NEAR(b.total - b.other - b.oneStateDoors, m.ghostLengthSeenSwinging, tol);
 }
 
+// A stretch within reach of a one-state door and of another dynamic place goes to the nearer (the door
+// here), while the second ghost figure, which drops only one-state doors' places, still counts it.
+TEST(FalseStatic, OneStateDoorOverlappingAPersonIsStillAGhostOfTheSecondFigure)
+{
+	sim::Truth t = truth();
+	t.hits.push_back(hit(sim::HitKind::Person, 1, 50, 40.2, 0.22, 40.8, 0.22));  // 7 cm from the leaf below
+	const std::vector<eval::MapVector> v = {vec(40.2, 0.15, 40.8, 0.15)};  // in door 1's swept sector
+	const auto b = eval::falseStaticBreakdown(v, t);
+	constexpr double tol = 2e-3;
+	EXPECT_NEAR(b.oneStateDoors, 0.6, tol);
+	EXPECT_NEAR(b.people, 0.0, tol);
+	const auto m = eval::evaluateMap(v, t, nullptr);
+	EXPECT_NEAR(b.total - b.other, m.ghostLength, tol);  // the first identity holds
+	EXPECT_NEAR(m.ghostLengthSeenSwinging, 0.6, tol);  // the second figure: the person is a dynamic place
+	EXPECT_NEAR(b.total - b.other - b.oneStateDoors, 0.0, tol);
+}
+
 TEST(FalseStatic, DoorPassesAndLeafAngles)
 {
 	const auto obs = eval::doorObservations(truth(), {}, 2.0);
@@ -104,4 +123,12 @@ TEST(FalseStatic, TextAndJsonNameEveryCategory)
 	const std::string json = eval::formatJson(b);
 	EXPECT_NE(json.find("\"two_state_doors_m\": 0.6"), std::string::npos) << json;
 	EXPECT_NE(json.find("\"seen_swinging\": false"), std::string::npos) << json;
+}
+
+TEST(FalseStatic, HugeVectorIsAnError)
+{
+	EXPECT_THROW(eval::falseStaticBreakdown({vec(0, 5, 1e300, 5)}, truth()), std::invalid_argument);
+	const auto b = eval::falseStaticBreakdown({}, truth());  // an empty map: nothing false static, every door listed
+	EXPECT_EQ(b.total, 0.0);
+	EXPECT_EQ(b.doors.size(), 2u);
 }

@@ -5,7 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
+#include <limits>
+#include <stdexcept>
 
 using namespace gridvector;
 using sim::Segment;
@@ -150,6 +153,27 @@ TEST(MapEval, SecondGhostFigureLeavesOutDoorsSeenInOneState)
 	EXPECT_NE(eval::formatJson(m).find("\"ghost_length_seen_swinging_m\": 1.0"), std::string::npos) << eval::formatJson(m);
 	EXPECT_NE(eval::formatText(m).find("ghost length (doors seen in one state are static): 1.00 m"), std::string::npos)
 		<< eval::formatText(m);
+}
+
+// Lengths are integrated at sample points; a huge (finite) vector must be an error, not int overflow
+// (one sample for 1e300 m) or hours of sampling.
+TEST(MapEval, SampleCountIsBounded)
+{
+	EXPECT_EQ(eval::sampleCount(0.5, 0.01), 50);
+	EXPECT_EQ(eval::sampleCount(1e-6, 0.01), 1);
+	EXPECT_EQ(eval::sampleCount(1e6, 0.01), 100000000);  // 1,000 km: the bound
+	EXPECT_THROW(eval::sampleCount(1.0001e6, 0.01), std::invalid_argument);
+	EXPECT_THROW(eval::sampleCount(1e300, 0.01), std::invalid_argument);
+	EXPECT_THROW(eval::sampleCount(std::numeric_limits<double>::infinity(), 0.01), std::invalid_argument);
+	EXPECT_THROW(eval::sampleCount(std::nan(""), 0.01), std::invalid_argument);
+	EXPECT_THROW(eval::sampleCount(1, 0), std::invalid_argument);
+	EXPECT_THROW(eval::evaluateMap({vec(0, 5, 1e300, 5, true)}, truth(), nullptr), std::invalid_argument);
+	EXPECT_THROW(eval::evaluateMap({vec(0, 0, 10, 0, true)}, truth(), nullptr, [] {
+					 eval::MapEvalOptions o;
+					 o.sampleStep = 0;
+					 return o;
+				 }()),
+				 std::invalid_argument);
 }
 
 TEST(MapEval, ReadsVectorsFilesStrictly)

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 #include <iostream>
+#include <stdexcept>
 
 using namespace gridvector;
 
@@ -83,11 +84,19 @@ int mapCommand(const io::ArgParser& a)
 		vectors = eval::transformVectors(vectors, T);
 		doors = eval::transformDoors(doors, T);
 	}
-	const auto m = eval::evaluateMap(vectors, truth, a.has("doors") ? &doors : nullptr, o);
+	eval::MapMetrics m;
 	eval::FalseStaticBreakdown b;
+	try
+	{
+		m = eval::evaluateMap(vectors, truth, a.has("doors") ? &doors : nullptr, o);
+		if (a.has("breakdown")) b = eval::falseStaticBreakdown(vectors, truth, o);
+	}
+	catch (const std::invalid_argument& e)  // sampleCount: a segment too long to sample; say which files
+	{
+		throw std::runtime_error(a.positional()[1] + " vs " + a.positional()[2] + ": " + e.what());
+	}
 	if (a.has("breakdown"))
 	{
-		b = eval::falseStaticBreakdown(vectors, truth, o);
 		const auto truePath = io::readTrajectory(a.positional()[2] + "/" + sim::SimFiles::trajectory);
 		if (!truePath.empty()) b.timeOrigin = truePath.front().first;
 	}

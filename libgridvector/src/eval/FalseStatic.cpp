@@ -85,7 +85,7 @@ FalseStaticBreakdown falseStaticBreakdown(const std::vector<MapVector>& vectors,
 		if (!v.isStatic) continue;
 		const double len = v.seg.length();
 		if (len <= 0) continue;
-		const int n = std::max(1, int(std::ceil(len / opt.sampleStep)));
+		const int n = sampleCount(len, opt.sampleStep);
 		const double w = len / n;
 		for (int k = 0; k < n; ++k)
 		{

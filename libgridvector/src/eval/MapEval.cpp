@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <functional>
 #include <sstream>
+#include <stdexcept>
 
 namespace gridvector::eval
 {
@@ -20,7 +21,7 @@ double lengthWhere(const Segment& s, double step, const std::function<bool(const
 {
 	const double len = s.length();
 	if (len <= 0) return 0;
-	const int n = std::max(1, int(std::ceil(len / step)));
+	const int n = sampleCount(len, step);
 	int hits = 0;
 	for (int i = 0; i < n; i++) hits += pred(s.at((i + 0.5) / n));
 	return len * hits / n;
@@ -73,6 +74,19 @@ void evaluateDoors(MapMetrics& m, const sim::Truth& truth, const std::vector<sim
 	m.doorPrecision = ratio(double(m.detectedCorrect), double(m.detectedDoors));
 }
 }  // namespace
+
+int sampleCount(double length, double step)
+{
+	constexpr double maxSamples = 1e8;
+	const double n = std::ceil(length / step);
+	if (!(step > 0) || !(n <= maxSamples))
+	{
+		char b[160];
+		std::snprintf(b, sizeof b, "a %g m long segment sampled every %g m: more than %g samples", length, step, maxSamples);
+		throw std::invalid_argument(b);
+	}
+	return std::max(1, int(n));
+}
 
 // Door leaves every 3 deg between closed and open: together they cover the swept sector.
 std::vector<Segment> doorSweep(const sim::DoorTruth& d)

@@ -74,6 +74,11 @@ struct MapMetrics
 	double doorRecallObserved = 0;
 };
 
+/** Sample points every `step` along a length (at least 1): the count lengths are integrated with.
+ * Throws std::invalid_argument above 1e8 (1,000 km at 1 cm: no building's map; the count would
+ * overflow int, and sample for hours) or for a length or step that is not finite and positive. */
+int sampleCount(double length, double step);
+
 /** Per true door: was its leaf seen in two states, i.e. truth hit runs
  * (truth_dynamic.txt, `hit door`) of at least doorMinRunLength whose leaf
  * angles differ by doorMinStateDiffDeg or more? */

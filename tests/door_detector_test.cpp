@@ -318,3 +318,28 @@ TEST(DoorDetector, MinSweepDegSetsTheWidenedArc)
 	EXPECT_EQ(leavesWith(45), (std::vector<size_t>{1, 2}));
 	EXPECT_EQ(leavesWith(0), (std::vector<size_t>{1, 2}));
 }
+
+// Degenerate input: no vectors, and zero-length vectors (static and dynamic) at the hinge and at a
+// leaf's tip, which have no direction (GridVector's is then +x): the door is found as without them.
+TEST(DoorDetector, ZeroLengthVectorsChangeNothing)
+{
+	const DoorDetector det;
+	EXPECT_TRUE(det.detect({}).empty());
+	EXPECT_TRUE(det.corners({}).empty());
+	std::vector<GridVector> v = {vec(0, 0, 3, 0, S), vec(4.0, 0, 6, 0, S), vec(3.02, 0.03, 3.02, 0.92, D),
+								 vec(3.01, 0.0, 3.64, 0.64, D)};
+	const auto want = det.detect(v);
+	ASSERT_EQ(want.size(), 1u);
+	for (const auto& p : {TPoint2D(3, 0), TPoint2D(3.02, 0.92), TPoint2D(3.64, 0.64)})
+		for (const auto s : {S, D}) v.push_back(vec(p.x, p.y, p.x, p.y, s));
+	const auto got = det.detect(v);
+	ASSERT_EQ(got.size(), 1u);
+	EXPECT_EQ(got[0].hinge.x, want[0].hinge.x);
+	EXPECT_EQ(got[0].hinge.y, want[0].hinge.y);
+	EXPECT_EQ(got[0].length, want[0].length);
+	EXPECT_EQ(got[0].angles, want[0].angles);
+	EXPECT_EQ(got[0].wall, want[0].wall);
+	EXPECT_EQ(got[0].leaves, want[0].leaves);
+	for (size_t k = 4; k < v.size(); ++k)
+		for (const auto& [u0, u1] : det.stateSpans(got, v[k])) EXPECT_TRUE(u0 == 0 && u1 == 0) << k;
+}

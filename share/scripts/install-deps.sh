@@ -10,7 +10,10 @@ PKGS="build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgtest
  mrpt-apps mrpt-common python3 zlib1g-dev
  libopenblas0-serial"
 missing=""
-for p in $PKGS; do dpkg -s "$p" >/dev/null 2>&1 || missing="$missing $p"; done
+# installed, not merely known to dpkg (a removed package's config files keep `dpkg -s` at 0)
+for p in $PKGS; do
+  [ "$(dpkg-query -W -f='${db:Status-Status}' "$p" 2>/dev/null)" = installed ] || missing="$missing $p"
+done
 if [ -n "$missing" ]; then
   $SUDO apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends $missing

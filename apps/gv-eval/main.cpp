@@ -7,6 +7,7 @@
 #include <gridvector/io/LogReader.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 #include <stdexcept>
 
@@ -95,9 +96,10 @@ int mapCommand(const io::ArgParser& a)
 	{
 		throw std::runtime_error(a.positional()[1] + " vs " + a.positional()[2] + ": " + e.what());
 	}
-	if (a.has("breakdown"))
+	const std::string truePathFile = a.positional()[2] + "/" + sim::SimFiles::trajectory;
+	if (a.has("breakdown") && std::filesystem::exists(truePathFile))  // times from its first pose, else absolute
 	{
-		const auto truePath = io::readTrajectory(a.positional()[2] + "/" + sim::SimFiles::trajectory);
+		const auto truePath = io::readTrajectory(truePathFile);
 		if (!truePath.empty()) b.timeOrigin = truePath.front().first;
 	}
 	if (a.has("json"))

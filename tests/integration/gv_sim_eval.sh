@@ -75,6 +75,11 @@ total, one, two, obj, people, other = v
 assert abs(total - 0.7 * n) < 0.02 * n and abs(one + two - total) < 0.011 and obj == people == other == 0, v
 PY
 [ "$(echo "$text" | grep -c '^door [0-9]*: ')" = "$doors" ] || fail "breakdown: a line per door: $text"
+# without truth_trajectory.txt (not needed by the map metrics) the breakdown's times are absolute
+mkdir "$T/notraj" && cp "$T/a"/truth_walls.txt "$T/a"/truth_seen_walls.txt "$T/a"/truth_doors.txt "$T/a"/truth_dynamic.txt "$T/notraj/"
+text2=$("$BIN/gv-eval" map "$T/closed.txt" "$T/notraj" --breakdown) || fail "breakdown without truth_trajectory.txt"
+[ "$(echo "$text2" | grep '^false static:')" = "$line" ] || fail "breakdown without truth_trajectory.txt: $text2"
+echo "$text2" | grep -q '^door [0-9]*: .* passes: \[1100000' || fail "breakdown without truth_trajectory.txt: absolute times: $text2"
 set +e
 printf '0 0 1 1\n' > "$T/bad.txt"
 "$BIN/gv-eval" map "$T/bad.txt" "$T/a" 2> "$T/err.txt"; rc=$?

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <limits>
 #include <random>
 
 using namespace gridvector;
@@ -114,6 +117,23 @@ TEST(WipeTriangle, DegenerateWhenSensorOnTheLine)
 	EXPECT_TRUE(WipeTriangle(O, S, S, 0.05).degenerate());
 	const WipeTriangle t({3, 2}, S, E, 0.05);
 	EXPECT_EQ(t.classify({0, 2}), WipePart::Outside);
+}
+
+// A sensor or endpoint that is not finite (a diverged pose) makes no triangle: with NaN every comparison
+// of the parts' predicate fails and each cell of a map vector would be reported "Visited".
+TEST(WipeTriangle, NonFiniteInputIsDegenerate)
+{
+	const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
+	for (const auto& [o, s, e] : {std::array<TPoint2D, 3>{TPoint2D(nan, 0), S, E}, {O, TPoint2D(1, nan), E},
+								  {O, S, TPoint2D(inf, 2)}, {TPoint2D(0, -inf), S, E}, {O, TPoint2D(inf, inf), E}})
+	{
+		const WipeTriangle t(o, s, e, 0.05);
+		EXPECT_TRUE(t.degenerate()) << o.x << " " << o.y << " " << s.x << " " << s.y << " " << e.x << " " << e.y;
+		EXPECT_EQ(t.classify({0, 1}), WipePart::Outside);
+		GridVector m({-0.3, 1.0}, {0.3, 1.0}, grid01());
+		EXPECT_EQ(t.apply(m), 0u);
+	}
+	EXPECT_TRUE(WipeTriangle(O, S, E, nan).degenerate());
 }
 
 TEST(WipeTriangle, CoincidentWallRowsGetHitVisitUntouched)

@@ -18,7 +18,8 @@ WipeTriangle::WipeTriangle(const TPoint2D& sensor, const TPoint2D& start, const 
 	const double det = ax * by - ay * bx;
 	// distance of O to the far edge's line: |det| / |E - S| (twice the area over the base)
 	const double dO = len > 0 ? std::abs(det) / len : 0.0;
-	if (len < 1e-9 || dO < 1e-6) return;
+	// degenerate also when a point is not finite (NaN fails every comparison: each cell would be "Visited")
+	if (!(len >= 1e-9 && dO >= 1e-6 && std::isfinite(det) && std::isfinite(hitBand))) return;
 	degenerate_ = false;
 	edge_ = TPoint2D((end.x - start.x) / len, (end.y - start.y) / len);
 	i00_ = by / det, i01_ = -bx / det;

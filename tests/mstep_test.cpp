@@ -205,6 +205,21 @@ std::vector<MatchSegment> ahead(std::vector<MatchSegment> segs)
 			   segs.end());
 	return segs;
 }
+
+// The forward scans of the corridor world along a path, with unique vector ids.
+std::vector<std::vector<MatchSegment>> aheadScans(const std::vector<TPose2D>& truth)
+{
+	const auto walls = emtest::corridorWorld();
+	std::vector<std::vector<MatchSegment>> scans;
+	uint64_t id = 1;
+	for (size_t t = 0; t < truth.size(); ++t)
+	{
+		auto segs = ahead(MatchSegment::fromVectors(emtest::observe(walls, truth[t], 6.0, unsigned(t)).vectors));
+		for (auto& s : segs) s.id = EStep::childId(id++, 0);
+		scans.push_back(segs);
+	}
+	return scans;
+}
 }  // namespace
 
 // mstep.pass_heading_weight: on its first lap the robot turns round at (8, 1) and back;
@@ -222,15 +237,7 @@ TEST(MStep, OverlapEdgeComesFromAPoseFacingTheSameWay)
 	size_t second = lap + 2;  // the second lap's pose at (8, 1), facing +x
 	while (std::hypot(truth[second].x - 8, truth[second].y - 1) > 1e-9) ++second;
 	const auto odo = emtest::odometryOf(truth, 3, 0.5);
-	const auto walls = emtest::corridorWorld();
-	std::vector<std::vector<MatchSegment>> scans;
-	uint64_t id = 1;
-	for (size_t t = 0; t < truth.size(); ++t)
-	{
-		auto segs = ahead(MatchSegment::fromVectors(emtest::observe(walls, truth[t], 6.0, unsigned(t)).vectors));
-		for (auto& s : segs) s.id = EStep::childId(id++, 0);
-		scans.push_back(segs);
-	}
+	const auto scans = aheadScans(truth);
 	auto facingEdge = [&](double weight) {
 		GridVectorConfig cfg;
 		cfg.mstep.passHeadingWeight = weight;
@@ -247,6 +254,49 @@ TEST(MStep, OverlapEdgeComesFromAPoseFacingTheSameWay)
 	};
 	EXPECT_TRUE(facingEdge(MStepOptions{}.passHeadingWeight));
 	EXPECT_FALSE(facingEdge(0.0));
+}
+
+// mstep.overlap_most_overlapping: one lap of the ring counter-clockwise, then one clockwise.
+// Coming down the right corridor towards the bottom-right corner, a forward scanner shares
+// almost nothing with the first lap's pose nearest in view (the same place, facing up the
+// corridor), but the corner (two perpendicular walls) with the first lap's poses that
+// approached it along the bottom corridor. With the setting those poses give the overlap
+// edges (non-degenerate, correct): every such pose gets one, without the setting 4 of 9.
+TEST(MStep, APassWalkedTheOtherWayIsRegisteredWithItsMostOverlappingPose)
+{
+	std::vector<TPose2D> truth = emtest::ringPath(1, 0.25);
+	const size_t lap = truth.size();
+	for (size_t k = lap; k-- > 0;)
+		truth.emplace_back(truth[k].x, truth[k].y, mrpt::math::wrapToPi(truth[k].phi + M_PI));
+	const auto odo = emtest::odometryOf(truth, 5, 1.0);
+	const auto scans = aheadScans(truth);
+	auto crossEdges = [&](bool on, double& worst) {
+		GridVectorConfig cfg;
+		cfg.mstep.overlapMostOverlapping = on;
+		cfg.mstep.loopSearch = false;  // the overlap search alone
+		MStep m(cfg);
+		m.setOdometry(odo);
+		std::vector<TPose2D> poses;
+		m.run(scans, poses);
+		m.run(scans, poses);
+		size_t n = 0;
+		worst = 0;
+		for (const auto& [key, c] : m.constraints())
+			if (c.kind == EdgeKind::Overlap && c.from < lap && c.to >= lap && truth[c.to].x > 14.9 &&
+				truth[c.to].y > 1.5 && truth[c.to].y < 4)  // coming down to the corner
+			{
+				++n;
+				worst = std::max(worst, se2::distance(c.z, se2::relative(truth[c.from], truth[c.to])));
+			}
+		return n;
+	};
+	size_t coming = 0;  // second-lap poses coming down to the corner
+	for (size_t t = lap; t < truth.size(); ++t) coming += truth[t].x > 14.9 && truth[t].y > 1.5 && truth[t].y < 4;
+	ASSERT_EQ(coming, 9u);
+	double worst = 0;
+	EXPECT_LE(crossEdges(false, worst), 4u);  // only the poses nearest the corner (the nearest in view sees it)
+	EXPECT_EQ(crossEdges(MStepOptions{}.overlapMostOverlapping, worst), coming);  // one each
+	EXPECT_LT(worst, 0.05);
 }
 
 namespace

@@ -300,6 +300,28 @@ bool MStep::hasEdgeNear(uint32_t i, uint32_t jlo, uint32_t jhi) const
 	return false;
 }
 
+// The pass's pose nearest in view if it overlaps pose i, else, with mstep.overlap_most_overlapping,
+// the members that share at least overlap_min_length with it, the most overlapping first.
+std::vector<uint32_t> MStep::overlapPartners(uint32_t i, uint32_t nearest, const std::vector<uint32_t>& members,
+											 const Scans& scans, const Poses& poses) const
+{
+	const double need = cfg_.mstep.overlapMinLength;
+	if (!retry({nearest, i}, se2::relative(poses[nearest], poses[i]))) return {};  // failed, nothing changed since
+	if (overlapLength(nearest, i, scans, poses) >= need) return {nearest};
+	if (!cfg_.mstep.overlapMostOverlapping) return {};
+	std::vector<std::pair<double, uint32_t>> ranked;
+	for (uint32_t j : members)
+	{
+		if (j == nearest || scans[j].empty() || !retry({j, i}, se2::relative(poses[j], poses[i]))) continue;
+		const double len = overlapLength(j, i, scans, poses);
+		if (len >= need) ranked.emplace_back(-len, j);
+	}
+	std::sort(ranked.begin(), ranked.end());
+	std::vector<uint32_t> out;
+	for (const auto& r : ranked) out.push_back(r.second);
+	return out;
+}
+
 // Overlap edges: for each pose, one edge into every earlier pass through its place.
 std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep)
 {
@@ -317,20 +339,23 @@ std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, 
 		for (const auto& p : passes)
 		{
 			if (hasEdgeNear(i, p.lo, p.hi)) continue;
-			const EdgeKey key{p.nearest, i};
-			const TPose2D rel = se2::relative(poses[p.nearest], poses[i]);
-			if (!retry(key, rel)) continue;
-			if (overlapLength(p.nearest, i, scans, poses) < cfg_.mstep.overlapMinLength) continue;
-			Constraint c;
-			if (registerPair(p.nearest, i, EdgeKind::Overlap, scans, rel, c, rep))
+			for (uint32_t from : overlapPartners(i, p.nearest, p.members, scans, poses))
 			{
-				constraints_[key] = std::move(c);
-				failed_.erase(key);
-				fresh.push_back(key);
-				++rep.added;
-			}
-			else
+				const EdgeKey key{from, i};
+				const TPose2D rel = se2::relative(poses[from], poses[i]);
+				Constraint c;
+				// another pose of the pass: the nearest did not see the place, so no slide along a corridor
+				if (registerPair(from, i, EdgeKind::Overlap, scans, rel, c, rep) &&
+					(from == p.nearest || c.degeneracy >= cfg_.matcher.degenerateRatio))
+				{
+					constraints_[key] = std::move(c);
+					failed_.erase(key);
+					fresh.push_back(key);
+					++rep.added;
+					break;
+				}
 				failed_[key] = {rel, sigs_[key.first], sigs_[key.second]};
+			}
 		}
 	}
 	return fresh;

@@ -231,6 +231,7 @@ struct MStepOptions
 	double recheckGateFactor = 1.5;  //!< gates x this when testing whether an edge's correspondences changed
 	double minChangedShare = 0.0;  //!< converged when the share of changed constraints is at most this
 	double passHeadingWeight = 1.0;  //!< an earlier pass's candidate pose: nearest in position + this x heading difference [m/rad]
+	bool overlapMostOverlapping = true;  //!< a pass whose nearest-in-view pose shares too little: its most overlapping poses instead (non-degenerate registrations only)
 	bool reconsiderRejected = true;  //!< edges rejected by the chi2 test return to the optimiser at the next M-step
 	int reconsiderLimit = 2;  //!< ... until a pair has been rejected this many times with the same correspondences
 	int reconsiderFreeSteps = 2;  //!< rejections in the first this many M-steps do not count towards reconsider_limit
@@ -284,6 +285,7 @@ struct MStepOptions
 		v("recheck_gate_factor", recheckGateFactor, "Gates are widened by this when testing whether an edge's correspondences changed (Eq. 24-25)");
 		v("min_changed_share", minChangedShare, "EM has converged when at most this share of constraints changed");
 		v("pass_heading_weight", passHeadingWeight, "Overlap and loop search: the candidate pose of an earlier pass is the one nearest in position + this x heading difference (a scan sees what lies ahead of it; 0: position only) [m/rad]");
+		v("overlap_most_overlapping", overlapMostOverlapping, "Beyond the paper: when the earlier pass's pose nearest in view (pass_heading_weight) shares less than overlap_min_length of corresponding static vectors with the pose (a pass walked the other way: the nearest pose faces away from what the pose sees; a crossing), the pass's other poses that share that much are registered, the most overlapping first, and the first registration whose translation is not degenerate (matcher.degenerate_ratio: no corridor slide) is the overlap edge; false: no overlap edge to that pass");
 		v("reconsider_rejected", reconsiderRejected, "Edges the pose graph rejected by their chi2 return to the optimiser at every M-step (switchable-constraint behaviour: an edge rejected against a wrong estimate can come back once the estimate has moved); false: a rejection stands until its scans' static vectors change");
 		v("reconsider_limit", reconsiderLimit, "With reconsider_rejected: a pair the chi2 test rejected this many times with the same vector correspondences stays out until a re-registration changes them (Eq. 24-25; stops edges flipping in and out between EM iterations); 0: no limit");
 		v("reconsider_free_steps", reconsiderFreeSteps, "Rejections in the first this many M-steps (while the estimate still moves from the raw chain and the first loop closures) do not count towards reconsider_limit");

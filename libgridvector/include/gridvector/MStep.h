@@ -89,6 +89,12 @@ class MStep
 	void addSequential(const Scans& scans, const Poses& poses, MStepReport& rep);
 	/** Returns the keys of the edges it added. */
 	std::vector<EdgeKey> addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep);
+	/** The poses of an earlier pass an overlap edge of pose i is tried against, in order until one
+	 * registers: `nearest` (in view) when it shares mstep.overlap_min_length of corresponding static
+	 * vectors with i, else (mstep.overlap_most_overlapping) the members sharing that much, the most
+	 * first; none when the nearest's registration failed and nothing changed since. */
+	std::vector<uint32_t> overlapPartners(uint32_t i, uint32_t nearest, const std::vector<uint32_t>& members,
+										  const Scans& scans, const Poses& poses) const;
 	/** Loop search (LoopSearch) between poses near each other with no edge between
 	 * their passes yet (or only weak ones, mstep.loop_search_weak_links); returns the keys
 	 * of the edges it added or replaced (`added`: the overlap edges added in this step). */

@@ -343,3 +343,19 @@ TEST(DoorDetector, ZeroLengthVectorsChangeNothing)
 	for (size_t k = 4; k < v.size(); ++k)
 		for (const auto& [u0, u1] : det.stateSpans(got, v[k])) EXPECT_TRUE(u0 == 0 && u1 == 0) << k;
 }
+
+TEST(DoorDetector, StatesOnOneStraightLineAreNoDoor)
+{
+	// a line seen dynamic (grazing rays, a moved object) cut where a short static vector ends on
+	// it: two door-length dynamic pieces from that end, at 0 and 180 deg, make corners with equal
+	// leaves, but no leaf turned about a hinge (a leaf opened flat onto its own wall is that wall)
+	std::vector<GridVector> v = {vec(3, 0, 3, -0.5, S), vec(3, 0, 3.8, 0, D), vec(3, 0, 2.2, 0, D)};
+	DoorDetector det;
+	EXPECT_TRUE(det.detect(v).empty());
+	// a state between them makes it a door
+	v.push_back(vec(3.02, 0.02, 3.58, 0.58, D));
+	const auto doors = det.detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_NEAR(doors[0].hinge.x, 3.0, 0.05);
+	EXPECT_EQ(doors[0].angles.size(), 3u);
+}

@@ -269,6 +269,13 @@ std::vector<Door> DoorDetector::detectIn(const std::vector<GridVector>& v) const
 		// Sec. 5.4: the door candidate is a dynamic vector; static states only join one
 		const bool anyDynamic = std::any_of(group.begin(), group.end(), [&](size_t k) { return cs[k].dynamicLeaf; });
 		if (angles.size() < 2 || !anyDynamic) continue;
+		// Fig. 10: the leaf turns about the hinge; states on one straight line through the vertex
+		// (either way, none between) are a line seen dynamic cut at a crossing vector, no door
+		const bool straight = std::all_of(angles.begin(), angles.end(), [&](double a) {
+			const double turn = std::abs(mrpt::math::wrapToPi(a - angles[0]));
+			return std::min(turn, M_PI - turn) < minDiff;
+		});
+		if (straight) continue;
 		// a hinge inside a wall: the wall was merged across the doorway, so the door was seen closed
 		const bool allTee = std::all_of(group.begin(), group.end(), [&](size_t k) { return cs[k].tee; });
 		if (allTee && std::none_of(group.begin(), group.end(), [&](size_t k) { return cs[k].alongWall; })) continue;

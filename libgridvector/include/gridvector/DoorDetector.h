@@ -64,7 +64,9 @@ struct Door
  * served as the corners' wall, the door's wall is the long static vector
  * through the hinge and the short one, in the swept arc, is a state. The arc
  * runs from the wall's line (the closed leaf, whether seen as a state or not)
- * through the states. */
+ * through the states. States on one straight line through the vertex (either
+ * way, none between) are no door: no leaf turned about a hinge there (a line
+ * seen dynamic, cut where a static vector ends on it). */
 class DoorDetector
 {
    public:

@@ -205,6 +205,26 @@ TEST(DoorDetector, ADynamicPieceAndItsCollinearStaticPieceAreOneLeaf)
 	EXPECT_TRUE(DoorDetector().detect(v).empty());
 }
 
+TEST(DoorDetector, LeafChainGapAndTurnAreTheirOwnKeys)
+{
+	// as above, the static piece 0.05 m past the dynamic one and turned by 6 deg: one leaf with the
+	// defaults (0.1 m, 10 deg), none when either key is tighter; the T-corner and state keys
+	// (max_tee_offset, min_state_diff_deg) no longer decide it
+	const std::vector<GridVector> v = {vec(0, 0, 3, 0, S), vec(3.9, 0, 6, 0, S), vec(3, 0, 3.9, 0, D),
+									   polarVec(3, 0, 0, 0.3, -70, D), polarVec(3, 0, 0.35, 0.55, -76, S)};
+	auto doorsWith = [&](double gap, double turnDeg, double tee, double stateDiff) {
+		DoorOptions o;
+		o.leafChainGap = gap, o.leafChainMaxTurnDeg = turnDeg, o.maxTeeOffset = tee, o.minStateDiffDeg = stateDiff;
+		return DoorDetector(o).detect(v).size();
+	};
+	EXPECT_EQ(DoorOptions().leafChainGap, 0.10);
+	EXPECT_EQ(DoorOptions().leafChainMaxTurnDeg, 10.0);
+	EXPECT_EQ(doorsWith(0.10, 10, 0.10, 10), 1u);
+	EXPECT_EQ(doorsWith(0.03, 10, 0.10, 10), 0u);
+	EXPECT_EQ(doorsWith(0.10, 4, 0.10, 10), 0u);
+	EXPECT_EQ(doorsWith(0.10, 10, 0.03, 4), 1u);
+}
+
 TEST(DoorDetector, AStaticLeafActingAsTheWallIsAStateAndTheLongWallIsTheDoorsWall)
 {
 	// a wall merged across the doorway runs through the hinge (0, 0), the closed leaf inside

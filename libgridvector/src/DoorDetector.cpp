@@ -189,7 +189,7 @@ bool DoorDetector::sameDoor(const Corner& a, const Corner& b) const
 std::vector<std::pair<size_t, size_t>> DoorDetector::leafChains(std::vector<GridVector>& v) const
 {
 	const size_t n = v.size();
-	const double maxTurn = opts_.minStateDiffDeg * M_PI / 180, gap = opts_.maxTeeOffset;
+	const double maxTurn = opts_.leafChainMaxTurnDeg * M_PI / 180, gap = opts_.leafChainGap;
 	std::vector<std::pair<size_t, size_t>> parts;
 	for (size_t a = 0; a < n; ++a)
 	{

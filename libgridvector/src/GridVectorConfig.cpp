@@ -229,6 +229,8 @@ void GridVectorConfig::validate() const
 	require(doors.minDoorLength > 0 && doors.maxDoorLength >= doors.minDoorLength,
 			"doors: need 0 < min_door_length <= max_door_length");
 	require(doors.minSweepDeg >= 0 && doors.minSweepDeg <= 360, "doors.min_sweep_deg must be in [0,360]");
+	require(doors.leafChainGap >= 0 && doors.leafChainMaxTurnDeg >= 0 && doors.leafChainMaxTurnDeg <= 180,
+			"doors: need leaf_chain_gap >= 0 and leaf_chain_max_turn_deg in [0,180]");
 }
 
 namespace

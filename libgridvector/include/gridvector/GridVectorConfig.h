@@ -359,6 +359,8 @@ struct DoorOptions
 	double minStateDiffDeg = 10.0;  //!< two door states differ by at least this [deg]
 	double maxTeeOffset = 0.10;  //!< a candidate's end this close to a wall's interior is a T corner [m]
 	double minSweepDeg = 90.0;  //!< a leaf's swept arc is widened to at least this from its closed state [deg]
+	double leafChainGap = 0.10;  //!< a dynamic and a static piece of one leaf meet end to end within this [m]
+	double leafChainMaxTurnDeg = 10.0;  //!< ... and turn by at most this at the joint [deg]
 
 	template <class V>
 	void visit(V&& v)
@@ -371,6 +373,8 @@ struct DoorOptions
 		v("max_door_length", maxDoorLength, "Longest door leaf [m]");
 		v("min_state_diff_deg", minStateDiffDeg, "Two door states (leaf angles) differ by at least this [deg]");
 		v("min_sweep_deg", minSweepDeg, "Beyond the paper (Sec. 5.4 gives no door model): the arc a door leaf sweeps, where other vectors from the hinge count as its states, is at least this wide from the state nearest the wall (a hinged door opens to a right angle) even when the states seen span less [deg]");
+		v("leaf_chain_gap", leafChainGap, "Beyond the paper: a short dynamic vector and a static vector no longer than max_door_length whose ends meet within this are one door leaf cut by the E-step (Fig. 4), its never-seen-through-again part static [m]");
+		v("leaf_chain_max_turn_deg", leafChainMaxTurnDeg, "Beyond the paper: the two pieces of such a leaf turn by at most this at their joint (collinear) [deg]");
 		v("max_tee_offset", maxTeeOffset, "A door candidate's end this close to the interior of a static vector longer than max_door_length makes a T corner (a wall merged across the doorway) [m]; 0: end corners only");
 	}
 };

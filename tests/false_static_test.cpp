@@ -93,7 +93,7 @@ TEST(FalseStatic, OneStateDoorOverlappingAPersonIsStillAGhostOfTheSecondFigure)
 
 TEST(FalseStatic, DoorPassesAndLeafAngles)
 {
-	const auto obs = eval::doorObservations(truth(), {}, 2.0);
+	const auto obs = eval::doorObservations(truth(), {});
 	ASSERT_EQ(obs.size(), 2u);
 	EXPECT_TRUE(obs[0].seenSwinging);
 	EXPECT_FALSE(obs[1].seenSwinging);
@@ -108,6 +108,11 @@ TEST(FalseStatic, DoorPassesAndLeafAngles)
 	EXPECT_LT(obs[1].passes[1].maxDeg, 2);
 	ASSERT_EQ(obs[1].swingTimes.size(), 2u);  // swung while the robot was elsewhere
 	EXPECT_EQ(obs[0].swingTimes.size(), 1u);
+	// MapEvalOptions::doorPassGap (default 2 s): 10.4 -> 30 s is one pass with a 20 s gap allowed
+	eval::MapEvalOptions wide;
+	EXPECT_EQ(eval::MapEvalOptions().doorPassGap, 2.0);
+	wide.doorPassGap = 20;
+	EXPECT_EQ(eval::doorObservations(truth(), wide)[0].passes.size(), 1u);
 }
 
 TEST(FalseStatic, TextAndJsonNameEveryCategory)

@@ -62,6 +62,27 @@ TEST(GridVectorConfig, OutOfRangeValueIsRejected)
 	EXPECT_THROW(c.loadFromConfigFile(ini), std::invalid_argument);
 }
 
+// A key set from code to inf or NaN (the .ini reader refuses both) is refused by validate(),
+// naming the key: map.hit_band = inf passed "> 0" and made every wipe triangle degenerate.
+TEST(GridVectorConfig, NonFiniteValueSetFromCodeIsRejected)
+{
+	GridVectorConfig c;
+	c.map.hitBand = std::numeric_limits<double>::infinity();
+	try
+	{
+		c.validate();
+		FAIL() << "inf accepted";
+	}
+	catch (const std::invalid_argument& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("map.hit_band"), std::string::npos) << e.what();
+	}
+	GridVectorConfig d;
+	d.doors.leafChainGap = std::nan("");
+	EXPECT_THROW(d.validate(), std::invalid_argument);
+	EXPECT_NO_THROW(GridVectorConfig().validate());
+}
+
 TEST(GridVectorConfig, DumpRoundTripsThroughIni)
 {
 	GridVectorConfig a;

@@ -162,6 +162,14 @@ void GridVectorConfig::validate() const
 	auto require = [](bool ok, const char* what) {
 		if (!ok) throw std::invalid_argument(std::string("invalid parameter: ") + what);
 	};
+	// every floating-point key finite: the .ini reader refuses nan/inf, code that sets a key may not
+	const_cast<GridVectorConfig&>(*this).visitGroups([&](const char* group, auto& g) {
+		g.visit([&](const char* key, auto& field, const char*) {
+			if constexpr (std::is_floating_point_v<std::decay_t<decltype(field)>>)
+				if (!std::isfinite(field))
+					throw std::invalid_argument(std::string("invalid parameter: ") + group + "." + key + " must be finite");
+		});
+	});
 	require(extraction.splitThreshold > 0, "extraction.split_threshold must be > 0");
 	require(extraction.mergeThreshold > 0, "extraction.merge_threshold must be > 0");
 	require(extraction.minPoints >= 2, "extraction.min_points must be >= 2");

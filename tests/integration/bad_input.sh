@@ -132,6 +132,8 @@ printf '0 0 1 1 0.5 \001\377\033[2Jdyn\n' > binlabel.txt
 expect 1 "binlabel.txt:1: label is '\x01\xff\x1b[2Jdyn' (expected static or dynamic)" - -- "$B/gv-eval" map binlabel.txt sim
 echo "0 0 1 1 0.5" > okvec.txt; cp -r sim simbad && printf '\033]0;%s\a\n' "$(printf 'x%.0s' {1..60})" >> simbad/truth_dynamic.txt
 expect 1 "truth_dynamic.txt:$(wc -l < simbad/truth_dynamic.txt): unknown record '\x1b]0;$(printf 'x%.0s' {1..36})...'" - -- "$B/gv-eval" map okvec.txt simbad
+expect 2 "--pass-gap must be > 0" - -- "$B/gv-eval" map okvec.txt sim --breakdown --pass-gap 0
+expect 2 "--pass-gap needs a number, got 'nan'" - -- "$B/gv-eval" map okvec.txt sim --breakdown --pass-gap nan
 expect 1 "garbage.txt:1: ground-truth lines must be 't x y theta'" g9/trajectory.txt -- "$B/gv-graphslam" --2d -i "$INI" -r room.rawlog -g garbage.txt --disable-visuals --output-dir g9
 # .gvmap files
 expect 1 "trunc.gvmap: not a valid mrpt::maps::CGridVectorMap file" m10.gvmap -- "$B/gv-map-info" trunc.gvmap --save m10.gvmap

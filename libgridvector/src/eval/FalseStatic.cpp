@@ -23,8 +23,8 @@ std::string f(double v, const char* fmt = "%.2f")
 constexpr double kDeg = 180.0 / M_PI;
 }  // namespace
 
-// Passes: a door's leaf hit runs in time order, split where no run came for passGap seconds.
-std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const MapEvalOptions& opt, double passGap)
+// Passes: a door's leaf hit runs in time order, split where no run came for opt.doorPassGap seconds.
+std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const MapEvalOptions& opt)
 {
 	const std::vector<bool> seen = doorsSeenSwinging(truth, opt);
 	std::vector<DoorObservation> out(truth.doors.size());
@@ -43,7 +43,7 @@ std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const Map
 		std::stable_sort(runs[i].begin(), runs[i].end(), [](const auto* a, const auto* b) { return a->t < b->t; });
 		for (const sim::HitRun* h : runs[i])
 		{
-			if (o.passes.empty() || h->t - o.passes.back().t1 > passGap) o.passes.push_back({h->t, h->t, 0, false, 0, 0});
+			if (o.passes.empty() || h->t - o.passes.back().t1 > opt.doorPassGap) o.passes.push_back({h->t, h->t, 0, false, 0, 0});
 			DoorPass& p = o.passes.back();
 			p.t1 = h->t;
 			p.runs++;
@@ -58,10 +58,10 @@ std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const Map
 }
 
 FalseStaticBreakdown falseStaticBreakdown(const std::vector<MapVector>& vectors, const sim::Truth& truth,
-										  const MapEvalOptions& opt, double passGap)
+										  const MapEvalOptions& opt)
 {
 	FalseStaticBreakdown b;
-	b.doors = doorObservations(truth, opt, passGap);
+	b.doors = doorObservations(truth, opt);
 	std::vector<std::vector<Segment>> doorPlaces(truth.doors.size());
 	std::vector<Segment> object, people;
 	for (size_t i = 0; i < truth.doors.size(); ++i) doorPlaces[i] = doorSweep(truth.doors[i]);

@@ -12,7 +12,7 @@
 namespace gridvector::eval
 {
 /** One pass of the laser by a door: a run of its leaf hits (truth_dynamic.txt)
- * with no gap longer than passGap; the leaf angles seen, relative to closed. */
+ * with no gap longer than MapEvalOptions::doorPassGap; the leaf angles seen, relative to closed. */
 struct DoorPass
 {
 	double t0 = 0, t1 = 0;  //!< first and last hit run [s]
@@ -51,11 +51,10 @@ struct FalseStaticBreakdown
  * person (hits); none within reach: "other". The door categories, object and
  * people sum to MapMetrics::ghostLength (same places, same tolerances). */
 FalseStaticBreakdown falseStaticBreakdown(const std::vector<MapVector>& vectors, const sim::Truth& truth,
-										  const MapEvalOptions& opt = {}, double passGap = 2.0);
+										  const MapEvalOptions& opt = {});
 
-/** Per door: its passes (leaf hits no more than passGap apart) and leaf angles. */
-std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const MapEvalOptions& opt = {},
-											  double passGap = 2.0);
+/** Per door: its passes (leaf hits no more than doorPassGap apart) and leaf angles. */
+std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const MapEvalOptions& opt = {});
 
 std::string formatText(const FalseStaticBreakdown& b);
 std::string formatJson(const FalseStaticBreakdown& b);  //!< the totals, and per door false static and passes

@@ -38,6 +38,7 @@ struct MapEvalOptions
 	double doorMinStateDiffDeg = 10.0;
 	double doorMinRunLength = 0.30;  //!< [m]
 	double sampleStep = 0.01;  //!< length integrals are sampled this finely [m]
+	double doorPassGap = 2.0;  //!< --breakdown: a door's leaf hits further apart in time than this are two passes [s]
 };
 
 struct MapMetrics

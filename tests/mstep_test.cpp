@@ -220,6 +220,18 @@ std::vector<std::vector<MatchSegment>> aheadScans(const std::vector<TPose2D>& tr
 	}
 	return scans;
 }
+
+// The overlap search alone (no loop search): the constraints after `runs` M-steps from odometry.
+std::map<EdgeKey, Constraint> overlapOnlyConstraints(GridVectorConfig cfg, const std::vector<TPose2D>& odo,
+													 const std::vector<std::vector<MatchSegment>>& scans, int runs)
+{
+	cfg.mstep.loopSearch = false;
+	MStep m(cfg);
+	m.setOdometry(odo);
+	std::vector<TPose2D> poses;
+	for (int r = 0; r < runs; ++r) m.run(scans, poses);
+	return m.constraints();
+}
 }  // namespace
 
 // mstep.pass_heading_weight: on its first lap the robot turns round at (8, 1) and back;
@@ -241,13 +253,8 @@ TEST(MStep, OverlapEdgeComesFromAPoseFacingTheSameWay)
 	auto facingEdge = [&](double weight) {
 		GridVectorConfig cfg;
 		cfg.mstep.passHeadingWeight = weight;
-		cfg.mstep.loopSearch = false;  // the overlap search alone
-		MStep m(cfg);
-		m.setOdometry(odo);
-		std::vector<TPose2D> poses;
-		m.run(scans, poses);
 		bool facing = false;
-		for (const auto& [key, c] : m.constraints())
+		for (const auto& [key, c] : overlapOnlyConstraints(cfg, odo, scans, 1))
 			if (c.to == second && c.kind == EdgeKind::Overlap && c.from >= turn - 10 && c.from <= turn + 12)
 				facing = facing || std::abs(mrpt::math::wrapToPi(truth[c.from].phi - truth[second].phi)) < M_PI / 4;
 		return facing;
@@ -273,15 +280,9 @@ TEST(MStep, APassWalkedTheOtherWayIsRegisteredWithItsMostOverlappingPose)
 	auto crossEdges = [&](bool on, double& worst) {
 		GridVectorConfig cfg;
 		cfg.mstep.overlapMostOverlapping = on;
-		cfg.mstep.loopSearch = false;  // the overlap search alone
-		MStep m(cfg);
-		m.setOdometry(odo);
-		std::vector<TPose2D> poses;
-		m.run(scans, poses);
-		m.run(scans, poses);
 		size_t n = 0;
 		worst = 0;
-		for (const auto& [key, c] : m.constraints())
+		for (const auto& [key, c] : overlapOnlyConstraints(cfg, odo, scans, 2))
 			if (c.kind == EdgeKind::Overlap && c.from < lap && c.to >= lap && truth[c.to].x > 14.9 &&
 				truth[c.to].y > 1.5 && truth[c.to].y < 4)  // coming down to the corner
 			{

@@ -335,11 +335,19 @@ void DoorDetector::wallAsState(const std::vector<GridVector>& v, Door& d, double
 	if (d.wall == shortWall) return;
 	const bool startAtHinge = dist(w.start(), d.hinge) <= dist(w.end(), d.hinge);
 	const TPoint2D vertex = startAtHinge ? w.start() : w.end(), tip = startAtHinge ? w.end() : w.start();
-	const double a = std::atan2(tip.y - d.hinge.y, tip.x - d.hinge.x), minDiff = opts_.minStateDiffDeg * M_PI / 180;
+	const double a = std::atan2(tip.y - d.hinge.y, tip.x - d.hinge.x);
 	if (dist(vertex, d.hinge) > opts_.maxVertexDistance || !inSweep(d, v[d.wall], a)) return;
-	d.leaves.push_back(shortWall);
-	taken[shortWall] = true;
-	if (dist(tip, d.hinge) >= d.length - opts_.maxLengthDiff &&
+	addLeaf(d, shortWall, a, dist(tip, d.hinge), taken);
+}
+
+// Vector k from the hinge, its tip at angle a and distance r, is a leaf of door d; a whole leaf
+// at an angle min_state_diff_deg from every state is a state too.
+void DoorDetector::addLeaf(Door& d, size_t k, double a, double r, std::vector<bool>& taken) const
+{
+	d.leaves.push_back(k);
+	taken[k] = true;
+	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
+	if (r >= d.length - opts_.maxLengthDiff &&
 		std::all_of(d.angles.begin(), d.angles.end(), [&](double b) { return std::abs(mrpt::math::wrapToPi(a - b)) >= minDiff; }))
 	{
 		d.angles.push_back(a);
@@ -396,7 +404,6 @@ bool DoorDetector::inSweep(const Door& d, const GridVector& wall, double angle) 
 // or a part of one (a leaf seen in part: occluded, or cut by the split of Fig. 4).
 void DoorDetector::joinStates(const std::vector<GridVector>& v, Door& d, double reach, std::vector<bool>& taken) const
 {
-	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
 	for (size_t k = 0; k < v.size(); ++k)
 	{
 		if (taken[k] || v[k].length() > reach) continue;
@@ -407,16 +414,7 @@ void DoorDetector::joinStates(const std::vector<GridVector>& v, Door& d, double 
 			if (dist(vertex, d.hinge) > opts_.maxVertexDistance || r > reach || r <= opts_.maxVertexDistance) continue;
 			const double a = std::atan2(tip.y - d.hinge.y, tip.x - d.hinge.x);
 			if (!inSweep(d, v[d.wall], a)) continue;
-			d.leaves.push_back(k);
-			taken[k] = true;
-			const bool wholeLeaf = r >= d.length - opts_.maxLengthDiff;
-			if (wholeLeaf && std::all_of(d.angles.begin(), d.angles.end(), [&](double b) {
-					return std::abs(mrpt::math::wrapToPi(a - b)) >= minDiff;
-				}))
-			{
-				d.angles.push_back(a);
-				std::sort(d.angles.begin(), d.angles.end());
-			}
+			addLeaf(d, k, a, r, taken);
 			break;
 		}
 	}

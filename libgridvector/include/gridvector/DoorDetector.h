@@ -90,6 +90,7 @@ class DoorDetector
 	void wallAsState(const std::vector<GridVector>& v, Door& d, double reach, std::vector<bool>& taken) const;
 	bool inSweep(const Door& d, const GridVector& wall, double angle) const;
 	void joinStates(const std::vector<GridVector>& v, Door& d, double reach, std::vector<bool>& taken) const;
+	void addLeaf(Door& d, size_t k, double a, double r, std::vector<bool>& taken) const;
 	bool collinearBeyond(const GridVector& wall, const mrpt::math::TPoint2D& vertex,
 						 const mrpt::math::TPoint2D& tip) const;
 	DoorOptions opts_;

@@ -10,10 +10,12 @@ using mrpt::math::TPoint2D;
 
 namespace
 {
-// A 3 m vector (30 columns) whose centre-row cells have occupancy `occ[c]`, well observed.
-GridVector withProfile(const std::vector<double>& occ)
+// A vector of occ.size() columns (3 m at the default 0.1 m) whose centre-row cells have occupancy `occ[c]`, well observed.
+GridVector withProfile(const std::vector<double>& occ, double resolution = 0.1)
 {
-	GridVector v(TPoint2D(1, 1), TPoint2D(1 + 0.1 * occ.size(), 1), GridOptions{});
+	GridOptions g;
+	g.resolution = resolution;
+	GridVector v(TPoint2D(1, 1), TPoint2D(1 + resolution * occ.size(), 1), g);
 	for (int c = 0; c < v.cols(); ++c)
 	{
 		GridCell& cell = v.cell(v.halfWidth(), c);
@@ -113,6 +115,24 @@ TEST(EStep, UnobservedColumnsStayStaticAndHysteresisHolds)
 	EXPECT_EQ(e.split(w, {ProfilePiece{0, 10, true}})[0].state, VectorState::Dynamic);
 }
 
+// Sec. 3.1's counting model starts every cell at n_occupy = 1/2, n_visit = 1: min_visits compares
+// n_visit with that prior included, so min_visits 3 asks for two observations beyond the prior.
+TEST(EStep, MinVisitsCountsThePriorsVisit)
+{
+	EStepOptions o;
+	o.minVisits = 3;
+	const EStep e(o);
+	GridVector v(TPoint2D(0, 0), TPoint2D(0.3, 0), GridOptions{});
+	ASSERT_EQ(v.cols(), 3);
+	ASSERT_EQ(v.cell(v.halfWidth(), 0).n_visit, 1.f);  // the prior
+	v.cell(v.halfWidth(), 1).n_visit += 1;  // one beam through: n_visit 2
+	v.cell(v.halfWidth(), 2).n_visit += 2;  // two beams through: n_visit 3
+	const std::vector<double> prof = e.profile(v);
+	EXPECT_EQ(prof[0], 1.0);  // the prior alone does not count: static
+	EXPECT_EQ(prof[1], 1.0);  // prior + one observation: below min_visits, still static
+	EXPECT_NEAR(prof[2], 0.5 / 3, 1e-6);  // prior + two observations count: 1/2 over 3
+}
+
 TEST(EStep, RunRecordsChildrenPerParent)
 {
 	std::vector<GridVector> parents = {withProfile(runs({{10, 0.9}})), withProfile(runs({{10, 0.9}, {10, 0.1}})),
@@ -129,6 +149,46 @@ TEST(EStep, RunRecordsChildrenPerParent)
 	EXPECT_NEAR(r.staticLength, 2.0, 1e-9);
 	EXPECT_NEAR(r.dynamicLength, 2.0, 1e-9);
 	EXPECT_EQ(r.children[r.childrenOf[2][0]].id, EStep::childId(9, 0));
+}
+
+// Eq. 25: what EmSlam counts as a changed M_chd (EmIteration::changedVectors, the convergence test).
+TEST(EStep, ChangedChildrenSeesEveryChangeOfMchd)
+{
+	// a 4 mm grid: a split point moving by one column moves it by less than a centimetre
+	GridOptions g;
+	g.resolution = 0.004;
+	const EStep e({}, g);
+	const auto result = [&](std::vector<GridVector> parents) {
+		for (size_t k = 0; k < parents.size(); ++k) parents[k].id = k + 1;
+		return e.run(parents);
+	};
+	const GridVector wall = withProfile(runs({{200, 0.9}}), 0.004);
+	const EStepResult before = result({withProfile(runs({{100, 0.9}, {100, 0.1}}), 0.004), wall});
+	ASSERT_EQ(before.childrenOf[0].size(), 2u);
+	EXPECT_EQ(EStep::changedChildren(before, &before), std::vector<bool>({false, false}));
+	// the split point one column (4 mm) on: both children 4 mm longer / shorter, same ids and states
+	const EStepResult moved = result({withProfile(runs({{101, 0.9}, {99, 0.1}}), 0.004), wall});
+	EXPECT_EQ(EStep::changedChildren(moved, &before), std::vector<bool>({true, false}));
+	// the two states swap places (equal lengths, same ids)
+	const EStepResult swapped = result({withProfile(runs({{100, 0.1}, {100, 0.9}}), 0.004), wall});
+	EXPECT_EQ(EStep::changedChildren(swapped, &before), std::vector<bool>({true, false}));
+	// a whole vector flips state: same id, same length
+	const EStepResult flipped = result({withProfile(runs({{100, 0.9}, {100, 0.1}}), 0.004),
+										withProfile(runs({{200, 0.1}}), 0.004)});
+	EXPECT_EQ(EStep::changedChildren(flipped, &before), std::vector<bool>({false, true}));
+	// one child more
+	const EStepResult three = result({withProfile(runs({{100, 0.9}, {100, 0.1}}), 0.004),
+									  withProfile(runs({{80, 0.9}, {80, 0.1}, {40, 0.9}}), 0.004)});
+	EXPECT_EQ(EStep::changedChildren(three, &before), std::vector<bool>({false, true}));
+	// the same vectors carried along a moved trajectory: only float noise in their lengths, no change
+	const mrpt::math::TPose2D pose(3.7, -12.1, 0.83);
+	const EStepResult carried = result({withProfile(runs({{100, 0.9}, {100, 0.1}}), 0.004).compose(pose),
+										wall.compose(pose)});
+	ASSERT_NEAR(carried.children[0].length(), before.children[0].length(), 1e-12);
+	EXPECT_EQ(EStep::changedChildren(carried, &before), std::vector<bool>({false, false}));
+	// before the first E-step every vector is its own single static child
+	EXPECT_EQ(EStep::changedChildren(before, nullptr), std::vector<bool>({true, false}));
+	EXPECT_EQ(EStep::changedChildren(flipped, nullptr), std::vector<bool>({true, true}));
 }
 
 TEST(EStep, FinalSplitDemotesPlacesOccupiedPartOfTheTime)

@@ -41,9 +41,9 @@ std::vector<ProfilePiece> EStep::pieces(const std::vector<double>& profile, doub
 }
 
 // Fig. 4 profile: per column the largest probability across the width among the
-// cells with at least min_visits observations (robust to the wall falling in a
-// neighbouring row; a column nobody has looked through again stays static), or
-// the mean across the width (GridVector::occupancyProfile).
+// cells with n_visit >= min_visits (the prior's n_visit = 1 of Sec. 3.1 included;
+// robust to the wall falling in a neighbouring row; a column nobody has looked
+// through again stays static), or the mean across the width (GridVector::occupancyProfile).
 std::vector<double> EStep::profile(const GridVector& v) const
 {
 	if (!opts_.usePeakRow) return v.occupancyProfile();
@@ -159,6 +159,30 @@ EStepResult EStep::run(const std::vector<GridVector>& parents, const EStepResult
 		}
 	}
 	return r;
+}
+
+// Eq. 25: M_chd of each parent against the last E-step's (ids, Eq. 14 states, Fig. 4 column ranges).
+std::vector<bool> EStep::changedChildren(const EStepResult& now, const EStepResult* before)
+{
+	std::vector<bool> out(now.childrenOf.size(), false);
+	const auto sameChild = [&](uint32_t a, uint32_t b) {
+		const ProfilePiece &p = now.pieces[a], &q = before->pieces[b];
+		return now.children[a].id == before->children[b].id && now.children[a].state == before->children[b].state &&
+			   p.first == q.first && p.last == q.last;
+	};
+	const std::vector<uint32_t> none;
+	for (size_t k = 0; k < now.childrenOf.size(); ++k)
+	{
+		const std::vector<uint32_t>& kids = now.childrenOf[k];
+		if (!before)  // before the first E-step: one static child, the vector itself
+		{
+			out[k] = kids.size() != 1 || now.children[kids[0]].state != VectorState::Static;
+			continue;
+		}
+		const std::vector<uint32_t>& old = k < before->childrenOf.size() ? before->childrenOf[k] : none;
+		out[k] = kids.size() != old.size() || !std::equal(kids.begin(), kids.end(), old.begin(), sameChild);
+	}
+	return out;
 }
 
 // Eq. 14 on the converged map: static children must be occupied in nearly every observation,

@@ -3,8 +3,8 @@
 #include <gridvector/SE2.h>
 
 #include <chrono>
+#include <algorithm>
 #include <stdexcept>
-#include <tuple>
 
 namespace gridvector
 {
@@ -31,21 +31,6 @@ std::vector<std::vector<MatchSegment>> initialSegments(const std::vector<LocalSc
 		}
 	return out;
 }
-
-// M_chd signature of one parent: states and column ranges of its children.
-using ChildSig = std::vector<std::tuple<uint64_t, int, double>>;
-std::vector<ChildSig> signatures(const EStepResult& r)
-{
-	std::vector<ChildSig> sig(r.childrenOf.size());
-	for (size_t k = 0; k < r.childrenOf.size(); ++k)
-		for (uint32_t c : r.childrenOf[k])
-		{
-			const GridVector& v = r.children[c];
-			sig[k].emplace_back(v.id, int(v.state), std::round(v.length() * 100));
-		}
-	return sig;
-}
-
 
 bool movedEnough(const std::vector<TPose2D>& a, const std::vector<TPose2D>& b, const EStepOptions& o)
 {
@@ -172,7 +157,6 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 	mstep.setOdometry(odometry);
 	const EStep estep(cfg_.estep, cfg_.grid);
 	auto segs = initialSegments(scans);
-	std::vector<ChildSig> prevSig;
 	EStepResult prevE;
 	std::vector<TPose2D> ePoses;  // trajectory of the last E-step
 	res.poses = odometry;
@@ -221,13 +205,8 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		const auto tc = std::chrono::steady_clock::now();
 		EStepResult e = estep.run(perScan, k > 1 ? &prevE : nullptr);
 		it.classifySeconds = since(tc);
-		auto sig = signatures(e);
-		for (size_t p = 0; p < sig.size(); ++p)
-			if (prevSig.empty() ? e.childrenOf[p].size() != 1 ||
-									  e.children[e.childrenOf[p][0]].state != VectorState::Static
-								: sig[p] != prevSig[p])
-				++it.changedVectors;
-		prevSig = std::move(sig);
+		const auto changed = EStep::changedChildren(e, k > 1 ? &prevE : nullptr);  // Eq. 25's M_chd
+		it.changedVectors = size_t(std::count(changed.begin(), changed.end(), true));
 		segs = staticSegments(e.children, res.poses);
 		it.staticVectors = e.staticCount;
 		it.dynamicVectors = e.dynamicCount;

@@ -56,6 +56,15 @@ class EStep
 	 * moved) gives each column's last state for the hysteresis. */
 	EStepResult run(const std::vector<GridVector>& parents, const EStepResult* previous = nullptr) const;
 
+	/** Eq. 25: per parent of `now`, did its children M_chd differ from those of `before` (the
+	 * last E-step, same parents in the same order)? A difference is any change in the number
+	 * of children, their ids, their states (Eq. 14) or their column ranges (Fig. 4's split
+	 * points), compared exactly on the integer columns: a split point moving by one column is
+	 * a change at any grid resolution, a parent moved rigidly with the trajectory (its length
+	 * off by float noise) is none. `before` null: against the state before the first E-step,
+	 * where every vector is its own single static child. */
+	static std::vector<bool> changedChildren(const EStepResult& now, const EStepResult* before);
+
 	/** The final classification of the converged map's children: every
 	 * static child is split again at estep.final_static_threshold (dynamic
 	 * children stay dynamic). A static place must be occupied in nearly every

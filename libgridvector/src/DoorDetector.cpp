@@ -26,11 +26,10 @@ std::pair<double, double> statesArc(const std::vector<double>& as)
 	return {as[(from + 1) % as.size()], 2 * M_PI - gap};
 }
 
-/** The closed leaf's direction: the wall's direction (either way) nearer the states' arc. */
-double closedDirection(const std::vector<double>& as, const GridVector& wall)
+/** The closed leaf's direction: the wall's direction (either way) nearer `mid`, the middle of
+ * the states' arc. */
+double closedDirection(double mid, const GridVector& wall)
 {
-	const auto [start, width] = statesArc(as);
-	const double mid = start + width / 2;
 	double closed = wall.psi();
 	if (std::abs(mrpt::math::wrapToPi(closed + M_PI - mid)) < std::abs(mrpt::math::wrapToPi(closed - mid))) closed += M_PI;
 	return closed;
@@ -363,7 +362,8 @@ void DoorDetector::closedInWall(const std::vector<GridVector>& v, Door& d) const
 {
 	const GridVector& w = v[d.wall];
 	if (w.length() <= opts_.maxDoorLength) return;
-	const double closed = closedDirection(d.angles, w), minDiff = opts_.minStateDiffDeg * M_PI / 180;
+	const auto [start, width] = statesArc(d.angles);
+	const double closed = closedDirection(start + width / 2, w), minDiff = opts_.minStateDiffDeg * M_PI / 180;
 	if (std::any_of(d.angles.begin(), d.angles.end(), [&](double a) { return std::abs(mrpt::math::wrapToPi(a - closed)) < minDiff; }))
 		return;  // the closed state is a state: stateSpans has it
 	const auto [along, off] = alongAndOff(w, d.hinge);
@@ -378,7 +378,6 @@ void DoorDetector::closedInWall(const std::vector<GridVector>& v, Door& d) const
 // The arc a door's leaf sweeps: the smallest arc holding all states (the complement of the
 // largest gap between them); when the states seen span less than doors.min_sweep_deg (a right
 // angle), the arc from the wall's line (the closed leaf) through the states, at least that wide.
-
 bool DoorDetector::inSweep(const Door& d, const GridVector& wall, double angle) const
 {
 	auto [start, width] = statesArc(d.angles);  // counter-clockwise from start
@@ -388,7 +387,7 @@ bool DoorDetector::inSweep(const Door& d, const GridVector& wall, double angle) 
 		// the closed leaf lies along the wall, in the wall's direction nearer the states (a state
 		// or not: a closed leaf inside a wall merged across the doorway is none); the arc runs
 		// from there through the states, at least minSweep wide
-		const double mid = start + width / 2, closed = closedDirection(d.angles, wall);
+		const double mid = start + width / 2, closed = closedDirection(mid, wall);
 		if (mrpt::math::wrapToPi(mid - closed) >= 0)  // states counter-clockwise from the closed leaf
 			width = std::max(minSweep, mrpt::math::wrapTo2Pi(start + width - closed)), start = closed;
 		else

@@ -249,53 +249,22 @@ std::vector<Door> DoorDetector::detectIn(const std::vector<GridVector>& v) const
 	std::vector<Door> doors;
 	std::vector<bool> used(cs.size(), false);
 	std::vector<bool> taken(v.size(), false);  // a leaf is a state of one door only
-	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
 	for (size_t i = 0; i < cs.size(); ++i)
 	{
 		if (used[i] || taken[cs[i].leaf]) continue;
 		std::vector<size_t> group{i};
 		for (size_t j = i + 1; j < cs.size(); ++j)
 			if (!used[j] && !taken[cs[j].leaf] && sameDoor(cs[i], cs[j])) group.push_back(j);
-		// distinct states: leaf directions at least min_state_diff apart
-		std::vector<double> angles;
-		for (size_t k : group)
-		{
-			const bool distinct = std::all_of(angles.begin(), angles.end(), [&](double a) {
-				return std::abs(mrpt::math::wrapToPi(a - cs[k].leafAngle)) >= minDiff;
-			});
-			if (distinct) angles.push_back(cs[k].leafAngle);
-		}
-		// Sec. 5.4: the door candidate is a dynamic vector; static states only join one
-		const bool anyDynamic = std::any_of(group.begin(), group.end(), [&](size_t k) { return cs[k].dynamicLeaf; });
-		if (angles.size() < 2 || !anyDynamic) continue;
-		// Fig. 10: the leaf turns about the hinge; states on one straight line through the vertex
-		// (either way, none between) are a line seen dynamic cut at a crossing vector, no door
-		const bool straight = std::all_of(angles.begin(), angles.end(), [&](double a) {
-			const double turn = std::abs(mrpt::math::wrapToPi(a - angles[0]));
-			return std::min(turn, M_PI - turn) < minDiff;
-		});
-		if (straight) continue;
-		// a hinge inside a wall: the wall was merged across the doorway, so the door was seen closed
-		const bool allTee = std::all_of(group.begin(), group.end(), [&](size_t k) { return cs[k].tee; });
-		if (allTee && std::none_of(group.begin(), group.end(), [&](size_t k) { return cs[k].alongWall; })) continue;
-		Door d;
-		d.wall = cs[i].wall;
-		double len = 0;
-		for (size_t k : group)
-		{
-			used[k] = true;
-			d.hinge.x += cs[k].vertex.x / group.size();
-			d.hinge.y += cs[k].vertex.y / group.size();
-			len += cs[k].leafLength;
-			d.leaves.push_back(cs[k].leaf);
-		}
-		d.length = len / group.size();
-		// leaves seen in part make the mean short: a whole leaf of the group is a state, so reach it
-		double longest = 0;
-		for (size_t k : group) longest = std::max(longest, cs[k].leafLength);
+		std::vector<double> angles = distinctStates(cs, group);
+		if (!isHinge(cs, group, angles)) continue;
+		for (size_t k : group) used[k] = true;
+		Door d = hingeOf(cs, group);
 		if (d.length < opts_.minDoorLength || d.length > opts_.maxDoorLength) continue;
 		std::sort(angles.begin(), angles.end());
 		d.angles = angles;
+		// leaves seen in part make the mean short: a whole leaf of the group is a state, so reach it
+		double longest = 0;
+		for (size_t k : group) longest = std::max(longest, cs[k].leafLength);
 		// one hinge is one door, even if several walls/leaf copies meet there
 		const auto same = std::find_if(doors.begin(), doors.end(), [&](const Door& o) {
 			return dist(o.hinge, d.hinge) <= opts_.maxVertexDistance;
@@ -312,6 +281,60 @@ std::vector<Door> DoorDetector::detectIn(const std::vector<GridVector>& v) const
 		closedInWall(v, door);
 	}
 	return doors;
+}
+
+// The distinct states of a group of corners: leaf directions at least min_state_diff apart.
+std::vector<double> DoorDetector::distinctStates(const std::vector<Corner>& cs, const std::vector<size_t>& group) const
+{
+	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
+	std::vector<double> angles;
+	for (size_t k : group)
+	{
+		const bool distinct = std::all_of(angles.begin(), angles.end(), [&](double a) {
+			return std::abs(mrpt::math::wrapToPi(a - cs[k].leafAngle)) >= minDiff;
+		});
+		if (distinct) angles.push_back(cs[k].leafAngle);
+	}
+	return angles;
+}
+
+// Sec. 5.4, Fig. 10: corners sharing a wall make a hinge when they show two states or more, one
+// of them dynamic, not all on one straight line; corners inside a wall only with a closed state.
+bool DoorDetector::isHinge(const std::vector<Corner>& cs, const std::vector<size_t>& group,
+						   const std::vector<double>& angles) const
+{
+	// Sec. 5.4: the door candidate is a dynamic vector; static states only join one
+	const bool anyDynamic = std::any_of(group.begin(), group.end(), [&](size_t k) { return cs[k].dynamicLeaf; });
+	if (angles.size() < 2 || !anyDynamic) return false;
+	// Fig. 10: the leaf turns about the hinge; states on one straight line through the vertex
+	// (either way, none between) are a line seen dynamic cut at a crossing vector, no door
+	const double minDiff = opts_.minStateDiffDeg * M_PI / 180;
+	const bool straight = std::all_of(angles.begin(), angles.end(), [&](double a) {
+		const double turn = std::abs(mrpt::math::wrapToPi(a - angles[0]));
+		return std::min(turn, M_PI - turn) < minDiff;
+	});
+	if (straight) return false;
+	// a hinge inside a wall: the wall was merged across the doorway, so the door was seen closed
+	const bool allTee = std::all_of(group.begin(), group.end(), [&](size_t k) { return cs[k].tee; });
+	return !allTee || std::any_of(group.begin(), group.end(), [&](size_t k) { return cs[k].alongWall; });
+}
+
+// Fig. 10: the door of a hinge's corners: the hinge at their vertices' mean, the leaf length
+// their mean, the first corner's wall, every corner's leaf (no states yet).
+Door DoorDetector::hingeOf(const std::vector<Corner>& cs, const std::vector<size_t>& group) const
+{
+	Door d;
+	d.wall = cs[group[0]].wall;
+	double len = 0;
+	for (size_t k : group)
+	{
+		d.hinge.x += cs[k].vertex.x / group.size();
+		d.hinge.y += cs[k].vertex.y / group.size();
+		len += cs[k].leafLength;
+		d.leaves.push_back(cs[k].leaf);
+	}
+	d.length = len / group.size();
+	return d;
 }
 
 // A door whose corners shared a static vector of leaf length from the hinge (an open state Eq. 6

@@ -149,6 +149,84 @@ std::vector<TPose2D> EmSlam::expand(const std::vector<TPose2D>& kp, const std::v
 	return out;
 }
 
+namespace
+{
+// An iteration whose E-step did not run (converged, or skipped) reports the last E-step's split.
+void keepLastSplit(EmIteration& it, const EmIteration& last)
+{
+	it.staticVectors = last.staticVectors, it.dynamicVectors = last.dynamicVectors;
+	it.staticLength = last.staticLength, it.dynamicLength = last.dynamicLength;
+}
+
+// Sec. 4.1: the E-step (Eq. 14-15) on the map of the trajectory (Eq. 4 unmerged, Eq. 8), its
+// figures in `it` and its parents' changed M_chd (Eq. 25) against `previous` (null: first E-step).
+EStepResult expectation(const EStep& estep, const std::vector<LocalScan>& scans, const std::vector<TPose2D>& poses,
+						const GridVectorConfig& cfg, const EStepResult* previous, EmIteration& it,
+						std::chrono::steady_clock::time_point t0)
+{
+	const auto perScan = GlobalMap::buildPerScan(poses, scans, cfg);
+	it.wipeSeconds = since(t0);
+	const auto tc = std::chrono::steady_clock::now();
+	EStepResult e = estep.run(perScan, previous);
+	it.classifySeconds = since(tc);
+	const auto changed = EStep::changedChildren(e, previous);
+	it.changedVectors = size_t(std::count(changed.begin(), changed.end(), true));
+	it.staticVectors = e.staticCount;
+	it.dynamicVectors = e.dynamicCount;
+	it.staticLength = e.staticLength;
+	it.dynamicLength = e.dynamicLength;
+	return e;
+}
+
+// Final map: the last E-step's children at the converged trajectory, split by Eq. 14 once more,
+// static and dynamic merged separately (Eq. 4, Algorithm 2); then finalVectors, ids unique
+// across both maps.
+void finalMap(EmResult& res, const EStep& estep, const std::vector<TPose2D>& ePoses, const GridVectorConfig& cfg)
+{
+	const auto t0 = std::chrono::steady_clock::now();
+	rebase(res.perScan, ePoses, res.poses);
+	res.perScan = estep.finalSplit(res.perScan);  // Eq. 14 on the converged map
+	std::vector<GridVector> st, dy;
+	for (const auto& v : res.perScan) (v.state == VectorState::Dynamic ? dy : st).push_back(v);
+	res.staticMap = estep.cutUnobserved(GlobalMap::mergeAll(st, cfg), st);
+	res.dynamicMap = estep.cutUnobserved(GlobalMap::mergeAll(dy, cfg), dy);
+	res.finalMergeSeconds = since(t0);
+	for (auto* m : {&res.staticMap, &res.dynamicMap})
+		for (auto v : m->vectors)
+		{
+			v.state = m == &res.staticMap ? VectorState::Static : VectorState::Dynamic;
+			v.id = res.finalVectors.size() + 1;  // unique across both maps
+			res.finalVectors.push_back(std::move(v));
+		}
+}
+
+// Sec. 5.4: doors in the final map; a leaf state Eq. 6 kept static is a door state, so dynamic,
+// and so is the stretch of a static wall that runs across a state (merged over the doorway):
+// the wall is cut there (EStep::splitSpans) and keeps its index for its first piece.
+void doorStates(EmResult& res, const EStep& estep, const DoorOptions& opts)
+{
+	const DoorDetector doorDetector(opts);
+	res.doors = doorDetector.detect(res.finalVectors);
+	for (const Door& d : res.doors)
+		for (size_t leaf : d.leaves) res.finalVectors[leaf].state = VectorState::Dynamic;
+	for (size_t i = 0, n = res.finalVectors.size(); i < n; ++i)
+	{
+		if (res.finalVectors[i].state != VectorState::Static) continue;
+		const auto spans = doorDetector.stateSpans(res.doors, res.finalVectors[i]);
+		if (spans.empty()) continue;
+		auto parts = estep.splitSpans(res.finalVectors[i], spans);
+		res.finalVectors[i] = std::move(parts[0]);
+		for (size_t k = 1; k < parts.size(); ++k)
+		{
+			parts[k].id = res.finalVectors.size() + 1;
+			res.finalVectors.push_back(std::move(parts[k]));
+		}
+	}
+}
+}  // namespace
+
+// Sec. 4: M-step (Eq. 16-25) and E-step (Eq. 14-15) alternated until an M-step changes no
+// constraint after an E-step that changed no vector's children (Fig. 11), then the final map.
 EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::vector<TPose2D>& odometry,
 							  const IterationCallback& onIteration, const ProgressCallback& progress) const
 {
@@ -172,88 +250,36 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		it.mstep = mstep.run(segs, res.poses);  // M-step (Eq. 16-25)
 		it.mSeconds = since(t0);
 		it.changedShare = it.mstep.changedShare;
-		// No constraint changed after an E-step that changed no vector: the
-		// trajectory did not move, so the E-step would repeat itself. Converged.
-		if (k > 1 && it.changedShare <= cfg_.mstep.minChangedShare &&
-			!res.iterations.empty() && res.iterations.back().changedVectors == 0)
+		// No constraint changed after an E-step that changed no vector: the trajectory did not
+		// move, so the E-step would repeat itself (converged). A trajectory that moved too little
+		// since the last E-step has that E-step's map: nothing to re-evaluate (skipped).
+		const bool converged = k > 1 && it.changedShare <= cfg_.mstep.minChangedShare &&
+							   !res.iterations.empty() && res.iterations.back().changedVectors == 0;
+		t0 = std::chrono::steady_clock::now();
+		if (converged || (k > 1 && !movedEnough(ePoses, res.poses, cfg_.estep)))
 		{
-			const EmIteration& last = res.iterations.back();
-			it.staticVectors = last.staticVectors, it.dynamicVectors = last.dynamicVectors;
-			it.staticLength = last.staticLength, it.dynamicLength = last.dynamicLength;
+			keepLastSplit(it, res.iterations.back());
+			it.eSkipped = !converged;
 			res.iterations.push_back(it);
 			if (onIteration) onIteration(it, res.poses);
+			if (!converged) continue;
 			res.converged = true;
 			break;
 		}
-		t0 = std::chrono::steady_clock::now();
-		if (k > 1 && !movedEnough(ePoses, res.poses, cfg_.estep))
-		{
-			// the map of this trajectory is the last E-step's: nothing to re-evaluate
-			const EmIteration& last = res.iterations.back();
-			it.staticVectors = last.staticVectors, it.dynamicVectors = last.dynamicVectors;
-			it.staticLength = last.staticLength, it.dynamicLength = last.dynamicLength;
-			it.eSkipped = true;
-			res.iterations.push_back(it);
-			if (onIteration) onIteration(it, res.poses);
-			continue;
-		}
 		ePoses = res.poses;
 		if (progress) progress("E-step", k, 0.0);
-		// E-step (Eq. 14-15) on the map of the new trajectory (Eq. 8)
-		const auto perScan = GlobalMap::buildPerScan(res.poses, scans, cfg_);
-		it.wipeSeconds = since(t0);
-		const auto tc = std::chrono::steady_clock::now();
-		EStepResult e = estep.run(perScan, k > 1 ? &prevE : nullptr);
-		it.classifySeconds = since(tc);
-		const auto changed = EStep::changedChildren(e, k > 1 ? &prevE : nullptr);  // Eq. 25's M_chd
-		it.changedVectors = size_t(std::count(changed.begin(), changed.end(), true));
+		EStepResult e = expectation(estep, scans, res.poses, cfg_, k > 1 ? &prevE : nullptr, it, t0);
 		segs = staticSegments(e.children, res.poses);
-		it.staticVectors = e.staticCount;
-		it.dynamicVectors = e.dynamicCount;
-		it.staticLength = e.staticLength;
-		it.dynamicLength = e.dynamicLength;
 		it.eSeconds = since(t0);
 		res.perScan = e.children;
 		prevE = std::move(e);
 		res.iterations.push_back(it);
 		if (onIteration) onIteration(it, res.poses);
 	}
-	// Final map: merge static and dynamic vectors separately (Eq. 4, Algorithm 2).
 	const auto t0 = std::chrono::steady_clock::now();
-	rebase(res.perScan, ePoses, res.poses);
-	res.perScan = estep.finalSplit(res.perScan);  // Eq. 14 on the converged map
-	std::vector<GridVector> st, dy;
-	for (const auto& v : res.perScan) (v.state == VectorState::Dynamic ? dy : st).push_back(v);
-	res.staticMap = estep.cutUnobserved(GlobalMap::mergeAll(st, cfg_), st);
-	res.dynamicMap = estep.cutUnobserved(GlobalMap::mergeAll(dy, cfg_), dy);
-	res.finalMergeSeconds = since(t0);
+	finalMap(res, estep, ePoses, cfg_);
 	const auto td = std::chrono::steady_clock::now();
-	for (auto* m : {&res.staticMap, &res.dynamicMap})
-		for (auto v : m->vectors)
-		{
-			v.state = m == &res.staticMap ? VectorState::Static : VectorState::Dynamic;
-			v.id = res.finalVectors.size() + 1;  // unique across both maps
-			res.finalVectors.push_back(std::move(v));
-		}
-	// Sec. 5.4: doors; a leaf state Eq. 6 kept static is a door state, so dynamic
-	const DoorDetector doorDetector(cfg_.doors);
-	res.doors = doorDetector.detect(res.finalVectors);
-	for (const Door& d : res.doors)
-		for (size_t leaf : d.leaves) res.finalVectors[leaf].state = VectorState::Dynamic;
-	// ... also where a static wall runs across a state (merged over the doorway); a cut wall keeps its index
-	for (size_t i = 0, n = res.finalVectors.size(); i < n; ++i)
-	{
-		if (res.finalVectors[i].state != VectorState::Static) continue;
-		const auto spans = doorDetector.stateSpans(res.doors, res.finalVectors[i]);
-		if (spans.empty()) continue;
-		auto parts = estep.splitSpans(res.finalVectors[i], spans);
-		res.finalVectors[i] = std::move(parts[0]);
-		for (size_t k = 1; k < parts.size(); ++k)
-		{
-			parts[k].id = res.finalVectors.size() + 1;
-			res.finalVectors.push_back(std::move(parts[k]));
-		}
-	}
+	doorStates(res, estep, cfg_.doors);
 	res.doorSeconds = since(td);
 	res.finalMapSeconds = since(t0);
 	return res;

@@ -166,10 +166,11 @@ std::vector<Partial> mergeMemberwise(const std::vector<GridVector>& vectors, std
 				parts.end());
 	return parts;
 }
-}  // namespace
 
-// Eq. 4: {m_{i,t}} -> {m_j}; groups by the Sec. 3.2 criteria, each merged once by Algorithm 2.
-MergeResult GlobalMap::mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg)
+// Sec. 3.2: the inputs, longest first, grouped by the correspondence criteria; a group grows by
+// the earlier groups its grown span corresponds to (map.merge_group_rounds). The groups alive
+// at the end, in the order of their first input.
+std::vector<Group> correspondingGroups(const std::vector<GridVector>& vectors, const MapOptions& opt)
 {
 	std::vector<uint32_t> order(vectors.size());
 	std::iota(order.begin(), order.end(), 0u);
@@ -181,20 +182,20 @@ MergeResult GlobalMap::mergeAll(const std::vector<GridVector>& vectors, const Gr
 
 	std::vector<Group> groups;
 	groups.reserve(vectors.size());
-	VectorIndex index(cfg.map.indexCellSize);
+	VectorIndex index(opt.indexCellSize);
 	std::vector<uint32_t> cand;
 	for (uint32_t pos : order)
 	{
 		Group g = groupOf(vectors[pos], pos);
-		for (int round = 0; round < cfg.map.mergeGroupRounds; ++round)  // grown span: new correspondents
+		for (int round = 0; round < opt.mergeGroupRounds; ++round)  // grown span: new correspondents
 		{
 			cand.clear();
 			const double len = std::hypot(g.e.x - g.s.x, g.e.y - g.s.y);
-			index.query(g.box(band + correspondenceSearchMargin(len, cfg.map)), cand);
+			index.query(g.box(band + correspondenceSearchMargin(len, opt)), cand);
 			bool grew = false;
 			for (uint32_t k : cand)
 			{
-				if (!testCorrespondence(g.s, g.e, groups[k].s, groups[k].e, cfg.map).match) continue;
+				if (!testCorrespondence(g.s, g.e, groups[k].s, groups[k].e, opt).match) continue;
 				g.absorb(groups[k]);
 				groups[k].alive = false;
 				index.remove(k);
@@ -205,40 +206,49 @@ MergeResult GlobalMap::mergeAll(const std::vector<GridVector>& vectors, const Gr
 		groups.push_back(std::move(g));
 		index.insert(uint32_t(groups.size() - 1), groups.back().box(band));
 	}
+	groups.erase(std::remove_if(groups.begin(), groups.end(), [](const Group& g) { return !g.alive; }), groups.end());
+	std::sort(groups.begin(), groups.end(),
+			  [](const Group& a, const Group& b) { return a.firstInput < b.firstInput; });
+	return groups;
+}
 
-	std::vector<const Group*> live;
-	for (const Group& g : groups)
-		if (g.alive) live.push_back(&g);
-	std::sort(live.begin(), live.end(),
-			  [](const Group* a, const Group* b) { return a->firstInput < b->firstInput; });
+// Algorithm 2 once over a group; a group the guard refuses merges member by member.
+std::vector<Partial> mergeGroup(const std::vector<GridVector>& vectors, const Group& g, const VectorMerger& merger,
+								const MapOptions& opt)
+{
+	std::vector<const GridVector*> parts;
+	for (uint32_t m : g.members) parts.push_back(&vectors[m]);
+	std::vector<Partial> done(1);
+	if (parts.size() == 1)
+		done[0] = {*parts.front(), {parts.front()->id}, false};
+	else if (merger.tryMerge(parts, done[0].v))
+	{
+		for (const GridVector* p : parts) done[0].ids.push_back(p->id);
+		done[0].merged = true;
+	}
+	else
+		done = mergeMemberwise(vectors, g.members, merger, opt);
+	return done;
+}
+}  // namespace
 
+// Eq. 4: {m_{i,t}} -> {m_j}; groups by the Sec. 3.2 criteria, each merged once by Algorithm 2.
+MergeResult GlobalMap::mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg)
+{
+	const std::vector<Group> groups = correspondingGroups(vectors, cfg.map);
 	uint64_t nextId = 1;
 	for (const auto& v : vectors) nextId = std::max(nextId, v.id + 1);
 	const VectorMerger merger(cfg);
 	MergeResult out;
-	out.vectors.reserve(live.size());
-	for (const Group* g : live)
-	{
-		std::vector<const GridVector*> parts;
-		for (uint32_t m : g->members) parts.push_back(&vectors[m]);
-		std::vector<Partial> done(1);
-		if (parts.size() == 1)
-			done[0] = {*parts.front(), {parts.front()->id}, false};
-		else if (merger.tryMerge(parts, done[0].v))  // Algorithm 2, once per group
-		{
-			for (const GridVector* p : parts) done[0].ids.push_back(p->id);
-			done[0].merged = true;
-		}
-		else
-			done = mergeMemberwise(vectors, g->members, merger, cfg.map);
-		for (Partial& p : done)
+	out.vectors.reserve(groups.size());
+	for (const Group& g : groups)
+		for (Partial& p : mergeGroup(vectors, g, merger, cfg.map))
 		{
 			if (p.merged) p.v.id = nextId++;
 			std::sort(p.ids.begin(), p.ids.end());
 			out.vectors.push_back(std::move(p.v));
 			out.sources.push_back(std::move(p.ids));
 		}
-	}
 	return out;
 }
 

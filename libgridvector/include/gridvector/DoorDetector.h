@@ -83,6 +83,9 @@ class DoorDetector
    private:
 	std::vector<std::pair<size_t, size_t>> leafChains(std::vector<GridVector>& v) const;
 	std::vector<Door> detectIn(const std::vector<GridVector>& v) const;
+	std::vector<double> distinctStates(const std::vector<Corner>& cs, const std::vector<size_t>& group) const;
+	bool isHinge(const std::vector<Corner>& cs, const std::vector<size_t>& group, const std::vector<double>& angles) const;
+	Door hingeOf(const std::vector<Corner>& cs, const std::vector<size_t>& group) const;
 	bool endCorner(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	void teeCorners(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	bool sameDoor(const Corner& a, const Corner& b) const;

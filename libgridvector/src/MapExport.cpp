@@ -37,6 +37,21 @@ void renameOver(const std::string& tmp, const std::string& path)
 	}
 }
 
+/** Writes `path` through `save` (an MRPT writer that picks its format from the extension)
+ * under tempLike(path), renamed over it when done; `failure` names a failed save. */
+template <class Save>
+void saveVia(const std::string& path, const char* failure, Save&& save)
+{
+	const std::string tmp = tempLike(path);
+	if (!save(tmp))
+	{
+		std::error_code ec;
+		std::filesystem::remove(tmp, ec);
+		throw std::runtime_error(path + ": cannot write (" + failure + ")");
+	}
+	renameOver(tmp, path);
+}
+
 std::string hex(int r, int g, int b)
 {
 	char buf[8];
@@ -63,14 +78,7 @@ mrpt::img::TColor rgbOf(const GridVector& v)
 
 void MapExport::writePng(const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path)
 {
-	const std::string tmp = tempLike(path);
-	if (!grid.saveAsBitmapFile(tmp))
-	{
-		std::error_code ec;
-		std::filesystem::remove(tmp, ec);
-		throw std::runtime_error(path + ": cannot write (image encoder failed)");
-	}
-	renameOver(tmp, path);
+	saveVia(path, "image encoder failed", [&](const std::string& tmp) { return grid.saveAsBitmapFile(tmp); });
 }
 
 // ROS map_server format: P5 image + YAML metadata.
@@ -178,14 +186,7 @@ void MapExport::write3DScene(const std::vector<GridVector>& vectors,
 		lines->appendLine(v.start().x, v.start().y, 0.01, v.end().x, v.end().y, 0.01);
 	}
 	for (auto& kv : byColour) scene.insert(kv.second);
-	const std::string tmp = tempLike(path);
-	if (!scene.saveToFile(tmp))
-	{
-		std::error_code ec;
-		std::filesystem::remove(tmp, ec);
-		throw std::runtime_error(path + ": cannot write (scene serialisation failed)");
-	}
-	renameOver(tmp, path);
+	saveVia(path, "scene serialisation failed", [&](const std::string& tmp) { return scene.saveToFile(tmp); });
 }
 
 }  // namespace gridvector

@@ -61,6 +61,7 @@ class CarmenParser
 	void onFlaser(const Tokens& t, bool rear);
 	void onRobotLaser(const Tokens& t);
 	void onRawLaser(const Tokens& t, int which);
+	ScanMessage laserMessage(const Tokens& t, size_t timestampAfterTail, size_t& tail, double& ts);
 	void onOther(const Tokens& t);
 
 	double timestampAfter(const Tokens& t, size_t base, const std::string& what);
@@ -199,15 +200,17 @@ void CarmenParser::onFlaser(const Tokens& t, bool rear)
 	r.hasLogPose = r.hasOdometry = true;
 }
 
-/** ROBOTLASERx type start fov res max accuracy remission_mode n [ranges] m [remissions]
- *  laser_x laser_y laser_theta robot_x robot_y robot_theta tv rv fwd_safety side_safety turn_axis ts host lts */
-void CarmenParser::onRobotLaser(const Tokens& t)
+/** The head ROBOTLASERx and RAWLASERx share: type start fov res max accuracy remission_mode n
+ * [ranges] m [remissions]. `tail`: the index of the first token after it; `ts`: the timestamp
+ * after the `timestampAfterTail` tokens that follow (parsed before the ranges, as errors are
+ * reported in token order of the checks). The message has no sensor pose yet. */
+ScanMessage CarmenParser::laserMessage(const Tokens& t, size_t timestampAfterTail, size_t& tail, double& ts)
 {
 	const std::string what = str(t[0]);
 	const size_t n = count(t, 8, what + " beam count");
 	const size_t m = count(t, 9 + n, what + " remission count");
-	const size_t posesAt = 10 + n + m;
-	const double ts = timestampAfter(t, posesAt + 11, what);
+	tail = 10 + n + m;
+	ts = timestampAfter(t, tail + timestampAfterTail, what);
 	ScanMessage s;
 	s.type = what;
 	s.ranges = ranges(t, 9, n, what);
@@ -215,8 +218,18 @@ void CarmenParser::onRobotLaser(const Tokens& t)
 								  parseDouble(t[4], pos_, what + " resolution"));
 	const double maxR = parseDouble(t[5], pos_, what + " max range");
 	if (maxR > 0) s.maxRange = maxR;
-	const TPose2D laser = poseAt(t, posesAt, what + " laser pose");
-	const TPose2D robot = poseAt(t, posesAt + 3, what + " robot pose");
+	return s;
+}
+
+/** ROBOTLASERx head (laserMessage), then
+ *  laser_x laser_y laser_theta robot_x robot_y robot_theta tv rv fwd_safety side_safety turn_axis ts host lts */
+void CarmenParser::onRobotLaser(const Tokens& t)
+{
+	size_t posesAt = 0;
+	double ts = 0;
+	ScanMessage s = laserMessage(t, 11, posesAt, ts);
+	const TPose2D laser = poseAt(t, posesAt, s.type + " laser pose");
+	const TPose2D robot = poseAt(t, posesAt + 3, s.type + " robot pose");
 	const mrpt::poses::CPose2D rel = mrpt::poses::CPose2D(laser) - mrpt::poses::CPose2D(robot);
 	s.sensorPose = mrpt::poses::CPose3D(rel.x(), rel.y(), 0, rel.phi() + s.layout.yawOffset, 0, 0);
 	addScan(std::move(s), ts);
@@ -225,21 +238,13 @@ void CarmenParser::onRobotLaser(const Tokens& t)
 	r.hasLogPose = r.hasOdometry = true;
 }
 
-/** RAWLASERx type start fov res max accuracy remission_mode n [ranges] m [remissions] ts host lts */
+/** RAWLASERx head (laserMessage), then ts host lts */
 void CarmenParser::onRawLaser(const Tokens& t, int which)
 {
 	if (which == 2 && !opt_.includeRearLaser) return void(other_[str(t[0])]++);
-	const std::string what = str(t[0]);
-	const size_t n = count(t, 8, what + " beam count");
-	const size_t m = count(t, 9 + n, what + " remission count");
-	const double ts = timestampAfter(t, 10 + n + m, what);
-	ScanMessage s;
-	s.type = what;
-	s.ranges = ranges(t, 9, n, what);
-	s.layout = explicitBeamLayout(n, parseDouble(t[2], pos_, what + " start angle"),
-								  parseDouble(t[4], pos_, what + " resolution"));
-	const double maxR = parseDouble(t[5], pos_, what + " max range");
-	if (maxR > 0) s.maxRange = maxR;
+	size_t tail = 0;
+	double ts = 0;
+	ScanMessage s = laserMessage(t, 0, tail, ts);
 	const CarmenLaserParams* lp = which == 1 ? &params_.front() : which == 2 ? &params_.rear() : nullptr;
 	const double yaw = (which == 2 ? M_PI : 0.0) + (lp ? lp->offsetYaw : 0.0) + s.layout.yawOffset;
 	s.sensorPose = mrpt::poses::CPose3D(lp ? lp->offsetX : 0, lp ? lp->offsetY : 0, 0, yaw, 0, 0);

@@ -40,6 +40,7 @@ CorrespondenceTest testCorrespondence(const TPoint2D& sa, const TPoint2D& ea, co
 	return t;
 }
 
+// Sec. 3.2: criteria 1-3 between two grid vectors in global coordinates.
 bool corresponds(const GridVector& a, const GridVector& b, const MapOptions& opt)
 {
 	const TPoint2D da = a.direction(), db = b.direction();

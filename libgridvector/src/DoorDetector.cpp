@@ -92,7 +92,7 @@ Corner cornerAt(const std::vector<GridVector>& v, size_t s, size_t d, const TPoi
 }
 }  // namespace
 
-// An end of the candidate near an end of the wall. A closed leaf continuing the wall's line that
+// Sec. 5.4, Fig. 10: an end of the candidate near an end of the wall. A closed leaf continuing the wall's line that
 // overlaps the wall (merged closed states reach into it) starts at the wall's end: vertex and
 // length are taken there.
 bool DoorDetector::endCorner(const std::vector<GridVector>& v, size_t s, size_t d, std::vector<Corner>& out) const
@@ -123,6 +123,7 @@ bool DoorDetector::endCorner(const std::vector<GridVector>& v, size_t s, size_t 
 	return true;
 }
 
+// Sec. 5.4, beyond the paper (the T corner).
 // A hinge inside the wall: an end of the candidate on the wall's line, between its ends. The
 // candidate leaves the wall (open state) or, dynamic, lies along it (closed state inside a wall
 // merged across the doorway: each of its ends may be the hinge).
@@ -142,7 +143,7 @@ void DoorDetector::teeCorners(const std::vector<GridVector>& v, size_t s, size_t
 	}
 }
 
-// A closed leaf: on the wall's line, pointing away from the wall (not lying along it).
+// Sec. 5.4, beyond the paper: a closed leaf: on the wall's line, pointing away from the wall (not lying along it).
 bool DoorDetector::collinearBeyond(const GridVector& wall, const TPoint2D& vertex, const TPoint2D& tip) const
 {
 	const auto [tipAlong, off] = alongAndOff(wall, tip);
@@ -175,12 +176,14 @@ std::vector<std::pair<double, double>> DoorDetector::stateSpans(const std::vecto
 	return out;
 }
 
+// Sec. 5.4, Fig. 10: two corners share the static vector, their vertices are close, their leaves equally long.
 bool DoorDetector::sameDoor(const Corner& a, const Corner& b) const
 {
 	return a.wall == b.wall && dist(a.vertex, b.vertex) <= opts_.maxVertexDistance &&
 		   std::abs(a.leafLength - b.leafLength) <= opts_.maxLengthDiff;
 }
 
+// Sec. 5.4, beyond the paper (the leaf chain).
 // A leaf cut by Fig. 4's split into a short dynamic piece and a collinear static piece (the
 // part of an open leaf that was never seen through after the door closed stays static): the
 // two pieces, end to end, are one door candidate (two dynamic pieces are not: people's tracks). Returns the pieces of each chain (index n + k of
@@ -240,6 +243,7 @@ std::vector<Door> DoorDetector::detect(const std::vector<GridVector>& input) con
 	return doors;
 }
 
+// Sec. 5.4 on the vectors (leaf chains included): corners grouped into hinges, each door's states completed.
 std::vector<Door> DoorDetector::detectIn(const std::vector<GridVector>& v) const
 {
 	auto cs = corners(v);
@@ -283,6 +287,7 @@ std::vector<Door> DoorDetector::detectIn(const std::vector<GridVector>& v) const
 	return doors;
 }
 
+// Fig. 10: the different open states of one door.
 // The distinct states of a group of corners: leaf directions at least min_state_diff apart.
 std::vector<double> DoorDetector::distinctStates(const std::vector<Corner>& cs, const std::vector<size_t>& group) const
 {
@@ -337,6 +342,7 @@ Door DoorDetector::hingeOf(const std::vector<Corner>& cs, const std::vector<size
 	return d;
 }
 
+// Sec. 5.4, beyond the paper (wallAsState).
 // A door whose corners shared a static vector of leaf length from the hinge (an open state Eq. 6
 // kept static, acting as the other states' "wall"): the door's wall is the longest static vector
 // through the hinge (end or interior), and the short one, if it lies in the arc the door sweeps
@@ -362,6 +368,7 @@ void DoorDetector::wallAsState(const std::vector<GridVector>& v, Door& d, double
 	addLeaf(d, shortWall, a, dist(tip, d.hinge), taken);
 }
 
+// Sec. 5.4, beyond the paper (a leaf joining a door).
 // Vector k from the hinge, its tip at angle a and distance r, is a leaf of door d; a whole leaf
 // at an angle min_state_diff_deg from every state is a state too.
 void DoorDetector::addLeaf(Door& d, size_t k, double a, double r, std::vector<bool>& taken) const
@@ -377,6 +384,7 @@ void DoorDetector::addLeaf(Door& d, size_t k, double a, double r, std::vector<bo
 	}
 }
 
+// Sec. 5.4, beyond the paper (closedInWall).
 // A door whose wall runs through the hinge and on past it, on the states' side, for a leaf's
 // length (merged across the doorway: the door was closed in most observations, so Eq. 6 kept
 // its closed leaf static with the wall), and with no state along it: the closed leaf lies
@@ -398,6 +406,7 @@ void DoorDetector::closedInWall(const std::vector<GridVector>& v, Door& d) const
 	d.closedAngle = closed;
 }
 
+// Sec. 5.4, beyond the paper (the swept arc).
 // The arc a door's leaf sweeps: the smallest arc holding all states (the complement of the
 // largest gap between them); when the states seen span less than doors.min_sweep_deg (a right
 // angle), the arc from the wall's line (the closed leaf) through the states, at least that wide.
@@ -420,6 +429,7 @@ bool DoorDetector::inSweep(const Door& d, const GridVector& wall, double angle) 
 	return rel <= width + tol || rel >= 2 * M_PI - tol;
 }
 
+// Sec. 5.4, beyond the paper (joinStates).
 // Every other vector from the hinge into the swept arc, reaching no farther than the longest leaf
 // of the door's corners (plus doors.max_length_diff), is one more
 // state (a door opened to different angles; a state whose corner went to another wall piece)

@@ -74,6 +74,7 @@ void EStep::applyHysteresis(std::vector<double>& prof, const std::vector<Profile
 			prof[size_t(c)] += p.isStatic ? opts_.hysteresis : -opts_.hysteresis;
 }
 
+// Eq. 14's child: the parent's columns [first, last) with their cells unchanged (Eq. 5's posterior kept).
 GridVector EStep::subVector(const GridVector& parent, const ProfilePiece& p) const
 {
 	const double res = parent.resolution(), len = parent.length();
@@ -95,6 +96,7 @@ GridVector EStep::subVector(const GridVector& parent, const ProfilePiece& p) con
 	return child;
 }
 
+// Eq. 25's M_chd bookkeeping: a child's id from its parent's and its place among the pieces.
 uint64_t EStep::childId(uint64_t parentId, size_t k)
 {
 	constexpr uint64_t pieces = uint64_t(1) << kChildBits, parents = uint64_t(1) << (64 - kChildBits);
@@ -105,6 +107,7 @@ uint64_t EStep::childId(uint64_t parentId, size_t k)
 	return (parentId << kChildBits) | k;
 }
 
+// Eq. 14 by Fig. 4's split-and-merge of one vector's profile.
 std::vector<GridVector> EStep::split(const GridVector& parent,
 									 const std::vector<ProfilePiece>& previous,
 									 std::vector<ProfilePiece>* piecesOut) const
@@ -137,6 +140,7 @@ std::vector<GridVector> EStep::pieceVectors(const GridVector& parent, const std:
 	return out;
 }
 
+// Sec. 4.1, Eq. 14-15: every m_{i,t} split into static and dynamic children.
 EStepResult EStep::run(const std::vector<GridVector>& parents, const EStepResult* previous) const
 {
 	EStepResult r;

@@ -17,7 +17,7 @@ double since(std::chrono::steady_clock::time_point t0)
 	return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Before the first E-step every vector is its own single static child.
+// Before the first E-step every vector is its own single static child (Eq. 14 not yet applied).
 std::vector<std::vector<MatchSegment>> initialSegments(const std::vector<LocalScan>& scans)
 {
 	std::vector<std::vector<MatchSegment>> out(scans.size());
@@ -32,6 +32,7 @@ std::vector<std::vector<MatchSegment>> initialSegments(const std::vector<LocalSc
 	return out;
 }
 
+// Beyond the paper: the E-step is re-run only when the M-step moved a pose (estep.rerun_*).
 bool movedEnough(const std::vector<TPose2D>& a, const std::vector<TPose2D>& b, const EStepOptions& o)
 {
 	for (size_t t = 0; t < a.size() && t < b.size(); ++t)
@@ -67,10 +68,11 @@ GridVectorConfig EmSlam::defaultConfig()
 	c.extraction.minLength = 0.12;
 	c.extraction.maxPointGap = 1.0;
 	c.map.wipeCountsBeams = false;  // Fig. 2's unit: one increment per cell and triangle
-	c.posegraph.odometrySigmaXYPerM = 0.06;  // u_t of Eq. 21: closer to the residuals at the optimum (doc/benchmarks.md)
+	c.posegraph.odometrySigmaXYPerM = 0.06;  // Eq. 21 Sigma_ji of the odometry (u_t) edges: closer to the residuals at the optimum (doc/benchmarks.md)
 	return c;
 }
 
+// Eq. 19-20: the M-step registers the static vectors only; dynamic ones are outliers.
 std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<GridVector>& children,
 															  const std::vector<TPose2D>& poses)
 {

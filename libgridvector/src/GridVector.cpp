@@ -35,6 +35,7 @@ GridVector GridVector::fromParts(const TPoint2D& start, const TPoint2D& end,
 	return v;
 }
 
+// Eq. 2 cells at the counting model's prior (Sec. 3.1: n_occupy = 1/2, n_visit = 1), no point of Algorithm 1 yet.
 void GridVector::setGeometry(const TPoint2D& s, const TPoint2D& e, int cols)
 {
 	start_ = s;
@@ -47,6 +48,7 @@ void GridVector::setGeometry(const TPoint2D& s, const TPoint2D& e, int cols)
 	cells_.assign(size_t(rows()) * cols_, prior);
 }
 
+// Sec. 3.1 (after Eq. 3): psi = atan2(y_e - y_s, x_e - x_s), (x_c, y_c) = (s + e) / 2, l = |e - s|.
 double GridVector::psi() const { return std::atan2(end_.y - start_.y, end_.x - start_.x); }
 TPoint2D GridVector::centre() const { return {(start_.x + end_.x) / 2, (start_.y + end_.y) / 2}; }
 double GridVector::length() const { return len_; }
@@ -64,6 +66,7 @@ TPoint2D GridVector::leftNormal() const
 	return {-d.y, d.x};
 }
 
+// Eq. 3 through the centre, the normal theta = psi - pi/2 pointing to the right (the unobserved side, Fig. 1).
 Line2D GridVector::line() const
 {
 	Line2D l;
@@ -99,6 +102,7 @@ TPoint2D GridVector::cellCentre(int row, int col) const
 	return {start_.x + u * d.x + w * n.x, start_.y + u * d.y + w * n.y};
 }
 
+// Eq. 2: (x_acc, y_acc) / n_acc, the gravity centre of the beam endpoints in the cell (its centre if none).
 TPoint2D GridVector::cellMeanPoint(int row, int col) const
 {
 	const GridCell& c = cell(row, col);
@@ -137,6 +141,7 @@ std::vector<double> GridVector::occupancyProfile() const
 	return prof;
 }
 
+// p(c_i = 1) of Eq. 1's c_i (Sec. 3.1): the mean of the Fig. 4 profile.
 double GridVector::pStatic() const
 {
 	const auto prof = occupancyProfile();

@@ -103,6 +103,7 @@ void MStep::setOdometry(std::vector<TPose2D> odometry)
 		path_[t] = path_[t - 1] + se2::distance(odometry_[t - 1], odometry_[t]);
 }
 
+// Sec. 4.2: one constraint <j, i> of Eq. 21 by vector matching (Sohn & Kim 2008) of the two scans' static vectors.
 bool MStep::registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans& scans,
 						 const TPose2D& guess, Constraint& out, MStepReport& rep) const
 {
@@ -202,6 +203,7 @@ void MStep::chainSequential(const Scans& scans, Poses& poses, MStepReport& rep)
 	}
 }
 
+// Eq. 25: the static children of both scans (their ids) as when the edge was registered.
 bool MStep::sameScans(const Constraint& c) const
 {
 	return c.sigFrom == sigs_[c.from] && c.sigTo == sigs_[c.to];
@@ -322,6 +324,7 @@ std::vector<uint32_t> MStep::overlapPartners(uint32_t i, uint32_t nearest, const
 	return out;
 }
 
+// Sec. 4.3, the topology change: scans whose ranges cover each other get an edge.
 // Overlap edges: for each pose, one edge into every earlier pass through its place.
 std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep)
 {

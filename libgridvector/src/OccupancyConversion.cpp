@@ -23,6 +23,7 @@ std::pair<double, double> OccupancyConversion::countsAt(const std::vector<GridVe
 	return {o, v};
 }
 
+// Eq. 6 at one point (Eq. 7 selects the cells containing it).
 double OccupancyConversion::occupancyAt(const std::vector<GridVector>& vectors, const TPoint2D& p,
 									   const GridOptions& grid)
 {

@@ -181,6 +181,7 @@ void linearise(const std::vector<TPose2D>& x, const std::vector<const PoseEdge*>
 }
 }  // namespace
 
+// Eq. 22 by sparse Levenberg-Marquardt (in place of Eq. 23's stochastic gradient descent).
 OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativeDecrease)
 {
 	OptimizeStats st;

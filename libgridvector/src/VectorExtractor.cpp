@@ -146,6 +146,8 @@ std::vector<ScanSegment> VectorExtractor::splitAndMerge(const std::vector<TPoint
 	return segs;
 }
 
+// Sec. 3.1: the endpoints are the outermost feet of the perpendiculars from the segment's points onto its
+// Eq. 3 line, ordered so the open space (the sensor) lies on the left (Fig. 1); the cells by Algorithm 1.
 GridVector VectorExtractor::makeVector(const std::vector<TPoint2D>& pts, const ScanSegment& seg,
 									   const TPoint2D& sensor) const
 {
@@ -166,6 +168,7 @@ GridVector VectorExtractor::makeVector(const std::vector<TPoint2D>& pts, const S
 	return v;
 }
 
+// Sec. 3.1: z_t ~ [v_{1,t}, ..., v_{n,t}], the local map V_t of one scan.
 LocalScan VectorExtractor::extract(const mrpt::obs::CObservation2DRangeScan& scan) const
 {
 	LocalScan out;

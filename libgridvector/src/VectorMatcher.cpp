@@ -199,6 +199,7 @@ double VectorMatcher::correspondences(const std::vector<MatchSegment>& a,
 	return len;
 }
 
+// Sec. 4.2: the registration of scan b against scan a by vector matching (Sohn & Kim 2008).
 MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 								 const std::vector<MatchSegment>& b, const TPose2D& guess) const
 {

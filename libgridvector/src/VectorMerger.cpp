@@ -278,11 +278,13 @@ void resample(const std::vector<const GridVector*>& parts, const Lattice& lat, c
 
 VectorMerger::VectorMerger(const GridVectorConfig& cfg) : cfg_(cfg) {}
 
+// Algorithm 2 on two grid vectors.
 GridVector VectorMerger::merge(const GridVector& a, const GridVector& b) const
 {
 	return merge(std::vector<const GridVector*>{&a, &b});
 }
 
+// Algorithm 2 lines 1-18: the occupancy-weighted least-squares line of the parts.
 Line2D VectorMerger::fitLine(const std::vector<const GridVector*>& parts, bool weighted) const
 {
 	checkParts(parts);

@@ -8,6 +8,7 @@ namespace gridvector
 {
 using mrpt::math::TPoint2D;
 
+// Fig. 2: the wipe triangle of v_j from the sensor at x_q.
 WipeTriangle::WipeTriangle(const TPoint2D& sensor, const TPoint2D& start, const TPoint2D& end,
 						   double hitBand, double beamsPerRadian)
 	: o_(sensor), beams_(beamsPerRadian)

@@ -1,4 +1,4 @@
-// Sec. 4: the modified EM-SLAM — E-step (static/dynamic) and M-step (pose graph) alternated.
+// Sec. 4, Eq. 11-13: the modified EM-SLAM — E-step (Eq. 14-15) and M-step (Eq. 16-25) alternated.
 #pragma once
 
 #include <gridvector/DoorDetector.h>

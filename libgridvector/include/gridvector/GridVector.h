@@ -1,4 +1,4 @@
-// Sec. 3.1, Eq. 1: a directed segment (open space on its left) with a slender grid.
+// Sec. 3.1, Eq. 1, Fig. 1: a directed segment (open space on its left) with a slender grid.
 #pragma once
 
 #include <gridvector/GridCell.h>

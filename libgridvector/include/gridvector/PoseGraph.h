@@ -47,7 +47,9 @@ struct OptimizeStats
  * built-in sparse Gauss-Newton/Levenberg-Marquardt (CHOLMOD supernodal LL^T,
  * dynamic covariance scaling on registration edges) or with MRPT's
  * optimize_graph_spa_levmarq; both then deactivate edges whose chi2 stays
- * above reject_chi2 and re-optimise. */
+ * above reject_chi2 and re-optimise. The paper minimises Eq. 22 by stochastic
+ * gradient descent (Eq. 23) on a tree parameterisation (Sec. 4.3); a sparse
+ * Cholesky step solves the same least-squares problem exactly. */
 class PoseGraph
 {
    public:

@@ -118,7 +118,6 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 		ks.back().scanIndex = int64_t(k);
 		ko.push_back(odometry[key[k]]);
 	}
-	const size_t n = scans.size();
 	EmResult res = runKeyframes(ks, ko, [&](const EmIteration& it, const std::vector<TPose2D>& kp) {
 		if (onIteration) onIteration(it, expand(kp, key, odometry));
 	}, progress);
@@ -126,7 +125,6 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 	for (auto& v : res.perScan)
 		if (v.scanIndex >= 0) v.scanIndex = int64_t(key[size_t(v.scanIndex)]);
 	res.keyframes = key.size();
-	(void)n;
 	return res;
 }
 

@@ -194,3 +194,42 @@ TEST(VectorMatcher, GateShrinkIsValidatedToItsClampedRange)
 	cfg.matcher.gateShrink = 1.01;
 	EXPECT_THROW(cfg.validate(), std::invalid_argument);
 }
+
+// matcher.degenerate_projection: a corridor registration (two walls and a short crosswise
+// face: degeneracy below degenerate_ratio) keeps what it observes. The pure translation along
+// the corridor is marginalised out of the information (I' u = 0, u = (axis, 0)); whatever is
+// independent of it (lateral offset and heading, I-orthogonal to u) keeps its information.
+TEST(VectorMatcher, DegenerateProjectionMarginalisesTheCorridorAxis)
+{
+	const std::vector<WorldSeg> corridor = {{0, -1, 5, -1}, {5, -1, 5, -0.85}, {5, -0.85, 12, -0.85}, {12, 1, 0, 1}};
+	const TPose2D xa(2, 0, 0), xb(3, 0.1, 0.05);
+	const auto a = observe(corridor, xa, 0, 1, 1), b = observe(corridor, xb, 0, 1, 10);
+	const TPose2D truth = relative(xa, xb);
+	const TPose2D guess(truth.x + 0.05, truth.y + 0.05, truth.phi + 0.02);
+	MatcherOptions o;
+	const MatchResult scaled = VectorMatcher(o).match(a, b, guess);
+	o.degenerateProjection = true;
+	const MatchResult r = VectorMatcher(o).match(a, b, guess);
+	ASSERT_TRUE(r.ok()) << toString(r.status);
+	ASSERT_GT(r.translationDegeneracy, 0.0);
+	ASSERT_LT(r.translationDegeneracy, o.degenerateRatio);
+	EXPECT_EQ(scaled.dof, 3);
+	EXPECT_EQ(r.dof, 2);
+	EXPECT_NEAR(r.pose.x, scaled.pose.x, 1e-12);  // the pose is the same registration's
+	const Eigen::Vector3d u(1, 0, 0), lat(0, 1, 0), rot(0, 0, 1);
+	EXPECT_GT(u.dot(scaled.information * u), 1.0);  // scaled down, not removed
+	EXPECT_LT((r.information * u).norm(), 1e-9 * r.information.norm());
+	const Eigen::Matrix3d again = marginaliseTranslation(r.information, Eigen::Vector2d(1, 0));
+	EXPECT_TRUE(again.isApprox(r.information, 1e-12));  // idempotent
+	for (Eigen::Vector3d w : {lat, rot})
+	{
+		// the part of w independent of the axis keeps its information (the quadratic scaling
+		// changed only the axis coordinate, which the marginalisation removes anyway)
+		const Eigen::Matrix3d& I = scaled.information;
+		const Eigen::Vector3d wi = w - u * (u.dot(I * w) / u.dot(I * u));
+		EXPECT_NEAR(wi.dot(r.information * wi), wi.dot(I * wi), 1e-6 * wi.dot(I * wi));
+	}
+	EXPECT_TRUE(r.information.isApprox(r.information.transpose(), 1e-12));
+	EXPECT_GE(Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(r.information).eigenvalues()(0),
+			  -1e-9 * r.information.norm());
+}

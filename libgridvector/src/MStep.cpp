@@ -134,6 +134,7 @@ Constraint MStep::constraintOf(const EdgeKey& key, EdgeKind kind, const MatchRes
 	c.matchedLength = r.matchedLength;
 	c.matchedShare = r.matchedShare;
 	c.degeneracy = r.translationDegeneracy;
+	c.dof = r.dof;
 	c.sigFrom = sigs_[key.first];
 	c.sigTo = sigs_[key.second];
 	c.checkedAt = checkedAt;
@@ -348,8 +349,9 @@ std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, 
 				const TPose2D rel = se2::relative(poses[from], poses[i]);
 				Constraint c;
 				// another pose of the pass: the nearest did not see the place, so no slide along a corridor
+				// (one whose weak direction is marginalised out cannot slide: it is kept)
 				if (registerPair(from, i, EdgeKind::Overlap, scans, rel, c, rep) &&
-					(from == p.nearest || c.degeneracy >= cfg_.matcher.degenerateRatio))
+					(from == p.nearest || c.degeneracy >= cfg_.matcher.degenerateRatio || c.dof < 3))
 				{
 					constraints_[key] = std::move(c);
 					failed_.erase(key);
@@ -495,7 +497,7 @@ void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh
 	for (const EdgeKey& key : fresh)
 	{
 		const Constraint& c = constraints_.at(key);
-		const Matrix3d covC = (c.information + reg).inverse();
+		const Matrix3d covC = (graphInformation(c) + reg).inverse();
 		int support = 0, against = 0;
 		auto it = constraints_.lower_bound({c.from > K ? c.from - K : 0, 0});
 		for (; it != constraints_.end() && it->first.first <= c.from + K; ++it)
@@ -511,7 +513,7 @@ void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh
 			const double steps = std::abs(double(o.from) - c.from) + std::abs(double(o.to) - c.to);
 			const Matrix3d chain = Vector3d(m.consistencyChainVarXY, m.consistencyChainVarXY, m.consistencyChainVarPhi).asDiagonal() *
 								 (1.0 + steps);
-			const Matrix3d cov = covC + (o.information + reg).inverse() + chain;
+			const Matrix3d cov = covC + (graphInformation(o) + reg).inverse() + chain;
 			(d.dot(cov.ldlt().solve(d)) < cfg_.mstep.consistencyChi2 ? support : against)++;
 		}
 		const bool strong = c.correspondences.size() >= size_t(m.strongMinCorrespondences) &&
@@ -556,6 +558,13 @@ void MStep::countRejection(const EdgeKey& key, const Constraint& c)
 	++r.count;
 }
 
+// The matcher's information is over z in the earlier scan's frame; Eq. 21's error has its
+// translation in z's frame (PoseGraph::errorFrameInformation).
+Matrix3d MStep::graphInformation(const Constraint& c) const
+{
+	return cfg_.mstep.informationInEdgeFrame ? PoseGraph::errorFrameInformation(c.information, c.z) : c.information;
+}
+
 void MStep::optimise(Poses& poses, MStepReport& rep)
 {
 	graph_.setNodes(poses);
@@ -581,7 +590,8 @@ void MStep::optimise(Poses& poses, MStepReport& rep)
 		e.from = c.from;
 		e.to = c.to;
 		e.z = c.z;
-		e.information = c.information;
+		e.information = graphInformation(c);
+		e.dof = c.dof;
 		e.kind = c.kind;
 		graph_.addEdge(e);
 		byEdge.push_back(&c);

@@ -49,6 +49,14 @@ Vector3d PoseGraph::error(const TPose2D& xi, const TPose2D& xj, const TPose2D& z
 	return {cz * ex + sz * ey, -sz * ex + cz * ey, mrpt::math::wrapToPi(xj.phi - xi.phi - z.phi)};
 }
 
+// e = z^-1 (+) (z (+) d) for d = (R_z e_t, e_phi): the perturbation of z is D e, D = diag(R_z, 1).
+Matrix3d PoseGraph::errorFrameInformation(const Matrix3d& information, const TPose2D& z)
+{
+	Matrix3d D = Matrix3d::Identity();
+	D.topLeftCorner<2, 2>() << std::cos(z.phi), -std::sin(z.phi), std::sin(z.phi), std::cos(z.phi);
+	return D.transpose() * information * D;
+}
+
 Matrix3d PoseGraph::odometryInformation(const TPose2D& d, const PoseGraphOptions& o)
 {
 	const double dist = std::hypot(d.x, d.y);
@@ -60,17 +68,45 @@ Matrix3d PoseGraph::odometryInformation(const TPose2D& d, const PoseGraphOptions
 	return I;
 }
 
-// Chi2 of every edge at x; DCS scale s = min(1, 2 Phi / (Phi + chi2)) for registrations.
+namespace
+{
+// Upper tail probability of the chi2 distribution with k = 1, 2, 3 degrees of freedom.
+double chi2Tail(double x, int k)
+{
+	if (x <= 0) return 1;
+	if (k == 1) return std::erfc(std::sqrt(x / 2));
+	if (k == 2) return std::exp(-x / 2);
+	return std::erfc(std::sqrt(x / 2)) + std::sqrt(2 * x / M_PI) * std::exp(-x / 2);
+}
+}  // namespace
+
+double PoseGraph::levelForDof(double level3, int dof)
+{
+	if (dof >= 3 || dof < 1 || !(level3 > 0)) return level3;
+	const double p = chi2Tail(level3, 3);
+	if (dof == 2) return p > 0 ? -2 * std::log(p) : level3;
+	double lo = 0, hi = level3;  // fewer dof: a lower level at the same tail (bisection)
+	for (int it = 0; it < 100; ++it)
+	{
+		const double mid = 0.5 * (lo + hi);
+		(chi2Tail(mid, dof) > p ? lo : hi) = mid;
+	}
+	return 0.5 * (lo + hi);
+}
+
+// Chi2 of every edge at x; DCS scale s = min(1, 2 Phi / (Phi + chi2)) for registrations
+// (Phi moved to the edge's degrees of freedom).
 double PoseGraph::updateResiduals(const std::vector<TPose2D>& x, bool robust)
 {
 	double total = 0;
-	const double phi = phi_;
+	const double phiByDof[4] = {phi_, levelForDof(phi_, 1), levelForDof(phi_, 2), phi_};
 	for (auto& e : edges_)
 	{
 		if (!e.active) continue;
 		const Vector3d r = error(x[e.from], x[e.to], e.z);
 		e.chi2 = r.dot(e.information * r);
 		e.scale = 1;
+		const double phi = phiByDof[std::clamp(e.dof, 1, 3)];
 		if (robust && e.kind != EdgeKind::Odometry && phi > 0)
 			e.scale = std::min(1.0, 2 * phi / (phi + e.chi2));
 		total += e.scale * e.scale * e.chi2;
@@ -81,8 +117,10 @@ double PoseGraph::updateResiduals(const std::vector<TPose2D>& x, bool robust)
 size_t PoseGraph::rejectOutliers()
 {
 	size_t n = 0;
+	const double levelByDof[4] = {opts_.rejectChi2, levelForDof(opts_.rejectChi2, 1),
+								  levelForDof(opts_.rejectChi2, 2), opts_.rejectChi2};
 	for (auto& e : edges_)
-		if (e.active && e.kind != EdgeKind::Odometry && e.chi2 > opts_.rejectChi2)
+		if (e.active && e.kind != EdgeKind::Odometry && e.chi2 > levelByDof[std::clamp(e.dof, 1, 3)])
 			e.active = false, ++n;
 	return n;
 }

@@ -34,6 +34,17 @@ const char* toString(MatchStatus s)
 	return "?";
 }
 
+// Schur complement of the information onto the directions independent of u = (along, 0).
+Matrix3d marginaliseTranslation(const Matrix3d& information, const Vector2d& along)
+{
+	const Vector3d u(along.x(), along.y(), 0.0);
+	const Vector3d Iu = information * u;
+	const double uIu = u.dot(Iu);
+	if (!(uIu > 0)) return information;  // u already unconstrained
+	Matrix3d out = information - Iu * Iu.transpose() / uIu;
+	return 0.5 * (out + out.transpose());
+}
+
 MatchSegment MatchSegment::from(const GridVector& v)
 {
 	MatchSegment m;
@@ -273,7 +284,13 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 	// crosswise lines) is where wrong associations slide: its information falls
 	// off quadratically below degenerate_ratio of the strongest direction.
 	const double eps = opts_.degenerateRatio;
-	if (eps > 0 && res.translationDegeneracy < eps && lmax > 0)
+	if (eps > 0 && res.translationDegeneracy < eps && lmax > 0 && opts_.degenerateProjection)
+	{
+		// what the registration observes: nothing along the weak direction, all else as measured
+		res.information = marginaliseTranslation(res.information, es.eigenvectors().col(0));
+		res.dof = 2;
+	}
+	else if (eps > 0 && res.translationDegeneracy < eps && lmax > 0)
 	{
 		const double k = std::sqrt(res.translationDegeneracy / eps);  // information x k^2
 		const Eigen::Vector2d v = es.eigenvectors().col(0);

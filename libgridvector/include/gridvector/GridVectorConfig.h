@@ -142,6 +142,7 @@ struct MatcherOptions
 	double minMatchedLength = 1.5;  //!< fewest metres of overlapping matched vectors [m]
 	double maxRms = 0.06;  //!< largest RMS point-to-line residual of an accepted match [m]
 	double degenerateRatio = 0.1;  //!< translation information below this share of the strongest direction falls off quadratically
+	bool degenerateProjection = false;  //!< below degenerate_ratio: the weak translation direction is marginalised out (rank-2 information)
 	double sigmaFloor = 0.03;  //!< smallest residual std. dev. per metre of line used in the information [m]
 	double convergenceTranslation = 1e-4;  //!< stop when a step moves less than this [m]
 	double convergenceRotation = 1e-5;  //!< ... and turns less than this [rad]
@@ -161,6 +162,7 @@ struct MatcherOptions
 		v("min_matched_length", minMatchedLength, "Fewest metres of overlapping matched vectors for an accepted registration [m]");
 		v("max_rms", maxRms, "Largest RMS point-to-line residual of an accepted registration [m]");
 		v("degenerate_ratio", degenerateRatio, "A translation direction whose information is below this share of the strongest one is treated as unconstrained (information scaled down quadratically)");
+		v("degenerate_projection", degenerateProjection, "Beyond the paper: a registration whose translation degeneracy is below degenerate_ratio (a corridor seen from both ways) keeps exactly what it observes: the weak translation direction is marginalised out of its information (rank 2, counted with 2 degrees of freedom by the pose graph's kernel and chi2 test) instead of scaled down, and the overlap search then accepts such registrations against a pass's other poses too (mstep.overlap_most_overlapping)");
 		v("sigma_floor", sigmaFloor, "Smallest residual std. dev. per metre of matched line used for the information matrix [m]");
 		v("convergence_translation", convergenceTranslation, "Registration converged when a step moves less than this [m]");
 		v("convergence_rotation", convergenceRotation, "Registration converged when a step turns less than this [rad]");
@@ -232,6 +234,7 @@ struct MStepOptions
 	double minChangedShare = 0.0;  //!< converged when the share of changed constraints is at most this
 	double passHeadingWeight = 1.0;  //!< an earlier pass's candidate pose: nearest in position + this x heading difference [m/rad]
 	bool overlapMostOverlapping = true;  //!< a pass whose nearest-in-view pose shares too little: its most overlapping poses instead (non-degenerate registrations only)
+	bool informationInEdgeFrame = false;  //!< rotate a registration's information into the frame of Eq. 21's error before optimising
 	bool reconsiderRejected = true;  //!< edges rejected by the chi2 test return to the optimiser at the next M-step
 	int reconsiderLimit = 2;  //!< ... until a pair has been rejected this many times with the same correspondences
 	int reconsiderFreeSteps = 2;  //!< rejections in the first this many M-steps do not count towards reconsider_limit
@@ -285,6 +288,7 @@ struct MStepOptions
 		v("recheck_gate_factor", recheckGateFactor, "Gates are widened by this when testing whether an edge's correspondences changed (Eq. 24-25)");
 		v("min_changed_share", minChangedShare, "EM has converged when at most this share of constraints changed");
 		v("pass_heading_weight", passHeadingWeight, "Overlap and loop search: the candidate pose of an earlier pass is the one nearest in position + this x heading difference (a scan sees what lies ahead of it; 0: position only) [m/rad]");
+		v("information_in_edge_frame", informationInEdgeFrame, "A registration's information is over the relative pose (x, y, phi) of the later scan in the earlier scan's frame; the pose graph's error (Eq. 21, z^-1 (+) x_i^-1 (+) x_j) has its translation in the later scan's frame. true: the information is rotated by the edge's relative heading into the error's frame (D^T I D, D = diag(R(z_phi), 1)); false: used as it is, which is exact only for edges whose scans face the same way (an edge between passes walked in opposite ways then gets its rotation / translation coupling with the wrong sign)");
 		v("overlap_most_overlapping", overlapMostOverlapping, "Beyond the paper: when the earlier pass's pose nearest in view (pass_heading_weight) shares less than overlap_min_length of corresponding static vectors with the pose (a pass walked the other way: the nearest pose faces away from what the pose sees; a crossing), the pass's other poses that share that much are registered, the most overlapping first, and the first registration whose translation is not degenerate (matcher.degenerate_ratio: no corridor slide) is the overlap edge; false: no overlap edge to that pass");
 		v("reconsider_rejected", reconsiderRejected, "Edges the pose graph rejected by their chi2 return to the optimiser at every M-step (switchable-constraint behaviour: an edge rejected against a wrong estimate can come back once the estimate has moved); false: a rejection stands until its scans' static vectors change");
 		v("reconsider_limit", reconsiderLimit, "With reconsider_rejected: a pair the chi2 test rejected this many times with the same vector correspondences stays out until a re-registration changes them (Eq. 24-25; stops edges flipping in and out between EM iterations); 0: no limit");

@@ -25,6 +25,7 @@ struct Constraint
 	std::vector<VectorPair> correspondences;  //!< (vector of `from`, vector of `to`), sorted
 	double rms = 0, matchedLength = 0, matchedShare = 0;
 	double degeneracy = 1;  //!< smallest / largest translation information eigenvalue
+	int dof = 3;  //!< 2: the weak translation direction is marginalised out of `information`
 	bool rejected = false;  //!< deactivated by the pose graph's residual test
 	uint64_t sigFrom = 0, sigTo = 0;  //!< static-vector signatures of both scans when registered
 	mrpt::math::TPose2D checkedAt;  //!< relative pose of the estimate when last checked
@@ -114,6 +115,8 @@ class MStep
 	bool fixesPlace(const Constraint& c) const;
 	void verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh, MStepReport& rep);
 	void optimise(Poses& poses, MStepReport& rep);
+	/** The constraint's information in the frame of the pose graph's error (mstep.information_in_edge_frame). */
+	Eigen::Matrix3d graphInformation(const Constraint& c) const;
 
 	/** Eq. 24-25: did this edge's vector correspondences change? */
 	bool correspondencesChanged(const Constraint& c, const Scans& scans, const Poses& poses) const;

@@ -29,6 +29,10 @@ struct PoseEdge
 	mrpt::math::TPose2D z;
 	Eigen::Matrix3d information = Eigen::Matrix3d::Identity();
 	EdgeKind kind = EdgeKind::Odometry;
+	/** Degrees of freedom `information` constrains (2: a corridor registration with its
+	 * along-corridor direction marginalised out); the robust kernel and the chi2 test
+	 * compare its chi2 with their levels moved to the same tail probability. */
+	int dof = 3;
 	bool active = true;  //!< false once rejected by its residual
 	double chi2 = 0;  //!< e^T Omega e at the last optimisation
 	double scale = 1;  //!< robust (DCS) scale at the last optimisation
@@ -67,11 +71,21 @@ class PoseGraph
 	/** e = z^-1 (+) (x_from^-1 (+) x_to), angle wrapped (Eq. 21's f - delta). */
 	static Eigen::Vector3d error(const mrpt::math::TPose2D& xi, const mrpt::math::TPose2D& xj,
 								 const mrpt::math::TPose2D& z);
+	/** A registration's information (over z = (x, y, phi), the later pose in the earlier
+	 * one's frame, as VectorMatcher gives it) in the frame of error(): its translation is
+	 * in z's frame, so the information is D^T I D with D = diag(R(z.phi), 1). */
+	static Eigen::Matrix3d errorFrameInformation(const Eigen::Matrix3d& information,
+												 const mrpt::math::TPose2D& z);
 	/** Odometry edge information from the motion model of the options. */
 	static Eigen::Matrix3d odometryInformation(const mrpt::math::TPose2D& delta,
 											   const PoseGraphOptions& o);
 
 	mrpt::graphs::CNetworkOfPoses2DInf toMrpt(bool activeOnly = true) const;
+
+	/** The chi2 level with `dof` (1-3) degrees of freedom whose upper tail probability
+	 * equals that of `level3` with 3: the robust kernel's width and reject_chi2 are set
+	 * for full-rank edges and moved to an edge's own dof by this. */
+	static double levelForDof(double level3, int dof);
 
    private:
 	OptimizeStats optimizeGaussNewton();

@@ -54,6 +54,9 @@ struct MatchResult
 	double matchedShare = 0;  //!< matchedLength / shorter scan's total length (<= 1)
 	double rms = 0;  //!< length-weighted RMS point-to-line residual [m]
 	double translationDegeneracy = 1;  //!< smallest / largest eigenvalue of the translation block
+	/** Degrees of freedom `information` constrains: 3, or 2 when the weak translation
+	 * direction was marginalised out (matcher.degenerate_projection). */
+	int dof = 3;
 	int iterations = 0;
 	bool ok() const { return status == MatchStatus::Ok; }
 };
@@ -65,6 +68,12 @@ struct MatchGates
 	double rho = 0.15;  //!< criterion 2: line offset at each other's centre [m]
 	double minOverlap = 0.1;  //!< overlap along the line [m]
 };
+
+/** The information of (x, y, phi) with the pure translation along `along` (a unit vector)
+ * marginalised out: I - I u u^T I / (u^T I u), u = (along, 0), so that I' u = 0 and what
+ * I says about every direction independent of u is kept (the weak direction of a corridor
+ * match, which a rotation about the earlier scan's origin is coupled to). */
+Eigen::Matrix3d marginaliseTranslation(const Eigen::Matrix3d& information, const Eigen::Vector2d& along);
 
 /** Registers the static vectors of two scans.
  *

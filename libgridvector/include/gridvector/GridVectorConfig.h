@@ -234,7 +234,7 @@ struct MStepOptions
 	double minChangedShare = 0.0;  //!< converged when the share of changed constraints is at most this
 	double passHeadingWeight = 1.0;  //!< an earlier pass's candidate pose: nearest in position + this x heading difference [m/rad]
 	bool overlapMostOverlapping = true;  //!< a pass whose nearest-in-view pose shares too little: its most overlapping poses instead (non-degenerate registrations only)
-	bool informationInEdgeFrame = false;  //!< rotate a registration's information into the frame of Eq. 21's error before optimising
+	bool informationInEdgeFrame = true;  //!< rotate a registration's information into the frame of Eq. 21's error before optimising
 	bool reconsiderRejected = true;  //!< edges rejected by the chi2 test return to the optimiser at the next M-step
 	int reconsiderLimit = 2;  //!< ... until a pair has been rejected this many times with the same correspondences
 	int reconsiderFreeSteps = 2;  //!< rejections in the first this many M-steps do not count towards reconsider_limit

@@ -55,6 +55,68 @@ TEST(GridVectorConfig, UnknownKeyIsAnErrorNamingFileSectionAndKey)
 	}
 }
 
+namespace
+{
+std::string loadError(const std::string& iniText, const std::string& source = "my.ini")
+{
+	mrpt::config::CConfigFileMemory ini(iniText);
+	GridVectorConfig c;
+	try
+	{
+		c.loadFromConfigFile(ini, "gridvector", source);
+	}
+	catch (const std::runtime_error& e)
+	{
+		return e.what();
+	}
+	return "";
+}
+
+std::string fileLoadError(const std::string& iniText)
+{
+	const std::string path = testing::TempDir() + "gv_layout_test.ini";
+	std::ofstream(path) << iniText;
+	GridVectorConfig c;
+	std::string msg;
+	try
+	{
+		c.loadFromFile(path);
+	}
+	catch (const std::runtime_error& e)
+	{
+		msg = e.what();
+	}
+	std::remove(path.c_str());
+	return msg.empty() ? msg : msg.substr(msg.find("gv_layout_test.ini"));
+}
+}  // namespace
+
+TEST(GridVectorConfig, MisspeltSectionIsAnErrorNamingIt)
+{
+	// [gridvector_gird] would drop its keys silently: every [gridvector_...] section must be a group
+	EXPECT_EQ(loadError("[gridvector_gird]\nresolution = 0.05\n"),
+			  "my.ini: unknown section [gridvector_gird] (the gridvector_ sections are extraction, grid, map, estep, "
+			  "matcher, posegraph, mstep, doors, occupancy)");
+	// MRPT matches section names case-insensitively: so do we, and other programs' sections pass
+	EXPECT_EQ(loadError("[GridVector_Grid]\nresolution = 0.05\n[gv_sim]\nseed = 3\n[GridVectorNRD]\nuse_odometry = true\n"), "");
+	GridVectorConfig c;
+	c.loadFromConfigFile(mrpt::config::CConfigFileMemory("[GridVector_Grid]\nresolution = 0.05\n"));
+	EXPECT_DOUBLE_EQ(c.grid.resolution, 0.05);
+	// a caller's own sections under the prefix are named to it
+	mrpt::config::CConfigFileMemory map("[m_00_grid]\nresolution = 0.05\n[m_00_likelihoodOpts]\nsigma = 1\n");
+	EXPECT_NO_THROW(c.loadFromConfigFile(map, "m_00", "map", {"likelihoodOpts"}));
+	EXPECT_THROW(c.loadFromConfigFile(map, "m_00", "map"), std::runtime_error);
+}
+
+TEST(GridVectorConfig, FileWithKeysOutsideSectionsOrABrokenHeaderIsAnError)
+{
+	EXPECT_EQ(fileLoadError("; gridvector\nresolution = 0.05\n[gridvector_grid]\nhalf_width = 2\n"),
+			  "gv_layout_test.ini:2: 'resolution = 0.05' is outside any [section]");
+	EXPECT_EQ(fileLoadError("[gridvector_grid\nresolution = 0.05\n"),
+			  "gv_layout_test.ini:1: section header without ']'");
+	EXPECT_EQ(fileLoadError("# comment\n\n  [gridvector_grid] ; c\n\tresolution = 0.05\n"), "");
+}
+
 TEST(GridVectorConfig, OutOfRangeValueIsRejected)
 {
 	mrpt::config::CConfigFileMemory ini("[gridvector_grid]\nresolution = -1\n");

@@ -10,6 +10,7 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
 
+#include <cstring>
 #include <fstream>
 
 #include "test_scans.h"
@@ -24,6 +25,31 @@ const auto kRoom = gvtest::room(-3, -2, 5, 3);
 mrpt::obs::CObservation2DRangeScan scanAt(const TPose2D& p)
 {
 	return gvtest::castScan(p, kRoom, {}, 361, M_PI);
+}
+
+/** A CMultiMetricMap as MRPT's apps make one: from the map section "[map]" of an .ini text. */
+mrpt::maps::CMultiMetricMap multiMapFrom(const std::string& iniText)
+{
+	mrpt::config::CConfigFileMemory ini(iniText);
+	mrpt::maps::TSetOfMetricMapInitializers inits;
+	inits.loadFromConfigFile(ini, "map");
+	mrpt::maps::CMultiMetricMap mm;
+	mm.setListOfMaps(inits);
+	return mm;
+}
+
+/** The message of the exception multiMapFrom(iniText) throws ("" if none). */
+std::string iniError(const std::string& iniText)
+{
+	try
+	{
+		multiMapFrom(iniText);
+	}
+	catch (const std::exception& e)
+	{
+		return e.what();
+	}
+	return "";
 }
 
 CGridVectorMap mapOfRoom()
@@ -61,6 +87,50 @@ TEST(CGridVectorMap, UnknownIniKeyIsRejected)
 	mrpt::config::CConfigFileMemory ini("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_grid]\nresolushun = 0.05\n");
 	mrpt::maps::TSetOfMetricMapInitializers inits;
 	EXPECT_THROW(inits.loadFromConfigFile(ini, "map"), std::exception);
+}
+
+TEST(CGridVectorMap, MisspeltSectionOfTheMapIsRejectedMrptsOwnAccepted)
+{
+	// [map_gridVectorMap_00_gird] used to be passed over: its keys silently took their defaults
+	const std::string e = iniError("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_gird]\nresolution = 0.05\n");
+	EXPECT_NE(e.find("unknown section [map_gridVectorMap_00_gird]"), std::string::npos) << e;
+	// MRPT's [<prefix>_creationOpts] (TMapGenericParams) is the map's own and is honoured
+	auto mm = multiMapFrom(
+		"[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_creationOpts]\nenableObservationInsertion = false\n");
+	mm.insertObservation(scanAt(TPose2D(0, 0, 0)));
+	EXPECT_TRUE(mm.mapByClass<CGridVectorMap>()->isEmpty());
+}
+
+TEST(CGridVectorMap, LikelihoodOptionsAreReadStrictly)
+{
+	for (const char* bad : {"sigma = abc", "sigma = 0", "decimation = 2.5", "zRandom = 1", "maxCorrDistance = nan"})
+	{
+		const std::string e = iniError(std::string("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_likelihoodOpts]\n") + bad + "\n");
+		const std::string key(bad, std::strchr(bad, ' '));
+		EXPECT_NE(e.find("[map_gridVectorMap_00_likelihoodOpts] " + key + " = "), std::string::npos) << bad << ": " << e;
+	}
+}
+
+TEST(CGridVectorMap, SerializedInsideAMultiMetricMap)
+{
+	auto a = multiMapFrom("[map]\ngridVectorMap_count = 1\npointsMap_count = 1\n[map_gridVectorMap_00_grid]\nresolution = 0.05\n");
+	for (int k = 0; k < 3; ++k)
+	{
+		const TPose2D p(0.5 * k, 0.2, 0.4 + 0.8 * k);
+		a.insertObservation(scanAt(p), mrpt::poses::CPose3D(mrpt::poses::CPose2D(p)));
+	}
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << a;
+	buf.Seek(0);
+	mrpt::maps::CMultiMetricMap b;
+	arch >> b;
+	const auto ga = a.mapByClass<CGridVectorMap>(), gb = b.mapByClass<CGridVectorMap>();
+	ASSERT_TRUE(gb);
+	EXPECT_DOUBLE_EQ(gb->config().grid.resolution, 0.05);
+	EXPECT_EQ(gb->insertedScans(), 3u);
+	ASSERT_EQ(gb->vectors().size(), ga->vectors().size());
+	for (size_t i = 0; i < ga->vectors().size(); ++i) EXPECT_EQ(gb->vectors()[i].start(), ga->vectors()[i].start());
 }
 
 TEST(CGridVectorMap, InsertedVectorsAreInGlobalCoordinates)

@@ -3,6 +3,9 @@
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/CGridVectorMap.h>
 
+#include <cctype>
+#include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include <sstream>
@@ -16,9 +19,20 @@ CGridVectorMap::TMapDefinition::TMapDefinition() = default;
 void CGridVectorMap::TMapDefinition::loadFromConfigFile_map_specific(
 	const mrpt::config::CConfigFileBase& source, const std::string& sectionNamePrefix)
 {
-	// [<prefix>_extraction], [<prefix>_grid], ... : see GridVectorConfig.
-	config.loadFromConfigFile(source, sectionNamePrefix, "CGridVectorMap config");
-	likelihoodOpts.loadFromConfigFile(source, sectionNamePrefix + "_likelihoodOpts");
+	// [<prefix>_extraction], [<prefix>_grid], ... : see GridVectorConfig; [<prefix>_creationOpts]
+	// is MRPT's (TMapGenericParams, read by TMetricMapInitializer), [<prefix>_likelihoodOpts] below.
+	try
+	{
+		config.loadFromConfigFile(source, sectionNamePrefix, "CGridVectorMap config", {"creationOpts", "likelihoodOpts"});
+		likelihoodOpts.loadFromConfigFile(source, sectionNamePrefix + "_likelihoodOpts");
+	}
+	catch (const std::exception& e)
+	{
+		// MRPT's apps print an exception as "Location: <text up to the first ']'>" and "Message: <the
+		// rest>" (its own are "file:line: [function] message"); a message holding "[section]" came
+		// out cut in two, so give it that shape.
+		throw std::runtime_error(std::string("[CGridVectorMap::TMapDefinition] ") + e.what());
+	}
 }
 
 void CGridVectorMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream& out) const
@@ -97,12 +111,24 @@ void CGridVectorMap::TLikelihoodOptions::loadFromConfigFile(
 				throw std::runtime_error(
 					"CGridVectorMap config: unknown key '" + k + "' in section [" + section + "]");
 	}
-	sigma = source.read_double(section, "sigma", sigma);
-	maxCorrDistance = source.read_double(section, "maxCorrDistance", maxCorrDistance);
-	zRandom = source.read_double(section, "zRandom", zRandom);
-	decimation = source.read_int(section, "decimation", decimation);
-	if (sigma <= 0 || maxCorrDistance <= 0 || decimation < 1 || zRandom < 0 || zRandom >= 1)
-		throw std::runtime_error("CGridVectorMap config: invalid value in section [" + section + "]");
+	// strictly: MRPT's read_double / read_int take "abc" as 0 and "2.5" as 2
+	auto read = [&](const char* key, double& field, bool integer, bool ok(double)) {
+		if (!source.keyExists(section, key)) return;
+		std::string text = source.read_string(section, key, "");
+		while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
+		char* end = nullptr;
+		const double v = std::strtod(text.c_str(), &end);
+		if (text.empty() || *end || !std::isfinite(v) || (integer && v != std::floor(v)) || !ok(v))
+			throw std::runtime_error("CGridVectorMap config: [" + section + "] " + key + " = '" + text + "' is not " +
+									 (integer ? "an integer >= 1" : "a valid value (sigma, maxCorrDistance > 0; zRandom in [0,1))"));
+		field = v;
+	};
+	double dec = decimation;
+	read("sigma", sigma, false, [](double v) { return v > 0; });
+	read("maxCorrDistance", maxCorrDistance, false, [](double v) { return v > 0; });
+	read("zRandom", zRandom, false, [](double v) { return v >= 0 && v < 1; });
+	read("decimation", dec, true, [](double v) { return v >= 1 && v <= 1e6; });
+	decimation = int(dec);
 }
 
 void CGridVectorMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const

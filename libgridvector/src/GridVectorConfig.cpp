@@ -89,12 +89,65 @@ std::set<std::string> keysOf(Group& g)
 	g.visit([&](const char* key, auto&, const char*) { keys.insert(key); });
 	return keys;
 }
+
+std::string lowerCase(std::string s)
+{
+	for (char& ch : s) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+	return s;
+}
+
+/** Every section named `<prefix>_<something>` must be one of ours: a typo in a section name
+ * ([gridvector_gird]) would otherwise drop all its keys silently. MRPT matches section names
+ * case-insensitively, so this does too. */
+void requireKnownSections(const mrpt::config::CConfigFileBase& cfg, const std::string& prefix,
+						  const std::vector<std::string>& known, const std::string& sourceName)
+{
+	const std::string head = lowerCase(prefix + "_");
+	std::vector<std::string> sections;
+	cfg.getAllSections(sections);
+	for (const auto& s : sections)
+	{
+		const std::string l = lowerCase(s);
+		if (l.size() <= head.size() || l.compare(0, head.size(), head) != 0) continue;
+		bool ok = false;
+		for (const auto& k : known) ok = ok || l.substr(head.size()) == lowerCase(k);
+		if (ok) continue;
+		std::string list;
+		for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
+		throw std::runtime_error(sourceName + ": unknown section [" + s + "] (the " + prefix + "_ sections are " + list + ")");
+	}
+}
+
+/** What MRPT's .ini reader passes over silently: a key before the first section header, or a
+ * section header without its closing bracket (its keys would land in the previous section). */
+void requireIniLayout(const std::string& text, const std::string& path)
+{
+	std::istringstream in(text);
+	std::string line;
+	bool inSection = false;
+	for (size_t n = 1; std::getline(in, line); ++n)
+	{
+		const size_t b = line.find_first_not_of(" \t\r");
+		if (b == std::string::npos || line[b] == ';' || line[b] == '#') continue;
+		const auto where = path + ":" + std::to_string(n) + ": ";
+		if (line[b] == '[')
+		{
+			if (line.find(']', b) == std::string::npos) throw std::runtime_error(where + "section header without ']'");
+			inSection = true;
+		}
+		else if (!inSection)
+			throw std::runtime_error(where + "'" + line.substr(b, 40) + "' is outside any [section]");
+	}
+}
 }  // namespace
 
 void GridVectorConfig::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& cfg, const std::string& prefix,
-	const std::string& sourceName)
+	const std::string& sourceName, const std::vector<std::string>& otherSections)
 {
+	std::vector<std::string> known = otherSections;
+	visitGroups([&](const char* group, auto&) { known.emplace_back(group); });
+	requireKnownSections(cfg, prefix, known, sourceName);
 	visitGroups([&](const char* group, auto& g) {
 		const std::string section = prefix + "_" + group;
 		if (!cfg.sectionExists(section)) return;
@@ -120,6 +173,7 @@ void GridVectorConfig::loadFromFile(const std::string& iniPath, const std::strin
 	if (!in) throw std::runtime_error(iniPath + ": cannot open config file");
 	const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 	if (in.bad()) throw std::runtime_error(iniPath + ": cannot read config file (read error)");
+	requireIniLayout(text, iniPath);
 	mrpt::config::CConfigFileMemory cfg(text);
 	try
 	{

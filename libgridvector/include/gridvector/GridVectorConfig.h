@@ -413,11 +413,14 @@ struct GridVectorConfig
 
 	/** Reads every `<prefix>_<group>` section present. Throws std::runtime_error
 	 * naming `sourceName` and the key if a section holds a key this version
-	 * does not know (a typo must not silently fall back to a default). */
+	 * does not know (a typo must not silently fall back to a default), and naming
+	 * the section if a `<prefix>_...` section is neither a group nor one of
+	 * `otherSections` (read by the caller, e.g. a map's "likelihoodOpts"). */
 	void loadFromConfigFile(
 		const mrpt::config::CConfigFileBase& cfg, const std::string& prefix = "gridvector",
-		const std::string& sourceName = "config");
-	/** Loads an .ini file; throws std::runtime_error("FILE: problem"). */
+		const std::string& sourceName = "config", const std::vector<std::string>& otherSections = {});
+	/** Loads an .ini file; throws std::runtime_error("FILE: problem"), also "FILE:LINE: problem"
+	 * for a key outside any section or a section header without its ']'. */
 	void loadFromFile(const std::string& iniPath, const std::string& prefix = "gridvector");
 	/** Writes all sections as a valid .ini file. */
 	void dumpAsIni(std::ostream& out, const std::string& prefix = "gridvector") const;

@@ -199,7 +199,10 @@ TEST(CarmenReader, RobotLaserAndRawLaser)
 TEST(CarmenReader, MalformedLinesNameFileAndLine)
 {
 	const std::string ok = flaser(5, 1.0);
-	EXPECT_EQ(errorOf(ok + "FLASER 5 1 1 1 1 1 0 0 0 0 0 0\n"), "mem.log:2: FLASER: expected 16 fields, found 13");
+	EXPECT_EQ(errorOf(ok + "FLASER 5 1 1 1 1 1 0 0 0 0 0 0\n"), "mem.log:2: FLASER: 5 beams announced: expected 16 fields, found 13");
+	// a beam count one too high or too low names the count, not a pose field read as a range
+	EXPECT_EQ(errorOf("FLASER 6 1 1 1 1 1 -1.5 0 0 0 0 0 1 h 1\n"), "mem.log:1: FLASER: 6 beams announced: expected 17 fields, found 16");
+	EXPECT_EQ(errorOf("FLASER 4 1 1 1 1 1 -1.5 0 0 0 0 0 1 h 1\n"), "mem.log:1: FLASER: 4 beams announced: expected 15 fields, found 16");
 	EXPECT_EQ(errorOf("FLASER 5 1 nan 1 1 1 0 0 0 0 0 0 1 h 1\n"),
 			  "mem.log:1: FLASER range 1 is 'nan' (not a finite number)");
 	EXPECT_EQ(errorOf("\n\nFLASER 5 1 1 -2 1 1 0 0 0 0 0 0 1 h 1\n"),
@@ -280,6 +283,41 @@ TEST(TrajectoryFile, RoundTripAndErrors)
 	}
 	EXPECT_THROW(writeTrajectory("/nonexistent-dir/x.txt", t), std::runtime_error);
 	fs::remove(p);
+}
+
+TEST(TrajectoryFile, PosesAtScansByPositionOrByTime)
+{
+	// csail-corrected prints its timestamps with six digits: many scans share one time
+	LogData log;
+	for (double t : {100.0, 100.0, 100.0, 110.0})
+	{
+		ScanRecord r;
+		r.timestamp = t;
+		log.scans.push_back(r);
+	}
+	const Trajectory perScan = {{100, {0, 0, 0}}, {100, {1, 0, 0}}, {100, {2, 0, 0}}, {110, {3, 0, 0}}};
+	auto p = posesAtScans(log, perScan, "est.txt");  // one pose per scan, in order: by position
+	ASSERT_EQ(p.size(), 4u);
+	for (size_t i = 0; i < 4; i++) EXPECT_DOUBLE_EQ(p[i]->x, double(i));
+	// by time, the three poses at t = 100 could not be told apart: an error, not the first of them
+	const Trajectory fewer = {{100, {0, 0, 0}}, {100, {1, 0, 0}}, {110, {3, 0, 0}}};
+	try
+	{
+		posesAtScans(log, fewer, "est.txt");
+		ADD_FAILURE() << "ambiguous match accepted";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()).rfind("est.txt: 2 different poses at t = 100.000000: scans cannot be matched", 0), 0u)
+			<< e.what();
+	}
+	// unique times (here out of order, one repeated with the same pose): the nearest within maxDt
+	const Trajectory byTime = {{110.02, {3, 0, 0}}, {100.01, {1, 0, 0}}, {100.01, {1, 0, 0}}};
+	p = posesAtScans(log, byTime, "est.txt");
+	EXPECT_DOUBLE_EQ(p[0]->x, 1);
+	EXPECT_DOUBLE_EQ(p[3]->x, 3);
+	p = posesAtScans(log, {{105, {5, 0, 0}}}, "est.txt");
+	for (const auto& q : p) EXPECT_FALSE(q);  // nothing within 0.05 s
 }
 
 TEST(AtomicFile, NothingAppearsUntilCommit)

@@ -190,6 +190,37 @@ TEST(RawlogReader, TruncatedOrCorruptFilesAreErrors)
 	for (const auto& p : {plain, cut, bad, cutGz}) fs::remove(p);
 }
 
+TEST(RawlogReader, ZeroBeamScanIsAnErrorAndTimeGoingBackIsAWarning)
+{
+	LogData log;
+	for (int k = 0; k < 3; k++)
+	{
+		ScanRecord r;
+		r.timestamp = 1000 + 0.2 * k;
+		r.scan = mrpt::obs::CObservation2DRangeScan::Create();
+		r.scan->aperture = float(M_PI);
+		r.scan->maxRange = 30;
+		r.scan->resizeScan(181);
+		for (size_t i = 0; i < 181; i++) r.scan->setScanRange(i, 2.0f), r.scan->setScanRangeValidity(i, true);
+		r.scan->timestamp = mrpt::Clock::fromDouble(r.timestamp);
+		r.hasOdometry = true;
+		log.scans.push_back(r);
+	}
+	std::swap(log.scans[1].timestamp, log.scans[2].timestamp);  // out of order
+	std::swap(log.scans[1].scan->timestamp, log.scans[2].scan->timestamp);
+	const std::string unsorted = tmp("unsorted.rawlog");
+	writeRawlog(unsorted, log, {RawlogFormat::Observations, false});
+	const LogData back = readLog(unsorted);
+	ASSERT_EQ(back.scans.size(), 3u);
+	EXPECT_NE(back.summary.find("warning: 1 scan timestamps do not increase"), std::string::npos) << back.summary;
+
+	log.scans[2].scan->resizeScan(0);  // a scanner that returned nothing
+	const std::string empty = tmp("empty_scan.rawlog");
+	writeRawlog(empty, log, {RawlogFormat::Observations, false});
+	EXPECT_EQ(errorOf(empty), empty + ": entry 6: 2D scan with 0 beams");
+	for (const auto& p : {unsorted, empty}) fs::remove(p);
+}
+
 TEST(Carmen2Rawlog, ToolWritesRawlogsMrptCanRead)
 {
 	const std::string bin = std::string(GV_BIN_DIR) + "/gv-carmen2rawlog";

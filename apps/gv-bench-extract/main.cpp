@@ -55,7 +55,7 @@ int run(const io::ArgParser& args)
 	GridVectorConfig cfg;
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
 	const io::LogData data = io::readLog(log);
-	if (data.scans.empty()) throw std::runtime_error(log + ": no laser scans");
+	io::requireScans(data);
 	const VectorExtractor ex(cfg.extraction, cfg.grid);
 
 	size_t vectors = 0, beams = 0;

@@ -286,7 +286,7 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 
 int main(int argc, char** argv)
 {
-	io::ArgParser args("gv-bench-map", "gv-bench-map [options] LOG...");
+	io::ArgParser args("gv-bench-map", "[options] LOG...");
 	args.option("config", "FILE.ini", "gridvector parameters");
 	args.option("max-scans", "N", "use at most N scans of each log");
 	args.option("band", "M", "compare cells within M metres of a vector (default 0.2)");

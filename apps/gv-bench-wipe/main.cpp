@@ -87,7 +87,7 @@ int run(const io::ArgParser& args)
 	ro.quiet = true;
 	const io::LogData data = io::readLog(log, ro);
 	const io::Trajectory traj = io::readTrajectory(trajPath);
-	if (data.scans.empty()) throw std::runtime_error(log + ": no laser scans");
+	io::requireScans(data);
 	if (traj.size() != data.scans.size())
 		throw std::runtime_error(trajPath + ": " + std::to_string(traj.size()) + " poses for " +
 								 std::to_string(data.scans.size()) + " scans");

@@ -10,9 +10,9 @@
 
 namespace gridvector::app
 {
-/** Starting poses for EM: each scan takes the pose of `path` nearest in time
- * (within maxDt); a scan with none follows its predecessor by its odometry
- * increment. Throws "PATH: ..." if no scan matches. */
+/** Starting poses for EM: each scan takes its pose of `path` (io::posesAtScans: by position
+ * for a per-scan file, else nearest in time within maxDt); a scan with none follows its
+ * predecessor by its odometry increment. Throws "PATH: ..." if no scan matches. */
 std::vector<mrpt::math::TPose2D> initialTrajectory(const io::LogData& log,
 												   const std::vector<mrpt::math::TPose2D>& odometry,
 												   const std::string& path, double maxDt = 0.05);

@@ -74,7 +74,7 @@ int run(const io::ArgParser& args)
 	io::ReadOptions ro;
 	ro.quiet = quiet;
 	const io::LogData log = io::readLog(input, ro);
-	if (log.scans.empty()) throw std::runtime_error(input + ": no laser scans");
+	io::requireScans(log);
 	fig.scans = log.scans.size();
 	fig.readSeconds = since(t0);
 	if (!quiet) std::fprintf(stderr, "%s\n", log.summary.c_str());
@@ -111,7 +111,9 @@ int run(const io::ArgParser& args)
 			dumpIteration(log, it, poses);
 		},
 		[&](const char* stage, int iteration, double f) {
-			progress.show("iteration " + std::to_string(iteration) + ": " + stage, f);
+			progress.show("iteration " + std::to_string(iteration) + " of at most " +
+							  std::to_string(cfg.mstep.maxIterations) + ": " + stage,
+						  f);
 		});
 	progress.done();
 	fig.emSeconds = since(t1);

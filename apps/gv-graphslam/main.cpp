@@ -9,6 +9,7 @@
 #include <gridvector/graphslam/RunRecorder.h>
 #include <gridvector/io/ArgParser.h>
 #include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/FileBytes.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/containers/yaml.h>
@@ -140,6 +141,7 @@ Settings settingsFrom(const io::ArgParser& a, const DeciderRegistry& reg)
 void requireFile(const std::string& path, const char* what)
 {
 	if (!mrpt::system::fileExists(path)) throw std::runtime_error(path + ": no such " + std::string(what));
+	io::checkReadableFile(path);  // a directory passed MRPT's fileExists and failed in the engine as "unknown error"
 }
 
 /** MRPT 2.5's CGraphSlamEngine::readGTFile checks the line layout only in debug builds and

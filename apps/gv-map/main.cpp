@@ -32,7 +32,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace
 {
-/** The pose of each scan: the log's, or the trajectory's nearest in time (within 50 ms). */
+/** The pose of each scan: the log's, or the trajectory's (io::posesAtScans: by position or by time within 50 ms). */
 std::vector<std::optional<mrpt::math::TPose2D>> posesFor(const io::LogData& log, const std::string& source)
 {
 	std::vector<std::optional<mrpt::math::TPose2D>> out(log.scans.size());
@@ -46,21 +46,9 @@ std::vector<std::optional<mrpt::math::TPose2D>> posesFor(const io::LogData& log,
 		}
 		return out;
 	}
-	io::Trajectory traj = io::readTrajectory(source);
+	const io::Trajectory traj = io::readTrajectory(source);
 	if (traj.empty()) throw std::runtime_error(source + ": no poses");
-	std::sort(traj.begin(), traj.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-	for (size_t i = 0; i < log.scans.size(); ++i)
-	{
-		const double t = log.scans[i].timestamp;
-		auto it = std::lower_bound(traj.begin(), traj.end(), t,
-								   [](const auto& p, double v) { return p.first < v; });
-		double best = 1e300;
-		const mrpt::math::TPose2D* pose = nullptr;
-		for (auto c : {it, it == traj.begin() ? it : it - 1})
-			if (c != traj.end() && std::abs(c->first - t) < best) best = std::abs(c->first - t), pose = &c->second;
-		if (pose && best <= 0.05) out[i] = *pose;
-	}
-	return out;
+	return io::posesAtScans(log, traj, source);
 }
 
 int run(const io::ArgParser& args)
@@ -74,7 +62,7 @@ int run(const io::ArgParser& args)
 	io::ReadOptions ro;
 	ro.quiet = quiet;
 	const io::LogData log = io::readLog(input, ro);
-	if (log.scans.empty()) throw std::runtime_error(input + ": no laser scans");
+	io::requireScans(log);
 	const auto poses = posesFor(log, poseSource);
 
 	mrpt::maps::CGridVectorMap map(cfg);
@@ -120,7 +108,7 @@ int run(const io::ArgParser& args)
 
 int main(int argc, char** argv)
 {
-	io::ArgParser args("gv-map", "gv-map --input LOG --poses {log|FILE} --out DIR [--config FILE.ini] [--quiet]");
+	io::ArgParser args("gv-map", "--input LOG --poses {log|FILE} --out DIR [--config FILE.ini] [--quiet]");
 	args.option("input", "LOG", "CARMEN log (.log/.clf, optionally .gz) or MRPT rawlog");
 	args.option("poses", "log|FILE", "poses stored in the log, or a 't x y theta' trajectory file");
 	args.option("out", "DIR", "output directory (created if missing)");

@@ -32,6 +32,11 @@ sed '5s/^\(FLASER 181 [^ ]* [^ ]* \)[^ ]*/\1-1.5/' room.log > neg.log
 : > empty.log
 printf '[gridvector_grid]\nresolutoin = 0.05\n' > typo.ini
 printf '[gridvector_grid]\nhalf_width = 1.5\n' > badval.ini
+printf '[gridvector_gird]\nresolution = 0.05\n' > sectypo.ini  # a misspelt section: its keys were dropped silently
+printf 'resolution = 0.05\n[gridvector_grid]\nhalf_width = 2\n' > nosection.ini
+printf '[gridvector_grid\nresolution = 0.05\n' > openheader.ini
+sed '5s/^FLASER 181/FLASER 182/' room.log > beamcount.log  # one beam more than the line has
+mkdir -p dir.rawlog
 printf '\001\377\033[2Jab 1 2 3\n' > binary.txt  # a binary token with a terminal escape
 printf 'hello world\n1 2\n' > garbage.txt
 printf '1000 nan 0 0\n1000.2 1 1 1\n' > nantraj.txt
@@ -71,6 +76,7 @@ expect 1 "inf.log:5: FLASER range 2 is 'inf'" o3/map.gvmap -- "$B/gv-map" --inpu
 expect 1 "neg.log:5: FLASER range 2 is -1.5 (negative)" e3/report.json -- "$B/gv-em-slam" --input neg.log --out e3 --quiet
 expect 1 "emptyscan.log:4: FLASER: zero beams" o4/map.gvmap -- "$B/gv-map" --input emptyscan.log --poses log --out o4 --quiet
 expect 1 "emptyscan.log:4: FLASER beam count is 0" b4.log -- "$B/gv-bench-log" emptyscan.log b4 --quiet
+expect 1 "beamcount.log:5: FLASER: 182 beams announced: expected 193 fields, found 192" e4/report.json -- "$B/gv-em-slam" --input beamcount.log --out e4 --quiet
 expect 1 "empty.log: no laser scans" e5/report.json -- "$B/gv-em-slam" --input empty.log --out e5 --quiet
 expect 1 "empty.log: no odometry" - -- "$B/gv-eval" traj empty.log traj.txt
 expect 1 "trunc.rawlog: truncated or corrupt gzip data" o6/map.gvmap -- "$B/gv-map" --input trunc.rawlog --poses log --out o6 --quiet
@@ -79,6 +85,9 @@ expect 1 "trunc.rawlog: entry" g6/trajectory.txt -- "$B/gv-graphslam" --2d -i "$
 expect 1 "missing.log: cannot read" - -- "$B/gv-map" --input missing.log --poses log --out n1/a/b --quiet
 expect 1 "missing.log: cannot read" - -- "$B/gv-em-slam" --input missing.log --out n2/a --quiet
 expect 1 "missing.rawlog" - -- "$B/gv-graphslam" --2d -i "$INI" -r missing.rawlog --disable-visuals --output-dir n3/a
+expect 1 "dir.rawlog: cannot read (it is a directory)" g7/trajectory.txt -- "$B/gv-graphslam" --2d -i "$INI" -r dir.rawlog --disable-visuals --output-dir g7
+expect 1 "dir.rawlog: cannot read (it is a directory)" - -- "$B/gv-graphslam" --2d -i dir.rawlog -r room.rawlog --disable-visuals --output-dir g7
+expect 1 "dir.rawlog: cannot read (it is a directory)" o7/map.gvmap -- "$B/gv-map" --input dir.rawlog --poses log --out o7 --quiet
 expect 1 "missing.log: cannot read" b7.log -- "$B/gv-bench-log" missing.log b7 --quiet
 expect 1 "missing.log: cannot read" - -- "$B/gv-bench-extract" missing.log
 expect 1 "missing.txt: cannot read" - -- "$B/gv-eval" traj traj.txt missing.txt
@@ -89,6 +98,11 @@ expect 1 "typo.ini: unknown key 'resolutoin'" e8/report.json -- "$B/gv-em-slam" 
 expect 1 "typo.ini: unknown key 'resolutoin'" - -- "$B/gv-bench-extract" room.log --config typo.ini
 expect 1 "typo.ini: unknown key 'resolutoin'" m8.gvmap -- "$B/gv-map-info" --from-simplemap x.simplemap --config typo.ini --save m8.gvmap
 expect 1 "typo.ini: unknown key 'resolutoin'" g8/trajectory.txt -- "$B/gv-graphslam" --2d -i typo.ini -r room.rawlog --disable-visuals --output-dir g8
+expect 1 "sectypo.ini: unknown section [gridvector_gird] (the gridvector_ sections are extraction, grid," e8/report.json -- "$B/gv-em-slam" --input room.log --out e8 --config sectypo.ini --quiet
+expect 1 "sectypo.ini: unknown section [gridvector_gird]" o8/map.gvmap -- "$B/gv-map" --input room.log --poses log --out o8 --config sectypo.ini --quiet
+expect 1 "sectypo.ini: unknown section [gridvector_gird]" - -- "$B/gv-config" --check sectypo.ini
+expect 1 "nosection.ini:1: 'resolution = 0.05' is outside any [section]" e8/report.json -- "$B/gv-em-slam" --input room.log --out e8 --config nosection.ini --quiet
+expect 1 "openheader.ini:1: section header without ']'" - -- "$B/gv-config" --check openheader.ini
 expect 1 "badval.ini: [gridvector_grid] half_width = '1.5' is not an integer" e8/report.json -- "$B/gv-em-slam" --input room.log --out e8 --config badval.ini --quiet
 expect 1 "badval.ini: [gridvector_grid] half_width = '1.5' is not an integer" - -- "$B/gv-config" --check badval.ini
 expect 1 "typo.ini: no [gv_sim] section" s8/sim.log -- "$B/gv-sim" --config typo.ini --out s8 --quiet
@@ -118,6 +132,10 @@ expect 1 "nodir/x.rawlog: cannot write (No such file or directory)" - -- "$B/gv-
 expect 1 "nodir/b.log: cannot write (No such file or directory)" - -- "$B/gv-bench-log" room.log nodir/b --quiet
 # garbage trajectories (MRPT's own ground-truth reader would crash on the last one)
 expect 1 "garbage.txt:1: expected 't x y theta', found 2 fields" o9/map.gvmap -- "$B/gv-map" --input room.log --poses garbage.txt --out o9 --quiet
+# poses matched by time: two different poses at the time nearest a scan cannot be told apart
+{ head -3 traj.txt; awk 'NR == 3 { print $1, $2 + 1, $3, $4 }' traj.txt; tail -n +5 traj.txt; } > twice.txt
+expect 1 "twice.txt: 2 different poses at t = 1000.400000: scans cannot be matched to poses by time" o9/map.gvmap -- "$B/gv-map" --input room.log --poses twice.txt --out o9 --quiet
+expect 1 "twice.txt: 2 different poses at t = 1000.400000" e9/report.json -- "$B/gv-em-slam" --input room.log --init twice.txt --out e9 --quiet
 expect 1 "nantraj.txt:1: x is 'nan'" e9/report.json -- "$B/gv-em-slam" --input room.log --init nantraj.txt --out e9 --quiet
 expect 1 "garbage.txt:1: expected 't x y theta'" - -- "$B/gv-eval" traj garbage.txt traj.txt
 expect 1 "nantraj.txt:1: x is 'nan'" - -- "$B/gv-eval" traj traj.txt nantraj.txt
@@ -139,6 +157,10 @@ expect 1 "garbage.txt:1: ground-truth lines must be 't x y theta'" g9/trajectory
 expect 1 "trunc.gvmap: not a valid mrpt::maps::CGridVectorMap file" m10.gvmap -- "$B/gv-map-info" trunc.gvmap --save m10.gvmap
 expect 1 "garbage.gvmap: not a valid mrpt::maps::CGridVectorMap file" - -- "$B/gv-map-info" garbage.gvmap
 # the tools converted to ArgParser: bad usage is one line and 2, --help is 0
+for tool in gv-map gv-em-slam gv-sim gv-eval gv-carmen2rawlog gv-bench-log gv-bench-map gv-bench-wipe gv-graphslam; do
+  "$B/$tool" --help | head -1 | grep -q "^usage: $tool $tool" && fail "$tool --help: the usage line repeats the tool's name"
+  "$B/$tool" --help | grep -q "^usage: $tool " || fail "$tool --help"
+done
 for tool in gv-map-info gv-config gv-bench-extract; do
   expect 2 "$tool: unknown option --frobnicate (see --help)" - -- "$B/$tool" --frobnicate
   "$B/$tool" --help | grep -q "^usage: $tool " || fail "$tool --help"

@@ -184,10 +184,15 @@ void CarmenParser::onFlaser(const Tokens& t, bool rear)
 	const size_t n = count(t, 1, what + " beam count");
 	if (n == 0) parseError(pos_, what + ": zero beams");
 	const CarmenLaserParams& lp = rear ? params_.rear() : params_.front();
+	// a wrong beam count shifts every field: say so, not "range 181 is -1.6" (the pose's x read as a range)
+	const size_t trailer = 2 + n + 6;
+	if (t.size() >= 2 + n && t.size() != trailer + 3 && t.size() != trailer + 1)
+		parseError(pos_, what + ": " + std::to_string(n) + " beams announced: expected " + std::to_string(trailer + 3) +
+							 " fields, found " + std::to_string(t.size()));
 	ScanMessage m;
 	m.type = what;
 	m.ranges = ranges(t, 2, n, what);
-	const double ts = timestampAfter(t, 2 + n + 6, what);
+	const double ts = timestampAfter(t, trailer, what);
 	m.layout = carmenBeamLayout(n, lp);
 	m.flipped = lp.flipped;
 	m.maxRange = lp.maxRange;

@@ -91,6 +91,8 @@ void Crc32::update(const void* data, size_t len)
 	state_ = c;
 }
 
+void checkReadableFile(const std::string& path) { openOrThrow(path); }
+
 bool isGzipFile(const std::string& path)
 {
 	std::ifstream f = openOrThrow(path);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <cctype>
+#include <stdexcept>
 
 namespace gridvector::io
 {
@@ -60,6 +61,17 @@ LogData readLog(const std::string& path, const ReadOptions& opt)
 	LogData log = parseCarmenLog(bytes, path, opt);
 	if (opt.detectNoReturnRange) applyNoReturnRange(log);
 	return log;
+}
+
+void requireScans(const LogData& log)
+{
+	if (!log.scans.empty()) return;
+	// the summary without "path: 0 scans" and the warning that says the same
+	std::string what = log.summary.substr(std::min(log.summary.size(), log.source.size() + 2));
+	for (const std::string noise : {"0 scans (); ", "0 scans; ", "; warning: no laser scans in the file",
+									"; warning: no 2D laser scans in the file"})
+		if (const size_t p = what.find(noise); p != std::string::npos) what.erase(p, noise.size());
+	throw std::runtime_error(log.source + ": no laser scans" + (what.empty() ? "" : " (" + what + ")"));
 }
 
 Trajectory trajectoryOf(const LogData& log, bool logPose)

@@ -131,6 +131,7 @@ void RawlogParser::onObservation(const CObservation::Ptr& obs, bool inFrame)
 /** Beams flagged valid must have a finite, non-negative range. */
 void RawlogParser::checkRanges(const CObservation2DRangeScan& s) const
 {
+	if (s.getScanSize() == 0) fail("2D scan with 0 beams");  // as a CARMEN FLASER with none
 	for (size_t i = 0; i < s.getScanSize(); i++)
 	{
 		const float r = s.getScanRange(i);
@@ -151,6 +152,10 @@ void RawlogParser::finish()
 			r.odometry = *odomObs_.at(r.timestamp);
 			r.hasOdometry = true;
 		}
+	size_t backwards = 0;  // as the CARMEN reader: scans are used in file order, said when time disagrees
+	for (size_t i = 1; i < out_.scans.size(); i++) backwards += out_.scans[i].timestamp <= out_.scans[i - 1].timestamp;
+	if (backwards > 0 && noTimestamp_ < out_.scans.size())
+		out_.warnings.push_back(std::to_string(backwards) + " scan timestamps do not increase (unsorted or repeated timestamps in the file)");
 	if (noTimestamp_) out_.warnings.push_back(std::to_string(noTimestamp_) + " scans have no timestamp (set to 0)");
 	if (out_.scans.empty()) out_.warnings.push_back("no 2D laser scans in the file");
 	std::string s = out_.source + ": " + std::to_string(out_.scans.size()) + " scans; ";

@@ -19,6 +19,9 @@ class Crc32
 	uint32_t state_ = 0xFFFFFFFFu;
 };
 
+/** Throws "path: cannot read (reason)" unless path is a file that can be opened for reading
+ * (a directory: "it is a directory"; missing: "No such file or directory"). */
+void checkReadableFile(const std::string& path);
 /** True if the file starts with the gzip magic bytes 1f 8b. */
 bool isGzipFile(const std::string& path);
 

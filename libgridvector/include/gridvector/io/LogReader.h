@@ -5,6 +5,7 @@
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,10 +51,22 @@ struct ReadOptions
  * Throws std::runtime_error("file:line: what is wrong"). */
 LogData readLog(const std::string& path, const ReadOptions& opt = {});
 
+/** Throws "path: no laser scans (what the file holds)" if log has no scan: e.g.
+ * "kf-slam_demo.rawlog: no laser scans (actions+sensory-frames format (...), 120 CObservationBearingRange ignored)". */
+void requireScans(const LogData& log);
+
 using Trajectory = std::vector<std::pair<double, mrpt::math::TPose2D>>;
 
 /** Trajectory files "t x y theta" (one pose per line, '#' comments, extra columns ignored). */
 Trajectory readTrajectory(const std::string& path);
+/** The pose of `traj` (read from `source`) for each scan of `log`. A trajectory with one pose per
+ * scan, in the log's order and within maxDt of each scan's time (gv-em-slam's and gv-graphslam's
+ * trajectory.txt), is matched by position, so logs with repeated timestamps (csail-corrected prints
+ * six digits) get their own poses back; otherwise each scan takes the pose nearest in time within
+ * maxDt (none: unset). Throws "source: ..." if that nearest time is shared by poses that differ
+ * (matching by time would pick one of them arbitrarily). */
+std::vector<std::optional<mrpt::math::TPose2D>> posesAtScans(const LogData& log, const Trajectory& traj,
+															 const std::string& source, double maxDt = 0.05);
 /** Writes "t x y theta" lines (%.6f), atomically. */
 void writeTrajectory(const std::string& path, const Trajectory& traj);
 

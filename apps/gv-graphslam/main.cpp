@@ -266,6 +266,32 @@ class StdinFromDevNull
 	int saved_;
 };
 
+/** --quiet: MRPT's engine and deciders print their start-up messages (before their logging level
+ * can be set), an INFO-level exception dump about a missing RGB-D info file and, when destroyed,
+ * their timing tables, all on stdout. While this lives, stdout goes to /dev/null. */
+class StdoutToDevNull
+{
+   public:
+	explicit StdoutToDevNull(bool on) : saved_(on ? dup(1) : -1)
+	{
+		if (saved_ < 0) return;
+		std::fflush(stdout), std::cout.flush();
+		const int null = open("/dev/null", O_WRONLY);
+		if (null >= 0) dup2(null, 1), close(null);
+	}
+	~StdoutToDevNull()
+	{
+		if (saved_ < 0) return;
+		std::fflush(stdout), std::cout.flush();
+		dup2(saved_, 1), close(saved_);
+	}
+	StdoutToDevNull(const StdoutToDevNull&) = delete;
+	StdoutToDevNull& operator=(const StdoutToDevNull&) = delete;
+
+   private:
+	int saved_;
+};
+
 /** Checks the grid-vector sections before the engine reads them: errors
  * thrown inside the engine's constructor reach us mangled by MRPT_END. */
 GridVectorConfig validateGridVectorSections(const mrpt::config::CConfigFileBase& ini, const Settings& s)
@@ -284,8 +310,10 @@ GridVectorConfig validateGridVectorSections(const mrpt::config::CConfigFileBase&
 	return c;
 }
 
-int run(const Settings& s, DeciderRegistry& reg)
+/** Runs the engine; returns the summary line. */
+std::string run(const Settings& s, DeciderRegistry& reg)
 {
+	const StdoutToDevNull quiet(s.quiet);  // declared first: the engine and deciders are destroyed inside it
 	requireFile(s.ini, "config file");
 	requireFile(s.rawlog, "rawlog");
 	if (!s.groundTruth.empty()) requireGroundTruth(s.groundTruth);
@@ -335,13 +363,15 @@ int run(const Settings& s, DeciderRegistry& reg)
 	rec.buildMap(graph.nodes, map);
 	writeGridVectorMap(dir, map);
 
-	std::printf("gv-graphslam: %s + %s + %s: %zu entries, %zu scans, %zu nodes, %zu edges (%zu loop "
+	char summary[1024];
+	std::snprintf(summary, sizeof summary,
+				"gv-graphslam: %s + %s + %s: %zu entries, %zu scans, %zu nodes, %zu edges (%zu loop "
 				"closures), %zu map vectors; SLAM %.2f s -> %s/\n",
 				s.nodeReg.c_str(), s.edgeReg.c_str(), s.optimizer.c_str(), steps, rec.scanCount(),
 				graph.nodeCount(), graph.edgeCount(),
 				loopClosures(graph, ini.read_int("EdgeRegistrationDeciderParameters", "LC_min_nodeid_diff", 30)),
 				map.vectors().size(), slamSeconds, dir.c_str());
-	return 0;
+	return summary;
 }
 }  // namespace
 
@@ -360,7 +390,9 @@ int main(int argc, char** argv)
 		[&] {
 			DeciderRegistry reg;
 			if (listings(args, reg)) return 0;
-			return run(settingsFrom(args, reg), reg);
+			const std::string summary = run(settingsFrom(args, reg), reg);
+			std::fputs(summary.c_str(), stdout);
+			return 0;
 		},
 		style);
 }

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 #include <stdexcept>
 
@@ -81,6 +82,24 @@ void writeGvmap(const std::string& path, const GridVectorConfig& cfg, const std:
 
 namespace
 {
+/** s as a JSON string: quotes, backslashes and control bytes (a tab in a file name) escaped. */
+std::string jsonString(const std::string& s)
+{
+	std::string out = "\"";
+	for (const char c : s)
+	{
+		if (c == '"' || c == '\\') out += '\\', out += c;
+		else if (static_cast<unsigned char>(c) < 0x20)
+		{
+			char buf[8];
+			std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(static_cast<unsigned char>(c)));
+			out += buf;
+		}
+		else out += c;
+	}
+	return out + "\"";
+}
+
 void iterationJson(std::ostream& o, const EmIteration& it)
 {
 	const auto& m = it.mstep;
@@ -109,9 +128,7 @@ void writeReport(const std::string& path, const RunFigures& run, const EmResult&
 		double ls = 0, ld = 0;
 		for (const auto& v : res.finalVectors)
 			(v.state == VectorState::Dynamic ? nd : ns)++, (v.state == VectorState::Dynamic ? ld : ls) += v.length();
-		std::string in = run.input;
-		for (size_t p = 0; (p = in.find_first_of("\"\\", p)) != std::string::npos; p += 2) in.insert(p, "\\");
-		o << "{\n  \"input\": \"" << in << "\",\n  \"config\": " << run.configJson << ",\n  \"scans\": " << run.scans
+		o << "{\n  \"input\": " << jsonString(run.input) << ",\n  \"config\": " << run.configJson << ",\n  \"scans\": " << run.scans
 		  << ",\n  \"local_vectors\": " << run.localVectors << ",\n  \"keyframes\": " << res.keyframes
 		  << ",\n  \"iterations_run\": " << res.iterations.size()
 		  << ",\n  \"converged\": " << (res.converged ? "true" : "false") << ",\n  \"iterations\": [\n";

@@ -4,7 +4,10 @@
 set -euo pipefail
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 "$GV_BIN/gv-sim" --world long-corridor --seed 2 --scans 400 --out "$tmp/sim" --quiet
-"$GV_BIN/gv-em-slam" --input "$tmp/sim/sim.log" --out "$tmp/out" --quiet
+# the input under a name with a tab, a quote and a backslash: report.json must still be valid JSON
+odd="$tmp/$(printf 'sim\tlog "1"\\a.log')"
+cp "$tmp/sim/sim.log" "$odd"
+"$GV_BIN/gv-em-slam" --input "$odd" --out "$tmp/out" --quiet
 for f in trajectory.txt map.gvmap vectors.txt vectors.svg occupancy.png occupancy.pgm occupancy.yaml doors.txt report.json; do
   [ -s "$tmp/out/$f" ] || { echo "missing or empty: $f"; exit 1; }
 done
@@ -14,6 +17,7 @@ grep -q '"converged": true' "$tmp/out/report.json" || { echo "EM did not converg
 python3 - "$tmp/out/report.json" <<'PY' || { echo "report.json: phase timings missing or inconsistent"; exit 1; }
 import json, sys
 r = json.load(open(sys.argv[1]))
+assert r["input"].endswith('sim\tlog "1"\\a.log'), r["input"]
 assert r["keyframes"] > 0
 for it in r["iterations"]:
     assert 0 <= it["wipe_seconds"] and 0 <= it["classify_seconds"]

@@ -311,6 +311,7 @@ struct TwoPassRoom
 {
 	std::vector<TPose2D> truth, odo;
 	std::vector<std::vector<MatchSegment>> scans;
+	std::vector<std::vector<MatchSegment>> all;  //!< what each pose sees, the E-step's dynamic vectors too
 	std::vector<size_t> first, second;  //!< pose indices of the two passes
 };
 
@@ -327,6 +328,7 @@ TwoPassRoom twoPassRoom()
 		if (inRoom) s = matchtest::observe(bottomOnly ? std::vector<matchtest::WorldSeg>{room[0]} : room, p, 0.003,
 										   unsigned(t), 1000 * (t + 1));
 		w.scans.push_back(s);
+		w.all.push_back(inRoom ? matchtest::observe(room, p, 0.003, unsigned(t), 1000 * (t + 1)) : s);
 	};
 	for (double x = 1; x < 5.6; x += 0.5)  // first pass
 	{
@@ -428,6 +430,37 @@ double secondPassError(const TwoPassRoom& w, const std::vector<TPose2D>& poses)
 	return worst;
 }
 }  // namespace
+
+// mstep.loop_search_all_vectors: in the two-pass room, the first pass's static vectors near the
+// misplaced second pass are the bottom wall only (a slide along it: no loop edge), but all of
+// its vectors (MStep::setAllVectors, what the E-step made dynamic included) still hold the
+// room's corners. With the fallback the loop search finds them and the loop closes; without
+// it (or without the vectors) the second pass stays 1.5 m off.
+TEST(MStep, LoopSearchFallsBackToTheVectorsTheEStepMadeDynamic)
+{
+	const TwoPassRoom w = twoPassRoom();
+	auto closing = [&](bool fallback, bool given, size_t& loopEdges) {
+		GridVectorConfig cfg;
+		cfg.mstep.loopSearchAllVectors = fallback;
+		MStep m(cfg);
+		m.setOdometry(w.odo);
+		if (given) m.setAllVectors(w.all);
+		std::vector<TPose2D> poses;
+		for (int k = 0; k < 3; ++k) m.run(w.scans, poses);
+		loopEdges = 0;
+		for (const auto& [key, c] : m.constraints())
+			loopEdges += c.kind == EdgeKind::Loop && !c.rejected && c.to >= w.second.front();
+		return secondPassError(w, poses);
+	};
+	ASSERT_TRUE(MStepOptions{}.loopSearchAllVectors);
+	size_t on = 0, off = 0, notGiven = 0;
+	EXPECT_LT(closing(true, true, on), 0.05);
+	EXPECT_GT(on, 0u);
+	EXPECT_GT(closing(false, true, off), 1.0);
+	EXPECT_EQ(off, 0u);
+	EXPECT_GT(closing(true, false, notGiven), 1.0);
+	EXPECT_EQ(notGiven, 0u);
+}
 
 // mstep.loop_search_weak_links: the passes of the slid corridor are linked only by
 // corridor-degenerate overlap edges. With the setting those do not spare the pair the loop

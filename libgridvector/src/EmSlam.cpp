@@ -235,6 +235,7 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 	mstep.setOdometry(odometry);
 	const EStep estep(cfg_.estep, cfg_.grid);
 	auto segs = initialSegments(scans);
+	mstep.setAllVectors(segs);  // the loop search's fallback (mstep.loop_search_all_vectors)
 	EStepResult prevE;
 	std::vector<TPose2D> ePoses;  // trajectory of the last E-step
 	res.poses = odometry;

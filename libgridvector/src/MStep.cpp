@@ -422,6 +422,31 @@ std::vector<uint32_t> MStep::loopCandidates(uint32_t nearest, const std::vector<
 	return out;
 }
 
+MatchResult MStep::bestLoop(const Scans& vectors, uint32_t i, const std::vector<uint32_t>& candidates,
+							const Poses& poses, uint32_t& from, MStepReport& rep) const
+{
+	MatchResult best;
+	for (uint32_t j : candidates)
+	{
+		if (j != candidates.front() && vectors[j].empty()) continue;
+		++rep.registrations;
+		MatchResult r = loops_.search(vectors[j], vectors[i], se2::relative(poses[j], poses[i]), windowOf(j, i));
+		if (!r.ok()) ++rep.failedRegistrations;
+		else if (!best.ok() || r.matchedLength > best.matchedLength) best = std::move(r), from = j;
+	}
+	return best;
+}
+
+bool MStep::relabelled(uint32_t t, const Scans& scans) const
+{
+	auto length = [](const std::vector<MatchSegment>& s) {
+		double l = 0;
+		for (const auto& m : s) l += m.length;
+		return l;
+	};
+	return length(scans[t]) < length(all_[t]) - 1e-6;
+}
+
 // Loop search: for each pose, every earlier pass within the window (its nearest
 // pose and the other candidates) that no edge links to the pose's neighbourhood yet.
 std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& added,
@@ -448,16 +473,13 @@ std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, 
 			searched_[{p.nearest, i}] = se2::relative(poses[p.nearest], poses[i]);
 			++rep.loopSearches;
 			// the best registration against the pass's candidates (the most matched length)
-			MatchResult best;
 			uint32_t from = p.nearest;
-			for (uint32_t j : loopCandidates(p.nearest, p.members))
-			{
-				if (j != p.nearest && scans[j].empty()) continue;
-				++rep.registrations;
-				MatchResult r = loops_.search(scans[j], scans[i], se2::relative(poses[j], poses[i]), windowOf(j, i));
-				if (!r.ok()) ++rep.failedRegistrations;
-				else if (!best.ok() || r.matchedLength > best.matchedLength) best = std::move(r), from = j;
-			}
+			const auto candidates = loopCandidates(p.nearest, p.members);
+			MatchResult best = bestLoop(scans, i, candidates, poses, from, rep);
+			if (!best.ok() && cfg_.mstep.loopSearchAllVectors && all_.size() == scans.size() &&
+				std::any_of(candidates.begin(), candidates.end(),
+							[&](uint32_t j) { return relabelled(j, scans) || relabelled(i, scans); }))
+				best = bestLoop(all_, i, candidates, poses, from, rep);  // what the E-step made dynamic too
 			if (best.ok()) found.push_back(constraintOf({from, i}, EdgeKind::Loop, best, se2::relative(poses[from], poses[i])));
 		}
 	}

@@ -248,6 +248,7 @@ struct MStepOptions
 	double loopSearchDistinct = 0.3;  //!< solutions further apart than this are distinct [m]
 	bool loopSearchWeakLinks = true;  //!< passes linked only by corridor-degenerate or rejected edges are still searched
 	double loopSearchCandidateSpacing = 0.0;  //!< loop search: also register the pass's poses this far apart along the path [m]; 0: nearest only
+	bool loopSearchAllVectors = true;  //!< a loop search that finds nothing on the static vectors searches again on all of both scans' vectors
 	double dropDistanceFactor = 1.5;  //!< a non-sequential edge whose poses are further apart than this x overlap_distance is dropped
 	double dropLengthShare = 0.5;  //!< an overlap edge whose overlap falls below this x overlap_min_length is dropped
 	double changedTranslation = 1e-3;  //!< a re-registered edge changed when its pose moved more than this [m]
@@ -303,6 +304,7 @@ struct MStepOptions
 		v("loop_search_distinct", loopSearchDistinct, "Loop-search solutions further apart than this are distinct [m]");
 		v("loop_search_weak_links", loopSearchWeakLinks, "The loop search also runs between passes that only edges with a degenerate translation (below matcher.degenerate_ratio: a corridor slide) or rejected edges link; false: any edge spares the pair");
 		v("loop_search_candidate_spacing", loopSearchCandidateSpacing, "The loop search registers a pose against the earlier pass's pose nearest in view and against every pose of that pass inside the window at least this far (odometry path) from the poses already taken, keeping the result with the most matched length (the nearest pose under a misplaced estimate need not be the one that sees the place); 0 (default): the nearest pose only; 1 m lowers the intel loop error but raises the aces one with the EmSlam defaults (doc/benchmarks.md) [m]");
+		v("loop_search_all_vectors", loopSearchAllVectors, "Beyond the paper: where the loop search between two unlinked passes finds nothing on the static vectors and the E-step made part of either scan dynamic, it searches again on all vectors of both scans as extracted (MStep::setAllVectors); a place the estimate misplaces is where the E-step makes good walls dynamic (the other pass's beams cross them), so the evidence the search needs is what the E-step removed; the edge's acceptance is unchanged (loop_search_min_share, non-degenerate, unambiguous, pairwise consistency), and after the next E-step it is re-registered on the static vectors (Eq. 24-25)");
 		v("drop_distance_factor", dropDistanceFactor, "Beyond the paper (Sec. 4.3 drops edges whose scans no longer overlap): a non-sequential edge whose poses are further apart than this x overlap_distance is removed");
 		v("drop_length_share", dropLengthShare, "Beyond the paper: an overlap edge whose scans' corresponding static length falls below this x overlap_min_length is removed (Sec. 4.3)");
 		v("changed_translation", changedTranslation, "Eq. 24-25 bookkeeping, beyond the paper: a re-registered edge with the same correspondences counts as changed when its relative pose moved more than this [m]");

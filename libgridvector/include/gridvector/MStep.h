@@ -67,6 +67,10 @@ class MStep
 
 	/** Dead-reckoning pose of every scan (the odometry edges). */
 	void setOdometry(std::vector<mrpt::math::TPose2D> odometry);
+	/** Every vector of each scan as extracted, static or dynamic, in its scan's frame: what the
+	 * loop search falls back to when the static vectors find nothing (mstep.loop_search_all_vectors).
+	 * Not set: the loop search uses the static vectors only. */
+	void setAllVectors(std::vector<std::vector<MatchSegment>> all) { all_ = std::move(all); }
 
 	/** One M-step. `scans[t]`: static vectors of scan t in its own frame
 	 * (ids stable across iterations); `poses`: in: current estimate (ignored
@@ -105,6 +109,12 @@ class MStep
 	 * the members (time order) at least mstep.loop_search_candidate_spacing along the path
 	 * from every pose already taken. */
 	std::vector<uint32_t> loopCandidates(uint32_t nearest, const std::vector<uint32_t>& members) const;
+	/** The loop search of pose i against the candidates on `vectors` (static or all): the result
+	 * with the most matched length, its pose in `from`. */
+	MatchResult bestLoop(const Scans& vectors, uint32_t i, const std::vector<uint32_t>& candidates,
+						 const Poses& poses, uint32_t& from, MStepReport& rep) const;
+	/** Did the E-step make part of scan t dynamic (its static vectors are shorter than all its vectors)? */
+	bool relabelled(uint32_t t, const Scans& scans) const;
 	/** Loop-search window of the pair from the odometry model along the path between them. */
 	LoopWindow windowOf(uint32_t from, uint32_t to) const;
 	/** Was i searched against a j in [jlo, jhi] from (nearly) its current relative pose? */
@@ -137,6 +147,7 @@ class MStep
 	GridVectorConfig cfg_;
 	VectorMatcher matcher_;
 	LoopSearch loops_;
+	Scans all_;  //!< every vector of each scan (setAllVectors), empty if not set
 	std::vector<double> path_;  //!< odometry path length from the first pose
 	std::map<EdgeKey, mrpt::math::TPose2D> searched_;  //!< loop searches tried (at this relative pose)
 	PoseGraph graph_;

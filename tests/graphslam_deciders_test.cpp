@@ -1,10 +1,12 @@
 // Grid-vector registration deciders for MRPT's graphslam-engine: options, registry, behaviour.
 #include <gridvector/graphslam/DeciderRegistry.h>
+#include <gridvector/PoseGraph.h>
 #include <gridvector/graphslam/PoseFusion.h>
 #include <gridvector/graphslam/RunRecorder.h>
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
+#include <mrpt/graphslam/levmarq.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose2D.h>
 
@@ -194,6 +196,48 @@ TEST(pose_fusion, information_weighted_and_singular_directions_kept)
 	Eigen::Matrix3d bad = Eigen::Matrix3d::Identity();
 	bad(2, 2) = -1;
 	EXPECT_FALSE(validInformation(bad));
+}
+
+namespace
+{
+// Node 1 after MRPT's levmarq on two edges 0 -> 1 (node 0 fixed at the origin).
+TPose2D optimisedOverTwoEdges(const PoseEstimate& a, const PoseEstimate& b, bool errorFrame)
+{
+	mrpt::graphs::CNetworkOfPoses2DInf g;
+	g.root = 0;
+	g.nodes[0] = CPose2D();
+	g.nodes[1] = CPose2D(a.mean);
+	g.insertEdge(0, 1, toConstraint(a, errorFrame));
+	g.insertEdge(0, 1, toConstraint(b, errorFrame));
+	mrpt::graphslam::TResultInfoSpaLevMarq info;
+	mrpt::containers::yaml params;
+	params["max_iterations"] = 100;
+	mrpt::graphslam::optimize_graph_spa_levmarq(g, info, nullptr, params);
+	return g.nodes.at(1).asTPose();
+}
+}  // namespace
+
+// MRPT's edge error is inv(EDGE) (+) inv(P1) (+) P2 (Eq. 21's): an NRD edge fused over the
+// relative pose's parameters must, once in the engine, optimise to that fusion, also when
+// the two poses face opposite ways (a registration's translation/heading coupling kept).
+TEST(pose_fusion, engine_edges_between_opposite_facing_poses_optimise_to_the_fusion)
+{
+	const PoseEstimate odometry{TPose2D(0.3, -0.1, M_PI - 0.2), Eigen::Vector3d(100, 100, 400).asDiagonal()};
+	PoseEstimate match{TPose2D(0.32, -0.2, M_PI - 0.19), Eigen::Matrix3d::Zero()};
+	match.information << 2e4, 0, 8e3, 0, 20, 0, 8e3, 0, 2e4;  // a corridor along y: strong x and phi, coupled
+	const PoseEstimate fused = fuse(odometry, match);
+	const TPose2D rotated = optimisedOverTwoEdges(odometry, match, true);
+	EXPECT_NEAR(rotated.x, fused.mean.x, 1e-3);
+	EXPECT_NEAR(rotated.y, fused.mean.y, 1e-3);
+	EXPECT_NEAR(rotated.phi, fused.mean.phi, 1e-4);
+	// the unrotated information weighs the wrong directions: far from the fusion
+	const TPose2D unrotated = optimisedOverTwoEdges(odometry, match, false);
+	EXPECT_GT(std::hypot(unrotated.x - fused.mean.x, unrotated.y - fused.mean.y), 1e-2);
+	// the engine's constraint is the fused one in the error's frame
+	const auto c = toConstraint(fused, true);
+	const Eigen::Matrix3d expected = gridvector::PoseGraph::errorFrameInformation(fused.information, fused.mean);
+	EXPECT_TRUE(c.cov_inv.asEigen().isApprox(expected, 1e-12));
+	EXPECT_NEAR(c.mean.x(), fused.mean.x, 1e-12);
 }
 
 // Observation-only stream (odometry, then scan) through NRD then ERD, as the engine calls them.

@@ -174,7 +174,7 @@ bool CGridVectorERD::tryEdge(TNodeID from, TNodeID to, bool sequential)
 		++stats_.rejected;
 		return false;
 	}
-	const auto c = toConstraint({r->pose, r->information});
+	const auto c = toConstraint({r->pose, r->information}, cfg_.mstep.informationInEdgeFrame);
 	this->registerNewEdge(from, to, c);
 	this->m_graph->insertEdge(from, to, c);
 	++(sequential ? stats_.sequentialEdges : stats_.passEdges);

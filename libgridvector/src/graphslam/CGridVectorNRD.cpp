@@ -101,7 +101,8 @@ bool CGridVectorNRD::processScan(const mrpt::obs::CObservation2DRangeScan& scan)
 	}
 	MRPT_LOG_DEBUG_FMT("scan %zu: %s, since node %s", stats_.scans, toString(r.status),
 					   since_.mean.asString().c_str());
-	this->m_since_prev_node_PDF = toConstraint(since_);
+	// fused over the relative pose's parameters, both terms; the edge in the error's frame
+	this->m_since_prev_node_PDF = toConstraint(since_, cfg_.mstep.informationInEdgeFrame);
 	if (!checkRegistrationCondition()) return false;
 	registerNode(std::move(segs));
 	odomAtNode_ = odom;

@@ -1,3 +1,4 @@
+#include <gridvector/PoseGraph.h>
 #include <gridvector/graphslam/PoseFusion.h>
 
 #include <Eigen/Eigenvalues>
@@ -37,12 +38,15 @@ bool validInformation(const Eigen::Matrix3d& information)
 	return ev.minCoeff() >= -1e-9 * std::max(1.0, ev.maxCoeff());
 }
 
-mrpt::poses::CPosePDFGaussianInf toConstraint(const PoseEstimate& e)
+// Eq. 21's error frame, as MRPT's levmarq measures an edge (inv(EDGE) (+) inv(P1) (+) P2).
+mrpt::poses::CPosePDFGaussianInf toConstraint(const PoseEstimate& e, bool errorFrame)
 {
 	mrpt::poses::CPosePDFGaussianInf c;
 	c.mean = mrpt::poses::CPose2D(e.mean);
+	const Eigen::Matrix3d info =
+		errorFrame ? PoseGraph::errorFrameInformation(e.information, e.mean) : e.information;
 	for (int r = 0; r < 3; ++r)
-		for (int k = 0; k < 3; ++k) c.cov_inv(r, k) = e.information(r, k);
+		for (int k = 0; k < 3; ++k) c.cov_inv(r, k) = info(r, k);
 	return c;
 }
 

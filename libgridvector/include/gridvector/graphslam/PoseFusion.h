@@ -26,7 +26,11 @@ bool closeTo(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, double 
 /** True if the matrix is finite, symmetric and positive semi-definite. */
 bool validInformation(const Eigen::Matrix3d& information);
 
-/** The engine's edge type (CPosePDFGaussianInf) of an estimate. */
-mrpt::poses::CPosePDFGaussianInf toConstraint(const PoseEstimate& e);
+/** The engine's edge type (CPosePDFGaussianInf) of an estimate. MRPT's optimisers
+ * measure an edge's error as inv(EDGE) (+) inv(P1) (+) P2 (graphslam/levmarq_impl.h), Eq. 21's,
+ * whose translation is in the later pose's frame, while e.information is over the
+ * relative pose's (x, y, phi): with errorFrame (mstep.information_in_edge_frame) it is
+ * rotated into the error's frame (PoseGraph::errorFrameInformation, D^T I D). */
+mrpt::poses::CPosePDFGaussianInf toConstraint(const PoseEstimate& e, bool errorFrame);
 
 }  // namespace gridvector::graphslam

@@ -379,3 +379,23 @@ TEST(DoorDetector, StatesOnOneStraightLineAreNoDoor)
 	EXPECT_NEAR(doors[0].hinge.x, 3.0, 0.05);
 	EXPECT_EQ(doors[0].angles.size(), 3u);
 }
+
+TEST(DoorDetector, StatesAllNearTheWallsLineAreNoDoor)
+{
+	// a wall ending at (3, 0) whose continuation was seen dynamic in two kinked pieces (+-15 deg
+	// from the wall's line, as on the real logs' corridor walls): no state turned from the wall
+	const std::vector<GridVector> kinked = {
+		vec(0, 0, 3, 0, S), vec(3, 0, 3 + 0.8 * std::cos(0.26), 0.8 * std::sin(0.26), D),
+		vec(3, 0, 3 + 0.8 * std::cos(-0.26), 0.8 * std::sin(-0.26), D)};
+	EXPECT_TRUE(DoorDetector().detect(kinked).empty());
+	DoorOptions off;
+	off.minOpenDeg = 0;  // the key switches the rule off: the two pieces were a door before it
+	ASSERT_EQ(DoorDetector(off).detect(kinked).size(), 1u);
+	// a leaf seen open by 40 deg next to the same +15 deg state is a door
+	std::vector<GridVector> open = kinked;
+	open[2] = vec(3, 0, 3 + 0.8 * std::cos(-0.70), 0.8 * std::sin(-0.70), D);
+	const auto doors = DoorDetector().detect(open);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_NEAR(doors[0].hinge.x, 3.0, 0.05);
+	EXPECT_EQ(doors[0].angles.size(), 2u);
+}

@@ -284,7 +284,18 @@ std::vector<Door> DoorDetector::detectIn(const std::vector<GridVector>& v) const
 		joinStates(v, door, reach, taken);
 		closedInWall(v, door);
 	}
+	doors.erase(std::remove_if(doors.begin(), doors.end(), [&](const Door& d) { return !turnsFromWall(v, d); }),
+				doors.end());
 	return doors;
+}
+
+// Fig. 10, beyond the paper's words: the leaf turns from the wall about the hinge, so one state at
+// least is seen open, doors.min_open_deg or more from the wall's line (either way). States all
+// near that line are the wall's continuation seen dynamic in kinked pieces (real logs).
+bool DoorDetector::turnsFromWall(const std::vector<GridVector>& v, const Door& d) const
+{
+	return std::any_of(d.angles.begin(), d.angles.end(),
+					   [&](double a) { return bendDeg(a, v[d.wall]) >= opts_.minOpenDeg; });
 }
 
 // Fig. 10: the different open states of one door.

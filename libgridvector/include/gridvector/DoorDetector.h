@@ -66,7 +66,9 @@ struct Door
  * runs from the wall's line (the closed leaf, whether seen as a state or not)
  * through the states. States on one straight line through the vertex (either
  * way, none between) are no door: no leaf turned about a hinge there (a line
- * seen dynamic, cut where a static vector ends on it). */
+ * seen dynamic, cut where a static vector ends on it). A door none of whose states lies
+ * doors.min_open_deg or more from its wall's line is no door either: the wall's own continuation
+ * seen dynamic in kinked pieces (its vectors make no other door). */
 class DoorDetector
 {
    public:
@@ -84,6 +86,7 @@ class DoorDetector
 	std::vector<std::pair<size_t, size_t>> leafChains(std::vector<GridVector>& v) const;
 	std::vector<Door> detectIn(const std::vector<GridVector>& v) const;
 	std::vector<double> distinctStates(const std::vector<Corner>& cs, const std::vector<size_t>& group) const;
+	bool turnsFromWall(const std::vector<GridVector>& v, const Door& d) const;
 	bool isHinge(const std::vector<Corner>& cs, const std::vector<size_t>& group, const std::vector<double>& angles) const;
 	Door hingeOf(const std::vector<Corner>& cs, const std::vector<size_t>& group) const;
 	bool endCorner(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;

@@ -367,6 +367,7 @@ struct DoorOptions
 	double minSweepDeg = 90.0;  //!< a leaf's swept arc is widened to at least this from its closed state [deg]
 	double leafChainGap = 0.10;  //!< a dynamic and a static piece of one leaf meet end to end within this [m]
 	double leafChainMaxTurnDeg = 10.0;  //!< ... and turn by at most this at the joint [deg]
+	double minOpenDeg = 30.0;  //!< a door has a state at least this far from its wall's line [deg]
 
 	template <class V>
 	void visit(V&& v)
@@ -381,6 +382,7 @@ struct DoorOptions
 		v("min_sweep_deg", minSweepDeg, "Beyond the paper (Sec. 5.4 gives no door model): the arc a door leaf sweeps, where other vectors from the hinge count as its states, is at least this wide from the state nearest the wall (a hinged door opens to a right angle) even when the states seen span less [deg]");
 		v("leaf_chain_gap", leafChainGap, "Beyond the paper: a short dynamic vector and a static vector no longer than max_door_length whose ends meet within this are one door leaf cut by the E-step (Fig. 4), its never-seen-through-again part static [m]");
 		v("leaf_chain_max_turn_deg", leafChainMaxTurnDeg, "Beyond the paper: the two pieces of such a leaf turn by at most this at their joint (collinear) [deg]");
+		v("min_open_deg", minOpenDeg, "Beyond the paper (Fig. 10's leaf turns from its wall): a door has at least one state this far or farther from its wall's line (a leaf seen open); doors whose every state lies closer to the wall's line are a wall seen dynamic in kinked pieces (real logs, doc/benchmarks.md) [deg]; 0: off");
 		v("max_tee_offset", maxTeeOffset, "A door candidate's end this close to the interior of a static vector longer than max_door_length makes a T corner (a wall merged across the doorway) [m]; 0: end corners only");
 	}
 };

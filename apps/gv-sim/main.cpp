@@ -5,6 +5,8 @@
 #include <gridvector/eval/TrajectoryEval.h>
 #include <gridvector/io/ArgParser.h>
 #include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/FileBytes.h>
+#include <gridvector/io/IniLayout.h>
 #include <gridvector/io/Progress.h>
 #include <gridvector/sim/BuiltinWorlds.h>
 #include <gridvector/sim/SimOptions.h>
@@ -70,6 +72,8 @@ const char* typeName(const T&)
 void loadIni(sim::SimOptions& o, const std::string& path)
 {
 	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(path + ": cannot read (no such file)");
+	const std::vector<char> text = io::readFileBytes(path);
+	io::requireIniLayout(std::string(text.begin(), text.end()), path);  // 'seed = 3' before [gv_sim] was ignored
 	mrpt::config::CConfigFile ini(path);
 	if (!ini.sectionExists("gv_sim"))
 		throw std::runtime_error(path + ": no [gv_sim] section (gv-sim reads its options from [gv_sim] only)");

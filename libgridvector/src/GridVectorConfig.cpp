@@ -1,4 +1,5 @@
 #include <gridvector/GridVectorConfig.h>
+#include <gridvector/io/IniLayout.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -118,27 +119,6 @@ void requireKnownSections(const mrpt::config::CConfigFileBase& cfg, const std::s
 	}
 }
 
-/** What MRPT's .ini reader passes over silently: a key before the first section header, or a
- * section header without its closing bracket (its keys would land in the previous section). */
-void requireIniLayout(const std::string& text, const std::string& path)
-{
-	std::istringstream in(text);
-	std::string line;
-	bool inSection = false;
-	for (size_t n = 1; std::getline(in, line); ++n)
-	{
-		const size_t b = line.find_first_not_of(" \t\r");
-		if (b == std::string::npos || line[b] == ';' || line[b] == '#') continue;
-		const auto where = path + ":" + std::to_string(n) + ": ";
-		if (line[b] == '[')
-		{
-			if (line.find(']', b) == std::string::npos) throw std::runtime_error(where + "section header without ']'");
-			inSection = true;
-		}
-		else if (!inSection)
-			throw std::runtime_error(where + "'" + line.substr(b, 40) + "' is outside any [section]");
-	}
-}
 }  // namespace
 
 void GridVectorConfig::loadFromConfigFile(
@@ -173,7 +153,7 @@ void GridVectorConfig::loadFromFile(const std::string& iniPath, const std::strin
 	if (!in) throw std::runtime_error(iniPath + ": cannot open config file");
 	const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 	if (in.bad()) throw std::runtime_error(iniPath + ": cannot read config file (read error)");
-	requireIniLayout(text, iniPath);
+	io::requireIniLayout(text, iniPath);
 	mrpt::config::CConfigFileMemory cfg(text);
 	try
 	{

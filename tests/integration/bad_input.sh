@@ -105,6 +105,8 @@ expect 1 "nosection.ini:1: 'resolution = 0.05' is outside any [section]" e8/repo
 expect 1 "openheader.ini:1: section header without ']'" - -- "$B/gv-config" --check openheader.ini
 expect 1 "badval.ini: [gridvector_grid] half_width = '1.5' is not an integer" e8/report.json -- "$B/gv-em-slam" --input room.log --out e8 --config badval.ini --quiet
 expect 1 "badval.ini: [gridvector_grid] half_width = '1.5' is not an integer" - -- "$B/gv-config" --check badval.ini
+printf 'seed = 3\n[gv_sim]\nworld = office\n' > simnosec.ini  # the seed was ignored
+expect 1 "simnosec.ini:1: 'seed = 3' is outside any [section]" s8/sim.log -- "$B/gv-sim" --config simnosec.ini --out s8 --quiet --scans 20
 expect 1 "typo.ini: no [gv_sim] section" s8/sim.log -- "$B/gv-sim" --config typo.ini --out s8 --quiet
 # a config from a pipe (--config <(...)): read, not sized by seeking; a directory is named as such
 expect 1 "unknown key 'resolutoin'" - -- "$B/gv-config" --check <(cat typo.ini)

@@ -1,0 +1,27 @@
+#include <gridvector/io/IniLayout.h>
+
+#include <sstream>
+#include <stdexcept>
+
+namespace gridvector::io
+{
+void requireIniLayout(const std::string& text, const std::string& path)
+{
+	std::istringstream in(text);
+	std::string line;
+	bool inSection = false;
+	for (size_t n = 1; std::getline(in, line); ++n)
+	{
+		const size_t b = line.find_first_not_of(" \t\r");
+		if (b == std::string::npos || line[b] == ';' || line[b] == '#') continue;
+		const auto where = path + ":" + std::to_string(n) + ": ";
+		if (line[b] == '[')
+		{
+			if (line.find(']', b) == std::string::npos) throw std::runtime_error(where + "section header without ']'");
+			inSection = true;
+		}
+		else if (!inSection)
+			throw std::runtime_error(where + "'" + line.substr(b, 40) + "' is outside any [section]");
+	}
+}
+}  // namespace gridvector::io

@@ -77,7 +77,7 @@ TEST(MapExport, RosMapServerPgmAndYaml)
 	EXPECT_GT(pixel(2.0, 0.15), 240);  // cell [0.1, 0.2]: the free row, p = 0.025
 	EXPECT_EQ(pixel(2.0, 1.0), 128);  // unknown: 0.5
 	const std::string yaml = slurp(d / "occ.yaml");
-	for (const char* k : {"image: occ.pgm\n", "resolution: 0.1", "origin: [", "negate: 0\n", "occupied_thresh: 0.65\n",
+	for (const char* k : {"image: occ.pgm\n", "resolution: 0.1\n", "origin: [", "negate: 0\n", "occupied_thresh: 0.65\n",
 						  "free_thresh: 0.196\n", "mode: trinary\n"})
 		EXPECT_NE(yaml.find(k), std::string::npos) << k << "\n" << yaml;
 	EXPECT_EQ(d.files(), 2u);  // no temporary left behind

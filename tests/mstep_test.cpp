@@ -35,6 +35,20 @@ Fixture ring(int laps = 2)
 	}
 	return f;
 }
+
+// M-steps from the odometry of `f` until its edges are settled enough for the test.
+std::vector<TPose2D> settle(MStep& m, const Fixture& f, int steps)
+{
+	m.setOdometry(f.odo);
+	std::vector<TPose2D> poses;
+	for (int k = 0; k < steps; ++k) m.run(f.scans, poses);
+	return poses;
+}
+
+std::vector<MatchSegment>::iterator longestOf(std::vector<MatchSegment>& s)
+{
+	return std::max_element(s.begin(), s.end(), [](auto& a, auto& b) { return a.length < b.length; });
+}
 }  // namespace
 
 TEST(MStep, FirstStepChainsAndClosesTheLoop)
@@ -84,14 +98,11 @@ TEST(MStep, StateChangeRecomputesOnlyAffectedEdges)
 {
 	Fixture f = ring();
 	MStep m;
-	m.setOdometry(f.odo);
-	std::vector<TPose2D> poses;
-	m.run(f.scans, poses);
-	m.run(f.scans, poses);
+	auto poses = settle(m, f, 2);
 	const size_t total = m.constraints().size();
 	// an E-step turns the longest vector of scan 30 dynamic: it leaves the static set
 	auto& s = f.scans[30];
-	const auto longest = std::max_element(s.begin(), s.end(), [](auto& a, auto& b) { return a.length < b.length; });
+	const auto longest = longestOf(s);
 	const uint64_t gone = longest->id;
 	s.erase(longest);
 	size_t touching = 0;
@@ -105,6 +116,31 @@ TEST(MStep, StateChangeRecomputesOnlyAffectedEdges)
 	EXPECT_LT(double(r.registrations), 0.05 * total);
 	for (const auto& [k, c] : m.constraints())
 		for (const auto& p : c.correspondences) EXPECT_TRUE(p.a != gone && p.b != gone);
+	EXPECT_LT(emtest::ate(poses, f.truth), 0.05);
+}
+
+// Eq. 25, Fig. 5: a split point moving within a static child keeps the child's id, but its
+// children M_chd changed, so every edge matching that vector is registered again, and only those.
+TEST(MStep, AMovedSplitPointReRegistersTheEdgesOfItsVector)
+{
+	Fixture f = ring();
+	MStep m;
+	auto poses = settle(m, f, 3);  // nothing left to recompute (UnchangedInputChangesNoConstraint)
+	// the E-step moved the split point of scan 30's longest vector: its static child keeps its id
+	const auto longest = longestOf(f.scans[30]);
+	longest->e = longest->s + 0.7 * (longest->e - longest->s);
+	longest->length *= 0.7;
+	const uint64_t moved = longest->id;
+	size_t touching = 0;
+	for (const auto& [k, c] : m.constraints())
+		touching += std::any_of(c.correspondences.begin(), c.correspondences.end(), [&](const VectorPair& p) {
+			return (c.from == 30 && p.a == moved) || (c.to == 30 && p.b == moved);
+		});
+	ASSERT_GT(touching, 0u);
+	std::vector<std::vector<uint64_t>> changed(f.scans.size());
+	changed[30] = {moved};
+	const MStepReport r = m.run(f.scans, poses, &changed);
+	EXPECT_EQ(r.registrations - r.loopSearches, touching);  // each edge matching the vector, no other
 	EXPECT_LT(emtest::ate(poses, f.truth), 0.05);
 }
 

@@ -159,10 +159,11 @@ void keepLastSplit(EmIteration& it, const EmIteration& last)
 }
 
 // Sec. 4.1: the E-step (Eq. 14-15) on the map of the trajectory (Eq. 4 unmerged, Eq. 8), its
-// figures in `it` and its parents' changed M_chd (Eq. 25) against `previous` (null: first E-step).
+// figures in `it` and its parents' changed M_chd (Eq. 25) against `previous` (null: first E-step),
+// per scan the ids of the static children of those parents in `changedIds` (for the next M-step).
 EStepResult expectation(const EStep& estep, const std::vector<LocalScan>& scans, const std::vector<TPose2D>& poses,
 						const GridVectorConfig& cfg, const EStepResult* previous, EmIteration& it,
-						std::chrono::steady_clock::time_point t0)
+						std::chrono::steady_clock::time_point t0, std::vector<std::vector<uint64_t>>& changedIds)
 {
 	const auto perScan = GlobalMap::buildPerScan(poses, scans, cfg);
 	it.wipeSeconds = since(t0);
@@ -171,6 +172,14 @@ EStepResult expectation(const EStep& estep, const std::vector<LocalScan>& scans,
 	it.classifySeconds = since(tc);
 	const auto changed = EStep::changedChildren(e, previous);
 	it.changedVectors = size_t(std::count(changed.begin(), changed.end(), true));
+	changedIds.assign(poses.size(), {});
+	for (size_t k = 0; k < changed.size(); ++k)
+		for (uint32_t c = 0; changed[k] && c < e.childrenOf[k].size(); ++c)
+		{
+			const GridVector& v = e.children[e.childrenOf[k][c]];
+			if (v.state == VectorState::Static && v.scanIndex >= 0 && size_t(v.scanIndex) < poses.size())
+				changedIds[size_t(v.scanIndex)].push_back(v.id);
+		}
 	it.staticVectors = e.staticCount;
 	it.dynamicVectors = e.dynamicCount;
 	it.staticLength = e.staticLength;
@@ -237,6 +246,7 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 	auto segs = initialSegments(scans);
 	mstep.setAllVectors(segs);  // the loop search's fallback (mstep.loop_search_all_vectors)
 	EStepResult prevE;
+	std::vector<std::vector<uint64_t>> changedIds;  // Eq. 25: per scan, vectors whose children changed
 	std::vector<TPose2D> ePoses;  // trajectory of the last E-step
 	res.poses = odometry;
 	int current = 0;
@@ -248,7 +258,8 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		EmIteration it;
 		it.index = k;
 		auto t0 = std::chrono::steady_clock::now();
-		it.mstep = mstep.run(segs, res.poses);  // M-step (Eq. 16-25)
+		it.mstep = mstep.run(segs, res.poses, changedIds.empty() ? nullptr : &changedIds);  // M-step (Eq. 16-25)
+		changedIds.clear();  // consumed: an M-step after a skipped E-step sees no change
 		it.mSeconds = since(t0);
 		it.changedShare = it.mstep.changedShare;
 		// No constraint changed after an E-step that changed no vector: the trajectory did not
@@ -269,7 +280,7 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		}
 		ePoses = res.poses;
 		if (progress) progress("E-step", k, 0.0);
-		EStepResult e = expectation(estep, scans, res.poses, cfg_, k > 1 ? &prevE : nullptr, it, t0);
+		EStepResult e = expectation(estep, scans, res.poses, cfg_, k > 1 ? &prevE : nullptr, it, t0, changedIds);
 		segs = staticSegments(e.children, res.poses);
 		it.eSeconds = since(t0);
 		res.perScan = e.children;

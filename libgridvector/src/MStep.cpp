@@ -210,6 +210,20 @@ bool MStep::sameScans(const Constraint& c) const
 	return c.sigFrom == sigs_[c.from] && c.sigTo == sigs_[c.to];
 }
 
+// Eq. 25, Fig. 5: from M_cor (the edge's correspondences) the pairs affected by a vector whose
+// children M_chd the last E-step changed, ids kept or not.
+bool MStep::childrenChanged(const Constraint& c) const
+{
+	const auto in = [](const std::vector<uint64_t>& ids, uint64_t id) {
+		return std::binary_search(ids.begin(), ids.end(), id);
+	};
+	const auto& a = changed_[c.from];
+	const auto& b = changed_[c.to];
+	if (a.empty() && b.empty()) return false;
+	return std::any_of(c.correspondences.begin(), c.correspondences.end(),
+					   [&](const VectorPair& p) { return in(a, p.a) || in(b, p.b); });
+}
+
 // Eq. 24-25: an edge is recomputed only if its data association changed.
 void MStep::updateExisting(const Scans& scans, const Poses& poses, MStepReport& rep)
 {
@@ -229,11 +243,12 @@ void MStep::updateExisting(const Scans& scans, const Poses& poses, MStepReport& 
 			continue;
 		}
 		const bool same = sameScans(c);
-		// Eq. 24-25: re-register only when the correspondences changed (a rejected
-		// edge: only when the vectors of its scans changed)
-		const bool keep = c.rejected ? same
-									 : (same && !movedSince(c.checkedAt, rel)) ||
-										   !correspondencesChanged(c, scans, poses);
+		// Eq. 24-25: re-register when a matched vector's children changed, else only when the
+		// correspondences changed (a rejected edge: only when the vectors of its scans changed)
+		const bool keep = !childrenChanged(c) &&
+						  (c.rejected ? same
+									  : (same && !movedSince(c.checkedAt, rel)) ||
+											!correspondencesChanged(c, scans, poses));
 		if (keep)
 		{
 			c.checkedAt = rel;
@@ -628,7 +643,7 @@ void MStep::optimise(Poses& poses, MStepReport& rep)
 	poses = graph_.nodes();
 }
 
-MStepReport MStep::run(const Scans& scans, Poses& poses)
+MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::vector<uint64_t>>* changedChildren)
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	MStepReport rep;
@@ -639,6 +654,13 @@ MStepReport MStep::run(const Scans& scans, Poses& poses)
 	sigs_.assign(scans.size(), 1469598103934665603ULL);
 	for (size_t t = 0; t < scans.size(); ++t)
 		for (const auto& s : scans[t]) sigs_[t] = (sigs_[t] ^ s.id) * 1099511628211ULL;  // FNV-1a
+	changed_.assign(scans.size(), {});
+	if (changedChildren)
+		for (size_t t = 0; t < scans.size() && t < changedChildren->size(); ++t)
+		{
+			changed_[t] = (*changedChildren)[t];
+			std::sort(changed_[t].begin(), changed_[t].end());
+		}
 	if (!started_)
 	{
 		chainSequential(scans, poses, rep);

@@ -58,7 +58,8 @@ struct MStepReport
  * (one per earlier pass through the place), the loop search, and the
  * constraint selection of Eq. 24-25 — an edge is re-registered only when
  * its correspondences changed (new pairs or pairs lost through an E-step
- * state change or a moved pose); edges whose poses no longer overlap are
+ * state change or a moved pose) or the children M_chd of a matched vector
+ * changed (Eq. 25, Fig. 5); edges whose poses no longer overlap are
  * dropped. */
 class MStep
 {
@@ -74,9 +75,14 @@ class MStep
 
 	/** One M-step. `scans[t]`: static vectors of scan t in its own frame
 	 * (ids stable across iterations); `poses`: in: current estimate (ignored
-	 * on the first call, which chains from odometry), out: optimised. */
+	 * on the first call, which chains from odometry), out: optimised.
+	 * `changedChildren[t]`: ids of the static vectors of scan t whose parent's children M_chd
+	 * the E-step before this M-step changed (Eq. 25, EStep::changedChildren): the edges whose
+	 * correspondences involve one are re-registered (Fig. 5) even where the ids stayed the same
+	 * (a split point that moved). Null: no E-step ran since the last call. */
 	MStepReport run(const std::vector<std::vector<MatchSegment>>& scans,
-					std::vector<mrpt::math::TPose2D>& poses);
+					std::vector<mrpt::math::TPose2D>& poses,
+					const std::vector<std::vector<uint64_t>>* changedChildren = nullptr);
 
 	/** Called now and then with the share of the scans processed in a pass. */
 	void setProgress(std::function<void(const char* stage, double fraction)> f) { progress_ = std::move(f); }
@@ -136,6 +142,8 @@ class MStep
 	Constraint constraintOf(const EdgeKey& key, EdgeKind kind, const MatchResult& r,
 							const mrpt::math::TPose2D& checkedAt) const;
 	bool sameScans(const Constraint& c) const;
+	/** Eq. 25, Fig. 5: does a correspondence of the edge involve a vector whose children changed? */
+	bool childrenChanged(const Constraint& c) const;
 	/** Retry a failed registration? (poses moved or static vectors changed) */
 	bool retry(const EdgeKey& key, const mrpt::math::TPose2D& rel) const;
 	double overlapLength(uint32_t from, uint32_t to, const Scans& scans, const Poses& poses) const;
@@ -160,6 +168,7 @@ class MStep
 	};
 	std::map<EdgeKey, Failure> failed_;  //!< failed registrations, retried when something changed
 	std::vector<uint64_t> sigs_;  //!< per scan: signature of its static vector ids
+	std::vector<std::vector<uint64_t>> changed_;  //!< per scan: sorted ids whose M_chd changed (run's argument)
 	/** Per pair: chi2 rejections since its correspondences last changed (mstep.reconsider_limit). */
 	struct Rejections
 	{

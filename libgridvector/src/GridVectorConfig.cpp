@@ -58,9 +58,15 @@ bool parseValue(const std::string& v, int& f)
 	if (v.empty() || *end || errno == ERANGE || x < INT_MIN || x > INT_MAX) return false;
 	return f = int(x), true;
 }
+std::string lowerCase(std::string s)
+{
+	for (char& ch : s) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+	return s;
+}
+
 bool parseValue(std::string v, bool& f)
 {
-	for (char& ch : v) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+	v = lowerCase(std::move(v));
 	if (v == "true" || v == "yes" || v == "1") return f = true, true;
 	if (v == "false" || v == "no" || v == "0") return f = false, true;
 	return false;
@@ -89,12 +95,6 @@ std::set<std::string> keysOf(Group& g)
 	std::set<std::string> keys;
 	g.visit([&](const char* key, auto&, const char*) { keys.insert(key); });
 	return keys;
-}
-
-std::string lowerCase(std::string s)
-{
-	for (char& ch : s) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-	return s;
 }
 
 /** Every section named `<prefix>_<something>` must be one of ours: a typo in a section name

@@ -492,8 +492,8 @@ std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, 
 			const auto candidates = loopCandidates(p.nearest, p.members);
 			MatchResult best = bestLoop(scans, i, candidates, poses, from, rep);
 			if (!best.ok() && cfg_.mstep.loopSearchAllVectors && all_.size() == scans.size() &&
-				std::any_of(candidates.begin(), candidates.end(),
-							[&](uint32_t j) { return relabelled(j, scans) || relabelled(i, scans); }))
+				(relabelled(i, scans) ||
+				 std::any_of(candidates.begin(), candidates.end(), [&](uint32_t j) { return relabelled(j, scans); })))
 				best = bestLoop(all_, i, candidates, poses, from, rep);  // what the E-step made dynamic too
 			if (best.ok()) found.push_back(constraintOf({from, i}, EdgeKind::Loop, best, se2::relative(poses[from], poses[i])));
 		}

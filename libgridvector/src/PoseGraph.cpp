@@ -94,12 +94,18 @@ double PoseGraph::levelForDof(double level3, int dof)
 	return 0.5 * (lo + hi);
 }
 
+// A level for 3 dof moved to 1 and 2 dof, indexed by an edge's dof (clamped to 1..3).
+std::array<double, 4> PoseGraph::levelsByDof(double level3)
+{
+	return {level3, levelForDof(level3, 1), levelForDof(level3, 2), level3};
+}
+
 // Chi2 of every edge at x; DCS scale s = min(1, 2 Phi / (Phi + chi2)) for registrations
 // (Phi moved to the edge's degrees of freedom).
 double PoseGraph::updateResiduals(const std::vector<TPose2D>& x, bool robust)
 {
 	double total = 0;
-	const double phiByDof[4] = {phi_, levelForDof(phi_, 1), levelForDof(phi_, 2), phi_};
+	const auto phiByDof = levelsByDof(phi_);
 	for (auto& e : edges_)
 	{
 		if (!e.active) continue;
@@ -117,8 +123,7 @@ double PoseGraph::updateResiduals(const std::vector<TPose2D>& x, bool robust)
 size_t PoseGraph::rejectOutliers()
 {
 	size_t n = 0;
-	const double levelByDof[4] = {opts_.rejectChi2, levelForDof(opts_.rejectChi2, 1),
-								  levelForDof(opts_.rejectChi2, 2), opts_.rejectChi2};
+	const auto levelByDof = levelsByDof(opts_.rejectChi2);
 	for (auto& e : edges_)
 		if (e.active && e.kind != EdgeKind::Odometry && e.chi2 > levelByDof[std::clamp(e.dof, 1, 3)])
 			e.active = false, ++n;

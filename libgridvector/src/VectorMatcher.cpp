@@ -284,13 +284,14 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 	// crosswise lines) is where wrong associations slide: its information falls
 	// off quadratically below degenerate_ratio of the strongest direction.
 	const double eps = opts_.degenerateRatio;
-	if (eps > 0 && res.translationDegeneracy < eps && lmax > 0 && opts_.degenerateProjection)
+	const bool weak = eps > 0 && res.translationDegeneracy < eps && lmax > 0;
+	if (weak && opts_.degenerateProjection)
 	{
 		// what the registration observes: nothing along the weak direction, all else as measured
 		res.information = marginaliseTranslation(res.information, es.eigenvectors().col(0));
 		res.dof = 2;
 	}
-	else if (eps > 0 && res.translationDegeneracy < eps && lmax > 0)
+	else if (weak)
 	{
 		const double k = std::sqrt(res.translationDegeneracy / eps);  // information x k^2
 		const Eigen::Vector2d v = es.eigenvectors().col(0);

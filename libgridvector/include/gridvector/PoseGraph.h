@@ -7,6 +7,7 @@
 #include <mrpt/graphs/CNetworkOfPoses.h>
 #include <mrpt/math/TPose2D.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -86,6 +87,8 @@ class PoseGraph
 	 * equals that of `level3` with 3: the robust kernel's width and reject_chi2 are set
 	 * for full-rank edges and moved to an edge's own dof by this. */
 	static double levelForDof(double level3, int dof);
+	/** levelForDof for 1, 2 and 3 dof, indexed by dof (index 0: level3). */
+	static std::array<double, 4> levelsByDof(double level3);
 
    private:
 	OptimizeStats optimizeGaussNewton();

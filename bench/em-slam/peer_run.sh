@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# One MRPT peer on one benchmark log (doc/benchmarks.md, "Peers in the same run").
+# One MRPT peer on one benchmark log (doc/benchmarks.md, "MRPT peers"; how: doc/benchmarks-history.md, "Peers in the same run").
 #
 #   bench/em-slam/peer_run.sh SYSTEM BIN_DIR BENCH_PREFIX WORK_DIR RESULT_DIR
 #

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Diagnosis only (doc/benchmarks.md, EM-SLAM real logs, "floor"): how far are two trajectories'
+"""Diagnosis only (doc/benchmarks-history.md, EM-SLAM real logs, "The floor"): how far are two trajectories'
 relative poses from the optimum of an independent point-to-line ICP on the raw scans?
 
 usage: ref_consistency.py BENCH.log REF.txt EST.txt [local|loop] [N]

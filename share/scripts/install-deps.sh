@@ -2,7 +2,7 @@
 # Installs gridvector's build and test dependencies from Debian's packages.
 set -euo pipefail
 # libopenblas0-serial: CHOLMOD's BLAS/LAPACK for the pose graph (about 2x less CPU at 5,000
-# scans than the reference libblas3, doc/benchmarks.md "BLAS for CHOLMOD"); Debian's package
+# scans than the reference libblas3, doc/benchmarks-history.md "BLAS for CHOLMOD"); Debian's package
 # makes itself libblas.so.3 / liblapack.so.3 through the alternatives (priority 90 > 10).
 SUDO=""; [ "$(id -u)" -eq 0 ] || SUDO="sudo"
 PKGS="build-essential cmake pkg-config libeigen3-dev libsuitesparse-dev libgtest-dev googletest

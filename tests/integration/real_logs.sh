@@ -2,7 +2,7 @@
 # Every real log in ../shared/data end to end through gv-em-slam on its seed-1 benchmark
 # (gv-bench-log = mkbench.py, byte for byte: integration.bench_vs_python), under a 4 GB
 # address-space cap: it must finish, and its loop-relation error must stay below the best
-# MRPT peer's on that log (doc/benchmarks.md, "Peers in the same run", seed 1). A regression
+# MRPT peer's on that log (doc/benchmarks.md, "MRPT peers", seed 1). A regression
 # gate for what the unit tests' small worlds cannot show (82d76c1 ran out of memory on csail
 # and freiburg-079 while every unit test passed).
 set -euo pipefail

@@ -38,6 +38,9 @@ TEST(DoorDetector, TwoStatesOfOneLeafGiveAHinge)
 	EXPECT_NEAR(doors[0].angles[0], M_PI / 4, 0.05);
 	EXPECT_NEAR(doors[0].angles[1], M_PI / 2, 0.05);
 	EXPECT_EQ(doors[0].wall, 0u);
+	// the wall's ends as detected (EmSlam may cut the wall afterwards)
+	EXPECT_EQ(doors[0].wallStart, TPoint2D(0, 0));
+	EXPECT_EQ(doors[0].wallEnd, TPoint2D(3, 0));
 }
 
 TEST(DoorDetector, CornersNeedAStaticWallAndADoorLengthCandidate)
@@ -235,6 +238,8 @@ TEST(DoorDetector, AStaticLeafActingAsTheWallIsAStateAndTheLongWallIsTheDoorsWal
 	const auto doors = DoorDetector().detect(v);
 	ASSERT_EQ(doors.size(), 1u);
 	EXPECT_EQ(doors[0].wall, 0u);
+	EXPECT_EQ(doors[0].wallStart, TPoint2D(0, -2));  // the long wall's ends, not the short leaf's
+	EXPECT_EQ(doors[0].wallEnd, TPoint2D(0, 3));
 	std::vector<size_t> leaves = doors[0].leaves;
 	std::sort(leaves.begin(), leaves.end());
 	EXPECT_EQ(leaves, (std::vector<size_t>{1, 2, 3}));

@@ -73,6 +73,25 @@ void writeDoors(const std::string& path, const std::vector<Door>& doors)
 	});
 }
 
+void writeDoorStates(const std::string& path, const std::vector<Door>& doors)
+{
+	io::writeFileAtomically(path, [&](std::ostream& o) {
+		o << "# hinge_x hinge_y length angle_min angle_max states | W wall x1 y1 x2 y2 | leaves (indices into "
+			 "vectors.txt) | A state directions [deg] (Sec. 5.4, Fig. 10)\n"
+		  << std::fixed << std::setprecision(4);
+		for (const auto& d : doors)
+		{
+			o << d.hinge.x << ' ' << d.hinge.y << ' ' << d.length << ' ' << d.angles.front() << ' ' << d.angles.back()
+			  << ' ' << d.angles.size() << " | W " << d.wallStart.x << ' ' << d.wallStart.y << ' ' << d.wallEnd.x << ' '
+			  << d.wallEnd.y << " |";
+			for (size_t leaf : d.leaves) o << ' ' << leaf;
+			o << " | A" << std::setprecision(1);
+			for (double a : d.angles) o << ' ' << a * 180 / M_PI;
+			o << std::setprecision(4) << '\n';
+		}
+	});
+}
+
 void writeGvmap(const std::string& path, const GridVectorConfig& cfg, const std::vector<GridVector>& vectors)
 {
 	mrpt::maps::CGridVectorMap map(cfg);

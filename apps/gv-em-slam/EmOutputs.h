@@ -17,6 +17,10 @@ void writeSvg(const std::string& path, const std::vector<GridVector>& vectors, c
 			  const std::vector<mrpt::math::TPose2D>& poses);
 /** `hinge_x hinge_y length angle_min angle_max states` per door (angles in rad). */
 void writeDoors(const std::string& path, const std::vector<Door>& doors);
+/** Every state of every door with its wall as detected and its leaves (Sec. 5.4, Fig. 10), for
+ * diagnostics (bench/em-slam/door_evidence.py): `hinge_x hinge_y length angle_min angle_max states
+ * | W x1 y1 x2 y2 | leaf indices into vectors.txt | A state directions in degrees`. */
+void writeDoorStates(const std::string& path, const std::vector<Door>& doors);
 /** mrpt::maps::CGridVectorMap holding `vectors`, gzip-serialised. */
 void writeGvmap(const std::string& path, const GridVectorConfig& cfg, const std::vector<GridVector>& vectors);
 

@@ -7,7 +7,7 @@
 // Writes to DIR: trajectory.txt (t x y theta per scan, the input's timestamps),
 // map.gvmap (serialized mrpt::maps::CGridVectorMap), vectors.txt
 // (x1 y1 x2 y2 p_static static|dynamic), vectors.svg, occupancy.png/.pgm/.yaml,
-// doors.txt and report.json (per-iteration figures, memory as Table 1, timings).
+// doors.txt, door_states.txt (every state, wall and leaves of each door) and report.json (per-iteration figures, memory as Table 1, timings).
 #include "EmOutputs.h"
 #include "InitialTrajectory.h"
 
@@ -129,6 +129,7 @@ int run(const io::ArgParser& args)
 	app::writeVectors(dir + "vectors.txt", res.finalVectors);
 	app::writeSvg(dir + "vectors.svg", res.finalVectors, doors, res.poses);
 	app::writeDoors(dir + "doors.txt", doors);
+	app::writeDoorStates(dir + "door_states.txt", doors);
 	app::writeGvmap(dir + "map.gvmap", cfg, res.finalVectors);
 	const auto grid = OccupancyConversion::toOccupancyGrid(res.finalVectors, cfg.occupancy, cfg.grid);
 	MapExport::writePng(grid, dir + "occupancy.png");
@@ -150,7 +151,7 @@ int run(const io::ArgParser& args)
 		std::fprintf(stderr, "%s", MemoryAccounting::summary(fig.memory).c_str());
 		std::fprintf(stderr,
 					 "wrote %s{trajectory.txt, map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, "
-					 "occupancy.yaml, doors.txt, report.json}\n",
+					 "occupancy.yaml, doors.txt, door_states.txt, report.json}\n",
 					 dir.c_str());
 	}
 	return 0;

@@ -286,6 +286,7 @@ std::vector<Door> DoorDetector::detectIn(const std::vector<GridVector>& v) const
 	}
 	doors.erase(std::remove_if(doors.begin(), doors.end(), [&](const Door& d) { return !turnsFromWall(v, d); }),
 				doors.end());
+	for (Door& d : doors) d.wallStart = v[d.wall].start(), d.wallEnd = v[d.wall].end();
 	return doors;
 }
 

@@ -8,9 +8,10 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 odd="$tmp/$(printf 'sim\tlog "1"\\a.log')"
 cp "$tmp/sim/sim.log" "$odd"
 "$GV_BIN/gv-em-slam" --input "$odd" --out "$tmp/out" --quiet
-for f in trajectory.txt map.gvmap vectors.txt vectors.svg occupancy.png occupancy.pgm occupancy.yaml doors.txt report.json; do
+for f in trajectory.txt map.gvmap vectors.txt vectors.svg occupancy.png occupancy.pgm occupancy.yaml doors.txt door_states.txt report.json; do
   [ -s "$tmp/out/$f" ] || { echo "missing or empty: $f"; exit 1; }
 done
+[ "$(grep -vc '^#' "$tmp/out/door_states.txt")" -eq "$(grep -vc '^#' "$tmp/out/doors.txt")" ] || { echo "door_states.txt: one line per door of doors.txt"; exit 1; }
 [ "$(grep -vc '^#' "$tmp/out/trajectory.txt")" -eq 400 ] || { echo "trajectory must have one pose per scan"; exit 1; }
 grep -q '"converged": true' "$tmp/out/report.json" || { echo "EM did not converge"; exit 1; }
 # the phase timings: the wipe product and the classification within the E-step, merges and doors within the final map

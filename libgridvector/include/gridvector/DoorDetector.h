@@ -32,6 +32,9 @@ struct Door
 	double length = 0;  //!< mean leaf length [m]
 	std::vector<double> angles;  //!< leaf directions of the states, ascending [rad]
 	size_t wall = 0;  //!< index of the shared static vector
+	/** The wall's ends as detected (EmSlam cuts a wall where a state runs along it afterwards, and
+	 * Door::wall then indexes the first piece only). */
+	mrpt::math::TPoint2D wallStart, wallEnd;
 	std::vector<size_t> leaves;  //!< indices of the dynamic vectors
 	/** The closed leaf lies inside the door's wall, merged across the doorway (the wall runs
 	 * through the hinge and on past it, on the states' side, for a leaf's length, and no state

@@ -17,11 +17,15 @@ Per door (one line per door; with --summary the figures below, then their range 
   through   scans with a beam crossing the opening (hinge to latch along the wall's line, on the
             side away from the wall's centre) and ending >= 0.3 m beyond it
   fill      per state, over the scans it is present, the mean share of its observed points occupied
+  jamb      (with --vectors) the distance from the hinge, along the opening, at which a static
+            vector on the wall's line (both ends within 0.2 m of it, >= 0.2 m long) starts beyond
+            0.3 m: a door frame's latch side lies a leaf's length away; '-' none
   profile   per state, n_occupied / n_observed of each point over all scans (the cells' n_occupy /
             n_visit along the leaf, from the scans): its minimum, and *share*, the part of the
             points at >= 0.1 (--summary: the smallest share over the states)
 
 usage: door_evidence.py LOG TRAJECTORY DOOR_STATES [--labels "0:P 1:U ..."] [--tol 0.1] [--summary]
+                        [--vectors VECTORS.txt]
   LOG: the CARMEN log the run read (FLASER, the laser at the robot's pose: benchmark and simulated
   logs); TRAJECTORY: its trajectory.txt; DOOR_STATES: its door_states.txt, one door a line,
   'hx hy length amin amax n | W x1 y1 x2 y2 | leaves | A deg deg ...'; --labels: a class per door
@@ -149,6 +153,18 @@ def opening(d):
     return (hx + s * ux, hy + s * uy), (hx + d['length'] * ux, hy + d['length'] * uy)
 
 
+def jamb(d, vectors):
+    """Where a static vector on the wall's line starts beyond the opening (None: nowhere)."""
+    (hx, hy), (ex, ey) = d['hinge'], opening(d)[1]
+    ux, uy = (ex - hx) / d['length'], (ey - hy) / d['length']
+    best = None
+    for x1, y1, x2, y2 in vectors:
+        t = [((x - hx) * ux + (y - hy) * uy, abs((x - hx) * uy - (y - hy) * ux)) for x, y in ((x1, y1), (x2, y2))]
+        lo, hi = min(t[0][0], t[1][0]), max(t[0][0], t[1][0])
+        if max(o for _, o in t) <= 0.2 and hi - lo >= 0.2 and lo >= 0.3 and (best is None or lo < best): best = lo
+    return best
+
+
 def evidence(look, d):
     hx, hy = d['hinge']
     near = [k for k, (x, y, _) in enumerate(look.poses) if math.hypot(x - hx, y - hy) < 15]
@@ -168,7 +184,7 @@ def evidence(look, d):
     through = sum(1 for k in near if look.crosses(k, a, b, 0.3) > 0)
     pres = [r.count('P') for r in st]
     absn = [r.count('A') for r in st]
-    return dict(swap=swaps, swapmin=swapmin, awo=awo, pres=pres, absn=absn, through=through, fills=fills, prof=prof,
+    return dict(length=d['length'], swap=swaps, swapmin=swapmin, awo=awo, pres=pres, absn=absn, through=through, fills=fills, prof=prof,
                 near=len(near))
 
 
@@ -177,7 +193,8 @@ def summary_line(k, cls, e, byclass):
     share = min((b for _, b in e['prof'] if not math.isnan(b)), default=float('nan'))
     row = dict(toggle=toggle, awo=max(e['awo']), swap=e['swap'], through=e['through'], share=share)
     byclass.setdefault(cls, []).append(row)
-    print(f"{k} {cls} " + ' '.join(f"{n} {v:.2f}" if n == 'share' else f"{n} {v}" for n, v in row.items()), flush=True)
+    jb = '' if 'jamb' not in e else ' jamb ' + ('-' if e['jamb'] is None else f"{e['jamb']:.2f} L {e['length']:.2f}")
+    print(f"{k} {cls} " + ' '.join(f"{n} {v:.2f}" if n == 'share' else f"{n} {v}" for n, v in row.items()) + jb, flush=True)
 
 
 def main():
@@ -186,6 +203,7 @@ def main():
     ap.add_argument('--labels', default='')
     ap.add_argument('--tol', type=float, default=0.1)
     ap.add_argument('--summary', action='store_true', help='toggle, awo, swap, through, share per door; ranges per class')
+    ap.add_argument('--vectors', help="the run's vectors.txt: the latch-side jamb per door (--summary)")
     o = ap.parse_args()
     scans, start, res, rmax = read_scans(o.log)
     poses = read_poses(o.traj)
@@ -193,10 +211,13 @@ def main():
     look = Looker(scans, start, res, rmax, poses, o.tol)
     lab = dict(x.split(':') for x in o.labels.split())
     byclass = {}
+    statics = [tuple(map(float, l.split()[:4])) for l in open(o.vectors)
+               if not l.startswith('#') and l.split()[5] == 'static'] if o.vectors else []
     print('# door class hinge L states | swap swapmin | present/absent/absent-with-other per state | through near | fill per state | profile min ratio / share >= 0.1 per state')
     for k, d in enumerate(read_doors(o.doors)):
         e = evidence(look, d)
         if o.summary:
+            if o.vectors: e['jamb'] = jamb(d, statics)
             summary_line(k, lab.get(str(k), '-').upper(), e, byclass)
             continue
         per = ' '.join(f"{p}/{a}/{w}" for p, a, w in zip(e['pres'], e['absn'], e['awo']))

@@ -382,7 +382,7 @@ TwoPassRoom twoPassRoom()
 }
 }  // namespace
 
-// mstep.loop_search_candidate_spacing (off by default, see doc/benchmarks.md): under the
+// mstep.loop_search_candidate_spacing (off by default, see doc/benchmarks-history.md): under the
 // misplaced estimate the first pass's poses nearest to the second pass see only a wall
 // along x (a corridor slide: no loop edge); poses of the same pass 1.5-2 m back along the
 // path see the room's corners. With a 1 m spacing they are registered too and the loop

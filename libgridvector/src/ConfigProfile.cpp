@@ -24,11 +24,11 @@ std::vector<ConfigProfile> makeProfiles()
 	em.reasons["map.wipe_counts_beams"] =
 		"the paper's Fig. 2 unit (one increment per cell and wipe triangle) for the per-scan maps the E-step "
 		"classifies; the library default counts beams to keep Algorithm 1's endpoint counts and the wipes in one "
-		"unit (doc/benchmarks.md)";
+		"unit (doc/benchmarks-history.md, Global map)";
 	em.reasons["posegraph.odometry_sigma_xy_per_m"] =
 		"odometry edges (Eq. 21) weighted by what the benchmark logs' residuals show: at the optimum the estimate "
 		"departs from the odometry by 0.036-0.052 m per metre (per axis), well inside 0.08; 0.06 lowered the loop "
-		"error on intel, aces, csail, freiburg-101 and seattle, freiburg-079 equal within 0.0001 m (doc/benchmarks.md, "
+		"error on intel, aces, csail, freiburg-101 and seattle, freiburg-079 equal within 0.0001 m (doc/benchmarks-history.md, "
 		"Real logs); the library default stays for gv-graphslam";
 	return {lib, em};
 }

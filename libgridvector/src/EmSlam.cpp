@@ -68,7 +68,7 @@ GridVectorConfig EmSlam::defaultConfig()
 	c.extraction.minLength = 0.12;
 	c.extraction.maxPointGap = 1.0;
 	c.map.wipeCountsBeams = false;  // Fig. 2's unit: one increment per cell and triangle
-	c.posegraph.odometrySigmaXYPerM = 0.06;  // Eq. 21 Sigma_ji of the odometry (u_t) edges: closer to the residuals at the optimum (doc/benchmarks.md)
+	c.posegraph.odometrySigmaXYPerM = 0.06;  // Eq. 21 Sigma_ji of the odometry (u_t) edges: closer to the residuals at the optimum (doc/benchmarks-history.md)
 	return c;
 }
 

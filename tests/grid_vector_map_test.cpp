@@ -109,6 +109,25 @@ TEST(CGridVectorMap, LikelihoodOptionsAreReadStrictly)
 		const std::string key(bad, std::strchr(bad, ' '));
 		EXPECT_NE(e.find("[map_gridVectorMap_00_likelihoodOpts] " + key + " = "), std::string::npos) << bad << ": " << e;
 	}
+	// the whole message: who read it, section, key, the text and what it should be
+	EXPECT_NE(iniError("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_likelihoodOpts]\nzRandom = 1\n")
+				  .find("CGridVectorMap config: [map_gridVectorMap_00_likelihoodOpts] zRandom = '1' is not a number in [0,1)"),
+			  std::string::npos);
+	EXPECT_NE(iniError("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_likelihoodOpts]\ndecimation = 0\n")
+				  .find("[map_gridVectorMap_00_likelihoodOpts] decimation = '0' is not an integer in [1,1000000]"),
+			  std::string::npos);
+	EXPECT_NE(iniError("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_likelihoodOpts]\nsgima = 1\n")
+				  .find("CGridVectorMap config: unknown key 'sgima' in section [map_gridVectorMap_00_likelihoodOpts]"),
+			  std::string::npos);
+	// valid values are taken
+	const auto mm = multiMapFrom(
+		"[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_likelihoodOpts]\nsigma = 0.07\nmaxCorrDistance = 0.4\n"
+		"zRandom = 0\ndecimation = 3\n");
+	const auto& lo = mm.mapByClass<CGridVectorMap>()->likelihoodOptions;
+	EXPECT_DOUBLE_EQ(lo.sigma, 0.07);
+	EXPECT_DOUBLE_EQ(lo.maxCorrDistance, 0.4);
+	EXPECT_DOUBLE_EQ(lo.zRandom, 0);
+	EXPECT_EQ(lo.decimation, 3);
 }
 
 TEST(CGridVectorMap, SerializedInsideAMultiMetricMap)

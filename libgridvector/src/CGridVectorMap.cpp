@@ -1,11 +1,9 @@
 // CGridVectorMap: map definition (registry), construction, clear, description.
 #include <gridvector/OccupancyConversion.h>
+#include <gridvector/io/IniValue.h>
 #include <mrpt/config/CConfigFileBase.h>
 #include <mrpt/maps/CGridVectorMap.h>
 
-#include <cctype>
-#include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 
 #include <sstream>
@@ -102,33 +100,14 @@ std::string CGridVectorMap::asString() const
 void CGridVectorMap::TLikelihoodOptions::loadFromConfigFile(
 	const mrpt::config::CConfigFileBase& source, const std::string& section)
 {
-	if (source.sectionExists(section))
-	{
-		std::vector<std::string> keys;
-		source.getAllKeys(section, keys);
-		for (const auto& k : keys)
-			if (k != "sigma" && k != "maxCorrDistance" && k != "zRandom" && k != "decimation")
-				throw std::runtime_error(
-					"CGridVectorMap config: unknown key '" + k + "' in section [" + section + "]");
-	}
-	// strictly: MRPT's read_double / read_int take "abc" as 0 and "2.5" as 2
-	auto read = [&](const char* key, double& field, bool integer, bool ok(double)) {
-		if (!source.keyExists(section, key)) return;
-		std::string text = source.read_string(section, key, "");
-		while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) text.pop_back();
-		char* end = nullptr;
-		const double v = std::strtod(text.c_str(), &end);
-		if (text.empty() || *end || !std::isfinite(v) || (integer && v != std::floor(v)) || !ok(v))
-			throw std::runtime_error("CGridVectorMap config: [" + section + "] " + key + " = '" + text + "' is not " +
-									 (integer ? "an integer >= 1" : "a valid value (sigma, maxCorrDistance > 0; zRandom in [0,1))"));
-		field = v;
-	};
-	double dec = decimation;
-	read("sigma", sigma, false, [](double v) { return v > 0; });
-	read("maxCorrDistance", maxCorrDistance, false, [](double v) { return v > 0; });
-	read("zRandom", zRandom, false, [](double v) { return v >= 0 && v < 1; });
-	read("decimation", dec, true, [](double v) { return v >= 1 && v <= 1e6; });
-	decimation = int(dec);
+	const std::string from = "CGridVectorMap config";
+	gridvector::io::requireKnownKeys(source, section, {"sigma", "maxCorrDistance", "zRandom", "decimation"}, from);
+	using gridvector::io::readIniValue;
+	readIniValue(source, section, "sigma", sigma, from, "a number > 0", [](double v) { return v > 0; });
+	readIniValue(source, section, "maxCorrDistance", maxCorrDistance, from, "a number > 0", [](double v) { return v > 0; });
+	readIniValue(source, section, "zRandom", zRandom, from, "a number in [0,1)", [](double v) { return v >= 0 && v < 1; });
+	readIniValue(source, section, "decimation", decimation, from, "an integer in [1,1000000]",
+				 [](int v) { return v >= 1 && v <= 1000000; });
 }
 
 void CGridVectorMap::TLikelihoodOptions::dumpToTextStream(std::ostream& out) const

@@ -1,13 +1,10 @@
 #include <gridvector/GridVectorConfig.h>
 #include <gridvector/io/IniLayout.h>
+#include <gridvector/io/IniValue.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 
-#include <cctype>
-#include <cerrno>
-#include <climits>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -31,64 +28,6 @@ std::string toText(const T& value)
 	return os.str();
 }
 
-// The value's text, without a trailing "; comment" or "# comment".
-std::string valueText(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key)
-{
-	std::string v = c.read_string(section, key, "");
-	for (const char* mark : {";", "#"})
-		for (size_t p = v.find(mark); p != std::string::npos; p = v.find(mark, p + 1))
-			if (p > 0 && std::isspace(static_cast<unsigned char>(v[p - 1]))) v.resize(p);
-	while (!v.empty() && std::isspace(static_cast<unsigned char>(v.back()))) v.pop_back();
-	return v;
-}
-
-// Strict parsing: MRPT's read_double/read_int/read_bool would read "0.o5" as 0 and "ture" as false.
-bool parseValue(const std::string& v, double& f)
-{
-	char* end = nullptr;
-	const double x = std::strtod(v.c_str(), &end);
-	if (v.empty() || *end || !std::isfinite(x)) return false;
-	return f = x, true;
-}
-bool parseValue(const std::string& v, int& f)
-{
-	char* end = nullptr;
-	errno = 0;
-	const long x = std::strtol(v.c_str(), &end, 10);
-	if (v.empty() || *end || errno == ERANGE || x < INT_MIN || x > INT_MAX) return false;
-	return f = int(x), true;
-}
-std::string lowerCase(std::string s)
-{
-	for (char& ch : s) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-	return s;
-}
-
-bool parseValue(std::string v, bool& f)
-{
-	v = lowerCase(std::move(v));
-	if (v == "true" || v == "yes" || v == "1") return f = true, true;
-	if (v == "false" || v == "no" || v == "0") return f = false, true;
-	return false;
-}
-template <class T>
-const char* kindOf()
-{
-	if constexpr (std::is_same_v<T, bool>) return "true or false";
-	else if constexpr (std::is_same_v<T, int>) return "an integer";
-	else return "a finite number";
-}
-
-template <class T>
-void readValue(const mrpt::config::CConfigFileBase& c, const std::string& section, const char* key, T& field,
-			   const std::string& sourceName)
-{
-	if (!c.keyExists(section, key)) return;
-	const std::string v = valueText(c, section, key);
-	if (!parseValue(v, field))
-		throw std::runtime_error(sourceName + ": [" + section + "] " + key + " = '" + v + "' is not " + kindOf<T>());
-}
-
 template <class Group>
 std::set<std::string> keysOf(Group& g)
 {
@@ -103,15 +42,15 @@ std::set<std::string> keysOf(Group& g)
 void requireKnownSections(const mrpt::config::CConfigFileBase& cfg, const std::string& prefix,
 						  const std::vector<std::string>& known, const std::string& sourceName)
 {
-	const std::string head = lowerCase(prefix + "_");
+	const std::string head = io::lowerCase(prefix + "_");
 	std::vector<std::string> sections;
 	cfg.getAllSections(sections);
 	for (const auto& s : sections)
 	{
-		const std::string l = lowerCase(s);
+		const std::string l = io::lowerCase(s);
 		if (l.size() <= head.size() || l.compare(0, head.size(), head) != 0) continue;
 		bool ok = false;
-		for (const auto& k : known) ok = ok || l.substr(head.size()) == lowerCase(k);
+		for (const auto& k : known) ok = ok || l.substr(head.size()) == io::lowerCase(k);
 		if (ok) continue;
 		std::string list;
 		for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
@@ -131,16 +70,8 @@ void GridVectorConfig::loadFromConfigFile(
 	visitGroups([&](const char* group, auto& g) {
 		const std::string section = prefix + "_" + group;
 		if (!cfg.sectionExists(section)) return;
-		const auto known = keysOf(g);
-		std::vector<std::string> present;
-		cfg.getAllKeys(section, present);
-		for (const auto& k : present)
-			if (!known.count(k))
-				throw std::runtime_error(
-					sourceName + ": unknown key '" + k + "' in section [" + section + "]");
-		g.visit([&](const char* key, auto& field, const char*) {
-			readValue(cfg, section, key, field, sourceName);
-		});
+		io::requireKnownKeys(cfg, section, keysOf(g), sourceName);
+		g.visit([&](const char* key, auto& field, const char*) { io::readIniValue(cfg, section, key, field, sourceName); });
 	});
 	validate();
 }

@@ -261,6 +261,43 @@ TEST(CarmenReader, GzipAndPlainGiveTheSameScansAndTruncationIsAnError)
 	fs::remove(cutPlain);
 }
 
+namespace
+{
+std::string requireScansError(const LogData& d)
+{
+	try
+	{
+		requireScans(d);
+	}
+	catch (const std::runtime_error& e)
+	{
+		return e.what();
+	}
+	return "no error";
+}
+}  // namespace
+
+TEST(CarmenReader, NoScansSaysWhatTheLogHolds)
+{
+	const LogData d = parse("PARAM robot_front_laser_max 81 h 0\nODOM 0 0 0 0 0 0 1.0 h 1\nODOM 0.1 0 0 0 0 0 1.2 h 1\n"
+							"GPSNMEA x 1 h 1\n");
+	EXPECT_EQ(d.contents.odometryRecords, 2u);
+	EXPECT_EQ(d.contents.paramLines, 1u);
+	ASSERT_EQ(d.contents.ignored.size(), 1u);
+	EXPECT_EQ(d.contents.ignored.at("GPSNMEA"), 1u);
+	EXPECT_EQ(requireScansError(d), "mem.log: no laser scans (2 ODOM, 1 PARAM, 1 GPSNMEA ignored)");
+	EXPECT_EQ(requireScansError(parse("")), "mem.log: no laser scans (0 ODOM, 0 PARAM)");
+	// rear scans left out on request are what the file holds
+	ReadOptions front;
+	front.includeRearLaser = false;
+	const std::string rear = "RLASER 3 1 1 1 0 0 0 0 0 0 1.5 h 1\n";
+	const LogData r = parseCarmenLog(std::vector<char>(rear.begin(), rear.end()), "rear.log", front);
+	EXPECT_EQ(requireScansError(r), "rear.log: no laser scans (0 ODOM, 0 PARAM, 1 RLASER ignored)");
+	EXPECT_EQ(requireScansError(parse(rear)), "no error");
+	// the summary says the same
+	EXPECT_NE(d.summary.find("; 2 ODOM, 1 PARAM, 1 GPSNMEA ignored"), std::string::npos) << d.summary;
+}
+
 TEST(TrajectoryFile, RoundTripAndErrors)
 {
 	const std::string p = tempPath("traj.txt");

@@ -221,6 +221,38 @@ TEST(RawlogReader, ZeroBeamScanIsAnErrorAndTimeGoingBackIsAWarning)
 	for (const auto& p : {unsorted, empty}) fs::remove(p);
 }
 
+TEST(RawlogReader, NoScansSaysWhatTheRawlogHolds)
+{
+	// MRPT's range-bearing and range-only SLAM samples: sensory frames without a 2D laser
+	const std::string kf = std::string(GV_MRPT_DATASETS) + "/kf-slam_demo.rawlog";
+	const LogData d = readLog(kf);
+	EXPECT_TRUE(d.scans.empty());
+	EXPECT_EQ(d.contents.format, LogContents::Format::Rawlog);
+	EXPECT_EQ(d.contents.actionSets, 250u);
+	EXPECT_EQ(d.contents.sensoryFrames, 250u);
+	EXPECT_TRUE(d.contents.movementActions);
+	try
+	{
+		requireScans(d);
+		ADD_FAILURE() << "no error";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), kf + ": no laser scans (actions+sensory-frames format (250 action sets, 250 sensory "
+												"frames); odometry from robot-movement actions, 250 "
+												"mrpt::obs::CObservationBearingRange ignored)");
+	}
+	// observation-only, odometry objects and nothing else
+	LogContents c;
+	c.format = LogContents::Format::Rawlog;
+	c.observations = 7;
+	c.odometryRecords = 7;
+	EXPECT_EQ(describeContents(c), "observation-only format (7 observations); odometry from 7 odometry observations");
+	c.odometryRecords = 0;
+	c.ignored["scans of other sensors"] = 3;
+	EXPECT_EQ(describeContents(c), "observation-only format (7 observations); no odometry, 3 scans of other sensors ignored");
+}
+
 TEST(Carmen2Rawlog, ToolWritesRawlogsMrptCanRead)
 {
 	const std::string bin = std::string(GV_BIN_DIR) + "/gv-carmen2rawlog";

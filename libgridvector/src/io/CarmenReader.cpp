@@ -79,8 +79,7 @@ class CarmenParser
 	std::vector<ScanMessage> pending_;  //!< parallel to out_.scans
 	std::vector<size_t> needOdometry_;  //!< RAWLASER scans: odometry from ODOM lines
 	OdometryTrack odom_;
-	std::map<std::string, size_t> scans_, other_;
-	size_t odomLines_ = 0, paramLines_ = 0;
+	std::map<std::string, size_t> scans_;
 	double maxReading_ = 0;
 	double inferredMax_ = 0;
 	std::set<std::string> layouts_;
@@ -125,14 +124,14 @@ void CarmenParser::onOther(const Tokens& t)
 									   std::isdigit(static_cast<unsigned char>(c)) || c == '_';
 							});
 	if (!identifier) parseError(pos_, "unrecognised line starting with '" + printableToken(k) + "' (not a CARMEN message)");
-	other_[str(k)]++;
+	out_.contents.ignored[str(k)]++;
 }
 
 void CarmenParser::onParam(const Tokens& t)
 {
 	if (t.size() < 3) parseError(pos_, "PARAM: expected 'PARAM name value ...', found " + std::to_string(t.size()) + " fields");
 	params_.apply(t[1], t[2], pos_);
-	paramLines_++;
+	out_.contents.paramLines++;
 }
 
 /** The message's trailer is "timestamp host logger_timestamp" (or just "timestamp"). */
@@ -174,12 +173,12 @@ void CarmenParser::onOdom(const Tokens& t)
 {
 	const double ts = timestampAfter(t, 7, "ODOM");
 	odom_.add(ts, poseAt(t, 1, "ODOM"));
-	odomLines_++;
+	out_.contents.odometryRecords++;
 }
 
 void CarmenParser::onFlaser(const Tokens& t, bool rear)
 {
-	if (rear && !opt_.includeRearLaser) return void(other_[str(t[0])]++);
+	if (rear && !opt_.includeRearLaser) return void(out_.contents.ignored[str(t[0])]++);
 	const std::string what = str(t[0]);
 	const size_t n = count(t, 1, what + " beam count");
 	if (n == 0) parseError(pos_, what + ": zero beams");
@@ -246,7 +245,7 @@ void CarmenParser::onRobotLaser(const Tokens& t)
 /** RAWLASERx head (laserMessage), then ts host lts */
 void CarmenParser::onRawLaser(const Tokens& t, int which)
 {
-	if (which == 2 && !opt_.includeRearLaser) return void(other_[str(t[0])]++);
+	if (which == 2 && !opt_.includeRearLaser) return void(out_.contents.ignored[str(t[0])]++);
 	size_t tail = 0;
 	double ts = 0;
 	ScanMessage s = laserMessage(t, 0, tail, ts);
@@ -318,8 +317,7 @@ std::string CarmenParser::summary() const
 	for (const auto& [k, n] : scans_) s += (first ? "" : ", ") + std::to_string(n) + " " + k, first = false;
 	s += ")";
 	for (const auto& l : layouts_) s += "; " + l;
-	s += "; " + std::to_string(odomLines_) + " ODOM, " + std::to_string(paramLines_) + " PARAM";
-	for (const auto& [k, n] : other_) s += ", " + std::to_string(n) + " " + k + " ignored";
+	s += "; " + describeContents(out_.contents);
 	for (const auto& w : out_.warnings) s += "; warning: " + w;
 	return s;
 }

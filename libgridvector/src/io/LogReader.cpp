@@ -65,13 +65,23 @@ LogData readLog(const std::string& path, const ReadOptions& opt)
 
 void requireScans(const LogData& log)
 {
-	if (!log.scans.empty()) return;
-	// the summary without "path: 0 scans" and the warning that says the same
-	std::string what = log.summary.substr(std::min(log.summary.size(), log.source.size() + 2));
-	for (const std::string noise : {"0 scans (); ", "0 scans; ", "; warning: no laser scans in the file",
-									"; warning: no 2D laser scans in the file"})
-		if (const size_t p = what.find(noise); p != std::string::npos) what.erase(p, noise.size());
-	throw std::runtime_error(log.source + ": no laser scans" + (what.empty() ? "" : " (" + what + ")"));
+	if (log.scans.empty()) throw std::runtime_error(log.source + ": no laser scans (" + describeContents(log.contents) + ")");
+}
+
+std::string describeContents(const LogContents& c)
+{
+	const auto n = [](size_t k) { return std::to_string(k); };
+	std::string s;
+	if (c.format == LogContents::Format::Carmen) s = n(c.odometryRecords) + " ODOM, " + n(c.paramLines) + " PARAM";
+	else
+	{
+		s = c.sensoryFrames ? "actions+sensory-frames format (" + n(c.actionSets) + " action sets, " + n(c.sensoryFrames) + " sensory frames)"
+							: "observation-only format (" + n(c.observations) + " observations)";
+		s += c.odometryRecords ? "; odometry from " + n(c.odometryRecords) + " odometry observations"
+							   : c.movementActions ? "; odometry from robot-movement actions" : "; no odometry";
+	}
+	for (const auto& [k, count] : c.ignored) s += ", " + n(count) + " " + k + " ignored";
+	return s;
 }
 
 Trajectory trajectoryOf(const LogData& log, bool logPose)

@@ -40,8 +40,7 @@ class RawlogParser
 	ReadOptions opt_;
 	LogData out_;
 	size_t entry_ = 0;
-	size_t frames_ = 0, actions_ = 0, observations_ = 0, noTimestamp_ = 0;
-	std::map<std::string, size_t> other_;
+	size_t noTimestamp_ = 0;
 	OdometryTrack odomObs_;
 	mrpt::poses::CPose2D cumulative_;
 	bool hasMotion_ = false;
@@ -85,21 +84,21 @@ void RawlogParser::fail(const std::string& msg) const
 
 void RawlogParser::onObject(const mrpt::serialization::CSerializable::Ptr& obj)
 {
-	if (!obj) return void(other_["null object"]++);
+	if (!obj) return void(out_.contents.ignored["null object"]++);
 	if (auto acts = std::dynamic_pointer_cast<CActionCollection>(obj)) return onActions(*acts);
 	if (auto sf = std::dynamic_pointer_cast<CSensoryFrame>(obj))
 	{
-		frames_++;
+		out_.contents.sensoryFrames++;
 		for (const auto& o : *sf) onObservation(o, true);
 		return;
 	}
 	if (auto o = std::dynamic_pointer_cast<CObservation>(obj)) return onObservation(o, false);
-	other_[obj->GetRuntimeClass()->className]++;
+	out_.contents.ignored[obj->GetRuntimeClass()->className]++;
 }
 
 void RawlogParser::onActions(const CActionCollection& acts)
 {
-	actions_++;
+	out_.contents.actionSets++;
 	const auto mov = acts.getActionByClass<CActionRobotMovement2D>();
 	if (!mov) return;
 	const mrpt::poses::CPose2D inc = mov->estimationMethod == CActionRobotMovement2D::emOdometry
@@ -111,13 +110,13 @@ void RawlogParser::onActions(const CActionCollection& acts)
 
 void RawlogParser::onObservation(const CObservation::Ptr& obs, bool inFrame)
 {
-	if (!inFrame) observations_++;
+	if (!inFrame) out_.contents.observations++;
 	const double t = obs->timestamp == INVALID_TIMESTAMP ? 0.0 : mrpt::Clock::toDouble(obs->timestamp);
 	if (auto odo = std::dynamic_pointer_cast<CObservationOdometry>(obs))
 		return odomObs_.add(t, odo->odometry.asTPose());
 	auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(obs);
-	if (!scan) return void(other_[obs->GetRuntimeClass()->className]++);
-	if (!opt_.sensorLabel.empty() && scan->sensorLabel != opt_.sensorLabel) return void(other_["scans of other sensors"]++);
+	if (!scan) return void(out_.contents.ignored[obs->GetRuntimeClass()->className]++);
+	if (!opt_.sensorLabel.empty() && scan->sensorLabel != opt_.sensorLabel) return void(out_.contents.ignored["scans of other sensors"]++);
 	checkRanges(*scan);
 	if (obs->timestamp == INVALID_TIMESTAMP) noTimestamp_++;
 	ScanRecord r;
@@ -158,13 +157,10 @@ void RawlogParser::finish()
 		out_.warnings.push_back(std::to_string(backwards) + " scan timestamps do not increase (unsorted or repeated timestamps in the file)");
 	if (noTimestamp_) out_.warnings.push_back(std::to_string(noTimestamp_) + " scans have no timestamp (set to 0)");
 	if (out_.scans.empty()) out_.warnings.push_back("no 2D laser scans in the file");
-	std::string s = out_.source + ": " + std::to_string(out_.scans.size()) + " scans; ";
-	s += frames_ ? "actions+sensory-frames format (" + std::to_string(actions_) + " action sets, " +
-					   std::to_string(frames_) + " sensory frames)"
-				 : "observation-only format (" + std::to_string(observations_) + " observations)";
-	s += odomObs_.empty() ? (hasMotion_ ? "; odometry from robot-movement actions" : "; no odometry")
-						  : "; odometry from " + std::to_string(odomObs_.size()) + " odometry observations";
-	for (const auto& [k, n] : other_) s += ", " + std::to_string(n) + " " + k + " ignored";
+	out_.contents.format = LogContents::Format::Rawlog;
+	out_.contents.odometryRecords = odomObs_.size();
+	out_.contents.movementActions = hasMotion_;
+	std::string s = out_.source + ": " + std::to_string(out_.scans.size()) + " scans; " + describeContents(out_.contents);
 	for (const auto& w : out_.warnings) s += "; warning: " + w;
 	out_.summary = s;
 }

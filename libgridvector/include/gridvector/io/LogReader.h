@@ -5,6 +5,7 @@
 #include <mrpt/math/TPose2D.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include <map>
 #include <optional>
 #include <string>
 #include <utility>
@@ -26,11 +27,29 @@ struct ScanRecord
 	bool hasLogPose = false;
 };
 
+/** What a log file holds besides the scans kept, counted by the reader. */
+struct LogContents
+{
+	enum class Format { Carmen, Rawlog } format = Format::Carmen;
+	size_t odometryRecords = 0;  //!< CARMEN ODOM lines; rawlog CObservationOdometry objects
+	size_t paramLines = 0;  //!< CARMEN PARAM lines
+	size_t actionSets = 0, sensoryFrames = 0;  //!< rawlog: actions+sensory-frames format when sensoryFrames > 0
+	size_t observations = 0;  //!< rawlog: observations outside sensory frames (observation-only format)
+	bool movementActions = false;  //!< rawlog: robot-movement actions (the odometry when there are no odometry objects)
+	std::map<std::string, size_t> ignored;  //!< what was passed over, by CARMEN message or MRPT class
+};
+
+/** The contents in words, as the readers' summaries give them: CARMEN "14541 ODOM, 3 PARAM, 910 NEFF
+ * ignored"; rawlog "actions+sensory-frames format (250 action sets, 250 sensory frames); odometry from
+ * robot-movement actions, 250 mrpt::obs::CObservationBearingRange ignored". */
+std::string describeContents(const LogContents& c);
+
 struct LogData
 {
 	std::vector<ScanRecord> scans;
 	std::string source;  //!< the path read
-	std::string summary;  //!< one line: what was read (counts, laser geometry, warnings)
+	LogContents contents;  //!< what else the file holds
+	std::string summary;  //!< one line: what was read (counts, laser geometry, contents, warnings)
 	std::vector<std::string> warnings;  //!< oddities that are not errors (also in summary)
 	double noReturnRange = 0;  //!< > 0: the scanner's no-return value found and applied (ReadOptions)
 };
@@ -51,7 +70,7 @@ struct ReadOptions
  * Throws std::runtime_error("file:line: what is wrong"). */
 LogData readLog(const std::string& path, const ReadOptions& opt = {});
 
-/** Throws "path: no laser scans (what the file holds)" if log has no scan: e.g.
+/** Throws "path: no laser scans (describeContents)" if log has no scan: e.g.
  * "kf-slam_demo.rawlog: no laser scans (actions+sensory-frames format (...), 120 CObservationBearingRange ignored)". */
 void requireScans(const LogData& log);
 

@@ -42,8 +42,9 @@ std::vector<std::optional<mrpt::math::TPose2D>> posesAtScans(const LogData& log,
 		for (size_t i = 0; i < n; ++i) out[i] = traj[i].second;
 		return out;
 	}
+	const auto earlier = [](const Trajectory::value_type& a, const Trajectory::value_type& b) { return a.first < b.first; };
 	Trajectory sorted = traj;
-	std::stable_sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+	std::stable_sort(sorted.begin(), sorted.end(), earlier);
 	for (size_t i = 0; i < n; ++i)
 	{
 		const double t = log.scans[i].timestamp;
@@ -54,8 +55,7 @@ std::vector<std::optional<mrpt::math::TPose2D>> posesAtScans(const LogData& log,
 				(!best || std::abs(c->first - t) < std::abs(best->first - t)))
 				best = &*c;
 		if (!best) continue;
-		const auto [lo, hi] = std::equal_range(sorted.begin(), sorted.end(), *best,
-											   [](const auto& a, const auto& b) { return a.first < b.first; });
+		const auto [lo, hi] = std::equal_range(sorted.begin(), sorted.end(), *best, earlier);
 		for (auto c = lo; c != hi; ++c)
 			if (!(c->second == best->second))
 			{

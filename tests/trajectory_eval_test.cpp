@@ -164,3 +164,84 @@ TEST(TrajectoryEval, AlignmentTransformRecoversTheFrameOffset)
 	EXPECT_NEAR(A.y, T.y, 1e-9);
 	EXPECT_NEAR(A.phi, T.phi, 1e-9);
 }
+
+namespace
+{
+/** path(n) with its first `tied` poses at one time, as csail-corrected's six-digit timestamps. */
+io::Trajectory tiedPath(size_t n, size_t tied)
+{
+	io::Trajectory t = path(n);
+	for (size_t k = 0; k < tied; k++) t[k].first = 100.0;
+	return t;
+}
+}  // namespace
+
+TEST(TrajectoryEval, TimesSharedByDifferentPosesAreMatchedByOrderWhenBothArePerScan)
+{
+	const auto ref = tiedPath(200, 120);
+	const auto est = transformed(ref, 3.0, -7.5, 1.1);  // the same path in another frame: every error 0
+	const auto m = eval::matchPoses(est, ref, 0.05);
+	EXPECT_TRUE(m.byOrder);
+	EXPECT_EQ(m.why, "120 estimate poses share t = 100.000000 and differ");
+	ASSERT_EQ(m.pairs.size(), 200u);
+	const auto byOrder = eval::evaluatePairs(m.pairs);
+	EXPECT_LT(byOrder.ateRmse, 1e-9);
+	EXPECT_LT(byOrder.loopT, 1e-9);
+	// by time (evaltraj.py) all 120 go to one estimate pose
+	EXPECT_GT(eval::evaluateTrajectory(est, ref).ateRmse, 1.0);
+}
+
+TEST(TrajectoryEval, TimesSharedByDifferentPosesWithoutOnePosePerScanAreAnError)
+{
+	const auto ref = tiedPath(200, 120);
+	auto fewer = ref;
+	fewer.pop_back();
+	auto shifted = ref;
+	shifted[150].first += 1.0;
+	for (const auto& [est, what] : {std::pair(fewer, std::string("199 estimate and 200 reference poses)")),
+									std::pair(shifted, std::string("200 estimate and 200 reference poses, pose 151 at other times)"))})
+		try
+		{
+			eval::matchPoses(est, ref, 0.05);
+			ADD_FAILURE() << what;
+		}
+		catch (const std::runtime_error& e)
+		{
+			const std::string msg = e.what();
+			EXPECT_EQ(msg.rfind("120 estimate poses share t = 100.000000 and differ: ", 0), 0u) << msg;
+			EXPECT_NE(msg.find(what), std::string::npos) << msg;
+		}
+}
+
+TEST(TrajectoryEval, UnambiguousTimesAreMatchedByTimeAsEvaltrajPy)
+{
+	// distinct times (a thinned, jittered estimate), and times shared by equal poses (a repeated line)
+	const auto ref = path(200);
+	io::Trajectory thinned;
+	for (size_t k = 0; k < ref.size(); k += 2) thinned.emplace_back(ref[k].first + 0.01, ref[k].second);
+	auto repeated = ref;
+	repeated.insert(repeated.begin() + 50, ref[50]);
+	for (const auto& est : {thinned, repeated})
+	{
+		const auto m = eval::matchPoses(est, ref, 0.05);
+		EXPECT_FALSE(m.byOrder);
+		EXPECT_TRUE(m.why.empty());
+		const auto t = eval::matchByTimestamp(est, ref, 0.05);
+		ASSERT_EQ(m.pairs.size(), t.size());
+		for (size_t i = 0; i < t.size(); i++) EXPECT_TRUE(m.pairs[i] == t[i]) << i;
+	}
+}
+
+TEST(TrajectoryEval, GvEvalScoresCsailsRawLogByOrder)
+{
+	// csail-corrected: 365 of 406 scans at t = 1.13486e+09; its own poses against themselves score 0
+	const std::string csail = std::string(GV_SHARED_DIR) + "/data/csail-corrected.log.gz";
+	const std::string bin = std::string(GV_BIN_DIR) + "/gv-eval";
+	if (!fs::exists(bin) || !fs::exists(csail)) GTEST_SKIP() << "gv-eval or csail-corrected not available";
+	const std::string out = run("'" + bin + "' traj '" + csail + "' '" + csail + "' --log-pose 2>&1");
+	EXPECT_NE(out.find("365 estimate poses share t = 1134860000.000000 and differ: matched by order"), std::string::npos) << out;
+	const auto m = parseKeyValues(out.substr(out.find("n=")));
+	EXPECT_EQ(m.at("n"), 406);
+	EXPECT_EQ(m.at("ate_rmse_m"), 0);
+	EXPECT_EQ(m.at("rel_loop_t_m"), 0);
+}

@@ -49,17 +49,29 @@ int trajectoryCommand(const io::ArgParser& a)
 	const bool logPose = a.has("log-pose");
 	const auto est = loadTrajectory(a.positional()[1], logPose);
 	const auto ref = loadTrajectory(a.positional()[2], logPose);
+	const std::string files = a.positional()[1] + " vs " + a.positional()[2] + ": ";
+	eval::PoseMatch match;
+	try
+	{
+		match = eval::matchPoses(est, ref, o.maxTimeDiff);  // by time as evaltraj.py; by order if times are ambiguous
+	}
+	catch (const std::runtime_error& e)
+	{
+		throw std::runtime_error(files + e.what());
+	}
+	if (match.byOrder)
+		std::fprintf(stderr, "gv-eval: %s%s: matched by order (one pose per scan of the same log)\n", files.c_str(),
+					 match.why.c_str());
 	eval::TrajectoryMetrics m;
 	try
 	{
-		m = eval::evaluateTrajectory(est, ref, o);
+		m = eval::evaluatePairs(match.pairs, o);
 	}
 	catch (const std::runtime_error& e)  // "too few matched poses (n)": say which files
 	{
 		char dt[32];
 		std::snprintf(dt, sizeof dt, "%g", o.maxTimeDiff);
-		throw std::runtime_error(a.positional()[1] + " vs " + a.positional()[2] + ": " + e.what() +
-								 " within --max-dt " + dt + " s");
+		throw std::runtime_error(files + e.what() + " within --max-dt " + dt + " s");
 	}
 	std::cout << (a.has("json") ? eval::formatJson(m) : eval::formatText(m)) << "\n";
 	return 0;
@@ -125,7 +137,9 @@ int main(int argc, char** argv)
 					   "traj EST REF [options]      (EST, REF: 't x y theta' files or logs: their odometry)\n"
 					   "       gv-eval map VECTORS.txt TRUTHDIR [options]  (TRUTHDIR: a gv-sim output directory)");
 	args.flag("json", "print JSON instead of text");
-	args.option("max-dt", "S", "traj: match poses within this time difference (default 0.05 s)");
+	args.option("max-dt", "S",
+				"traj: match poses within this time difference (default 0.05 s); where times are shared by different "
+				"poses, one pose per scan of the same log is matched by order");
 	args.flag("log-pose", "traj: for logs, use the poses the log attaches to scans instead of odometry");
 	args.option("trajectory", "EST", "map: the trajectory the map was built with; aligns the map to the truth like the ATE");
 	args.option("doors", "FILE", "map: detected doors 'hinge_x hinge_y length ...' to score door recall");

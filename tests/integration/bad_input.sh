@@ -139,6 +139,8 @@ expect 1 "garbage.txt:1: expected 't x y theta', found 2 fields" o9/map.gvmap --
 expect 1 "twice.txt: 2 different poses at t = 1000.400000: scans cannot be matched to poses by time" o9/map.gvmap -- "$B/gv-map" --input room.log --poses twice.txt --out o9 --quiet
 expect 1 "twice.txt: 2 different poses at t = 1000.400000" e9/report.json -- "$B/gv-em-slam" --input room.log --init twice.txt --out e9 --quiet
 expect 1 "nantraj.txt:1: x is 'nan'" e9/report.json -- "$B/gv-em-slam" --input room.log --init nantraj.txt --out e9 --quiet
+# gv-eval traj: by time a shared time would pick one of two poses, by order the times do not pair up
+expect 1 "twice.txt vs traj.txt: 2 estimate poses share t = 1000.400000 and differ: matching by time would pick one of them, and matching by order needs one pose per scan of the same log (20 estimate and 20 reference poses, pose 4 at other times)" - -- "$B/gv-eval" traj twice.txt traj.txt
 expect 1 "garbage.txt:1: expected 't x y theta'" - -- "$B/gv-eval" traj garbage.txt traj.txt
 expect 1 "nantraj.txt:1: x is 'nan'" - -- "$B/gv-eval" traj traj.txt nantraj.txt
 printf '# only a comment\n' > nopose.txt

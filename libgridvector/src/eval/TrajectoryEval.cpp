@@ -11,7 +11,7 @@ namespace gridvector::eval
 namespace
 {
 using mrpt::math::TPose2D;
-using Pairs = std::vector<std::pair<TPose2D, TPose2D>>;
+using Pairs = PosePairs;
 
 double wrap(double a) { return std::atan2(std::sin(a), std::cos(a)); }
 
@@ -76,29 +76,84 @@ std::string num(const char* fmt, double v)
 }
 
 std::string jsonNum(double v) { return std::isfinite(v) ? num("%.6f", v) : "null"; }
-}  // namespace
 
-Pairs matchByTimestamp(const io::Trajectory& estIn, const io::Trajectory& ref, double maxTimeDiff)
+bool earlier(const io::Trajectory::value_type& a, const io::Trajectory::value_type& b) { return a.first < b.first; }
+
+io::Trajectory sortedByTime(io::Trajectory t)
 {
-	io::Trajectory est = estIn;
-	std::stable_sort(est.begin(), est.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+	std::stable_sort(t.begin(), t.end(), earlier);
+	return t;
+}
+
+/** The index in `sorted` of the pose nearest in time to t, of the two around t, closer than maxTimeDiff; -1 if none. */
+long nearestInTime(const io::Trajectory& sorted, double t, double maxTimeDiff)
+{
+	const auto it = std::lower_bound(sorted.begin(), sorted.end(), t, [](const auto& e, double v) { return e.first < v; });
+	const long i = long(it - sorted.begin());
+	long best = -1;
+	for (long j : {i - 1, i})
+		if (j >= 0 && j < long(sorted.size()) && std::abs(sorted[size_t(j)].first - t) < maxTimeDiff)
+			if (best < 0 || std::abs(sorted[size_t(j)].first - t) < std::abs(sorted[size_t(best)].first - t)) best = j;
+	return best;
+}
+
+Pairs matchSorted(const io::Trajectory& sorted, const io::Trajectory& ref, double maxTimeDiff)
+{
 	Pairs out;
 	for (const auto& [t, g] : ref)
-	{
-		const auto it = std::lower_bound(est.begin(), est.end(), t, [](const auto& e, double v) { return e.first < v; });
-		const long i = long(it - est.begin());
-		long best = -1;
-		for (long j : {i - 1, i})
-			if (j >= 0 && j < long(est.size()) && std::abs(est[size_t(j)].first - t) < maxTimeDiff)
-				if (best < 0 || std::abs(est[size_t(j)].first - t) < std::abs(est[size_t(best)].first - t)) best = j;
-		if (best >= 0) out.emplace_back(est[size_t(best)].second, g);
-	}
+		if (const long j = nearestInTime(sorted, t, maxTimeDiff); j >= 0) out.emplace_back(sorted[size_t(j)].second, g);
 	return out;
 }
 
-TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajectory& ref, const TrajectoryEvalOptions& opt)
+/** "" or why matching by time is arbitrary: "N different estimate poses at t = T", the nearest estimate
+ * time of some reference pose. */
+std::string timeTie(const io::Trajectory& sorted, const io::Trajectory& ref, double maxTimeDiff)
 {
-	const Pairs p = matchByTimestamp(est, ref, opt.maxTimeDiff);
+	for (const auto& r : ref)
+	{
+		const long j = nearestInTime(sorted, r.first, maxTimeDiff);
+		if (j < 0) continue;
+		const auto& e = sorted[size_t(j)];
+		const auto [lo, hi] = std::equal_range(sorted.begin(), sorted.end(), e, earlier);
+		if (std::any_of(lo, hi, [&](const auto& o) { return !(o.second == e.second); }))
+		{
+			char buf[96];
+			std::snprintf(buf, sizeof buf, "%ld estimate poses share t = %.6f and differ", long(hi - lo), e.first);
+			return buf;
+		}
+	}
+	return "";
+}
+}  // namespace
+
+Pairs matchByTimestamp(const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff)
+{
+	return matchSorted(sortedByTime(est), ref, maxTimeDiff);
+}
+
+PoseMatch matchPoses(const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff)
+{
+	const io::Trajectory sorted = sortedByTime(est);
+	PoseMatch m;
+	m.why = timeTie(sorted, ref, maxTimeDiff);
+	if (m.why.empty())
+	{
+		m.pairs = matchSorted(sorted, ref, maxTimeDiff);
+		return m;
+	}
+	size_t i = 0;
+	while (i < est.size() && i < ref.size() && std::abs(est[i].first - ref[i].first) < maxTimeDiff) ++i;
+	if (est.size() != ref.size() || i < est.size())
+		throw std::runtime_error(m.why + ": matching by time would pick one of them, and matching by order needs one pose per scan of the same log (" +
+								 std::to_string(est.size()) + " estimate and " + std::to_string(ref.size()) + " reference poses" +
+								 (est.size() == ref.size() ? ", pose " + std::to_string(i + 1) + " at other times" : "") + ")");
+	m.byOrder = true;
+	for (i = 0; i < est.size(); ++i) m.pairs.emplace_back(est[i].second, ref[i].second);
+	return m;
+}
+
+TrajectoryMetrics evaluatePairs(const Pairs& p, const TrajectoryEvalOptions& opt)
+{
 	const size_t n = p.size();
 	if (n < 3) throw std::runtime_error("too few matched poses (" + std::to_string(n) + ")");
 	TrajectoryMetrics m;
@@ -118,6 +173,11 @@ TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajec
 	m.localPairs = cons.size();
 	m.loopPairs = thinned.size();
 	return m;
+}
+
+TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajectory& ref, const TrajectoryEvalOptions& opt)
+{
+	return evaluatePairs(matchByTimestamp(est, ref, opt.maxTimeDiff), opt);
 }
 
 std::string formatText(const TrajectoryMetrics& m)

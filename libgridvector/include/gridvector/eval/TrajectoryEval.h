@@ -28,12 +28,32 @@ struct TrajectoryMetrics
 	size_t loopPairs = 0;
 };
 
-/** (estimate, reference) pose pairs: for every reference pose, the estimate
- * nearest in time within maxTimeDiff, if any. */
-std::vector<std::pair<mrpt::math::TPose2D, mrpt::math::TPose2D>> matchByTimestamp(
-	const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff);
+/** (estimate, reference) pose pairs, in the reference's order. */
+using PosePairs = std::vector<std::pair<mrpt::math::TPose2D, mrpt::math::TPose2D>>;
 
-/** Throws std::runtime_error("too few matched poses (n)") when fewer than 3 poses match. */
+/** For every reference pose, the estimate nearest in time within maxTimeDiff, if any (evaltraj.py's
+ * matching: of the two estimates around the reference time, the nearer; the first of equal times). */
+PosePairs matchByTimestamp(const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff);
+
+struct PoseMatch
+{
+	PosePairs pairs;
+	bool byOrder = false;  //!< est[i] with ref[i]
+	std::string why;  //!< byOrder: the time shared by different poses ("365 estimate poses share t = ... and differ")
+};
+
+/** gv-eval traj's matching: matchByTimestamp, unless matching by time is ambiguous, i.e. the estimate
+ * nearest in time to some reference pose shares its time with a different estimate pose (csail-corrected
+ * prints six digits: 365 of its 406 scans at one time, all matched to one of them). Then by order when
+ * estimate and reference have one pose per scan of the same log: as many poses, the i-th within
+ * maxTimeDiff of each other in time (gv-em-slam's trajectory.txt against the log's own poses); otherwise
+ * throws std::runtime_error("N estimate poses share t = T and differ: ..."). */
+PoseMatch matchPoses(const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff);
+
+/** The metrics of matched pairs. Throws std::runtime_error("too few matched poses (n)") when fewer than 3. */
+TrajectoryMetrics evaluatePairs(const PosePairs& pairs, const TrajectoryEvalOptions& opt = {});
+
+/** evaluatePairs(matchByTimestamp(est, ref, opt.maxTimeDiff), opt): evaltraj.py's figures. */
 TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajectory& ref,
 									 const TrajectoryEvalOptions& opt = {});
 

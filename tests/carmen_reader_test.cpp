@@ -402,7 +402,8 @@ TEST(NoReturnRange, SaturationBelowTheDeclaredMaximumIsNoReturn)
 	EXPECT_FALSE(d.scans[0].scan->getScanRangeValidity(1));  // 50 m: no return
 	EXPECT_TRUE(d.scans[1].scan->getScanRangeValidity(1));  // 20.25 m: a hit
 	ASSERT_EQ(d.warnings.size(), 1u);
-	EXPECT_NE(d.warnings[0].find("no-return value: max range 50.00 m instead of 81.00 m"), std::string::npos);
+	EXPECT_EQ(d.warnings[0], "readings of exactly 50.00 m (the largest, in >= 1 % and >= 10 of the scans) are the scanner's "
+							 "no-return value: max range 50.00 m instead of 81.00 m");
 	// off: the declared maximum stands
 	ReadOptions keep;
 	keep.detectNoReturnRange = false;
@@ -425,6 +426,32 @@ TEST(NoReturnRange, RareLargestReadingIsAWall)
 	const LogData r = readLog(path);
 	EXPECT_FLOAT_EQ(r.scans[7].scan->maxRange, 81.f);
 	EXPECT_TRUE(r.scans[7].scan->getScanRangeValidity(1));
+	EXPECT_TRUE(r.warnings.empty());
+	fs::remove(path);
+}
+
+TEST(NoReturnRange, TinyLogNeedsTenScansAtTheLargestReading)
+{
+	// 20 scans: one scan's 50.00 m is 5 % of them, yet a wall seen once (1 % alone took it as no return)
+	auto text = [](int atTop) {
+		std::string t = "PARAM robot_front_laser_max 81 h 0\n";
+		for (int k = 0; k < 20; ++k)
+			t += "FLASER 3 1.5 " + std::string(k < atTop ? "50.00" : "20.25") + " 2.5 0 0 0 0 0 0 " +
+				 std::to_string(10 + k) + ".5 host 0\n";
+		return t;
+	};
+	EXPECT_FALSE(saturationRange(parse(text(1))).has_value());
+	EXPECT_FALSE(saturationRange(parse(text(9))).has_value());
+	ASSERT_TRUE(saturationRange(parse(text(10))).has_value());
+	EXPECT_DOUBLE_EQ(*saturationRange(parse(text(10))), 50.0);
+	EXPECT_TRUE(saturationRange(parse(text(1)), 0.01, 1).has_value());  // the share alone
+	// through readLog: the reading stays a hit, no warning
+	const std::string path = tempPath("tiny.log");
+	writeFileAtomically(path, [&](std::ostream& os) { os << text(1); });
+	const LogData r = readLog(path);
+	EXPECT_DOUBLE_EQ(r.noReturnRange, 0.0);
+	EXPECT_FLOAT_EQ(r.scans[0].scan->maxRange, 81.f);
+	EXPECT_TRUE(r.scans[0].scan->getScanRangeValidity(1));
 	EXPECT_TRUE(r.warnings.empty());
 	fs::remove(path);
 }

@@ -36,7 +36,7 @@ int main(int argc, char** argv)
 	args.flag("no-compress", "write an uncompressed rawlog (default: gzip, as MRPT does)");
 	args.flag("front-only", "drop rear-laser scans (RLASER, RAWLASER2)");
 	args.option("max-range", "auto|declared|M",
-				"auto (default): a reading shared exactly by >= 1 % of the scans at the log's maximum, below the "
+				"auto (default): a reading shared exactly by >= 1 % and >= 10 of the scans at the log's maximum, below the "
 				"declared maximum, is the scanner's no-return value (as the CARMEN reader does for every tool); "
 				"declared: keep the log's declared maximum; M: readings at or beyond M metres are 'no return' "
 				"(invalid) and every scan's maxRange is M");

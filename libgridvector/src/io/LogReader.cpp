@@ -41,9 +41,9 @@ void applyNoReturnRange(LogData& log)
 	if (*range >= double(declared) - 0.011) return;  // already the declared maximum
 	applyMaxRange(log, *range);
 	log.noReturnRange = *range;
-	char buf[160];
-	std::snprintf(buf, sizeof buf, "readings of exactly %.2f m (the largest, in >= 1 %% of the scans) are the scanner's no-return value: max range %.2f m instead of %.2f m",
-				  *range, *range, double(declared));
+	char buf[224];
+	std::snprintf(buf, sizeof buf, "readings of exactly %.2f m (the largest, in >= %g %% and >= %zu of the scans) are the scanner's no-return value: max range %.2f m instead of %.2f m",
+				  *range, 100 * kNoReturnMinShare, kNoReturnMinScans, *range, double(declared));
 	log.warnings.push_back(buf);
 	log.summary += std::string("; ") + buf;
 }

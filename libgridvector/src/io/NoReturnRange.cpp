@@ -5,7 +5,7 @@
 
 namespace gridvector::io
 {
-std::optional<double> saturationRange(const LogData& log, double minShare)
+std::optional<double> saturationRange(const LogData& log, double minShare, size_t minScans)
 {
 	float top = 0;
 	for (const auto& r : log.scans)
@@ -20,7 +20,7 @@ std::optional<double> saturationRange(const LogData& log, double minShare)
 				withTop++;
 				break;
 			}
-	if (double(withTop) < minShare * double(log.scans.size())) return std::nullopt;
+	if (withTop < minScans || double(withTop) < minShare * double(log.scans.size())) return std::nullopt;
 	return double(top);
 }
 

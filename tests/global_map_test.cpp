@@ -488,3 +488,45 @@ TEST(GlobalMap, MergeAllGroupRoundsLetAGrownSpanReachFurther)
 	EXPECT_EQ(sourcesWith(16), (std::vector<std::vector<uint64_t>>{{1, 2, 3}}));
 	EXPECT_EQ(sourcesWith(2), sourcesWith(16));
 }
+
+TEST(GlobalMap, RefusedMergeStillGetsTheScansHits)
+{
+	// Eq. 8 in sequential mode: a new vector's triangle gives only part b to the
+	// map vectors it corresponds to, since its endpoints reach them through its
+	// own Algorithm 1 counts when merged. X (a wall at y = 2) and j (a piece
+	// bending away from it by 9 deg, overlapping X over 0.5 m) correspond, but
+	// the guard (map.merge_holds_wall) refuses their merge: X must then get
+	// j's hits (part c) as if no merge had been considered.
+	LocalScan first, second;
+	first.vectors = {wallPiece({4, 2}, {0, 2})};
+	first.scanIndex = 0;
+	second.vectors = {wallPiece({0.5, 2}, {-3.5, 2.63})};
+	second.scanIndex = 1;
+	ASSERT_TRUE(corresponds(first.vectors[0], second.vectors[0], MapOptions{}));
+	for (const bool beams : {false, true})
+	{
+		GridVectorConfig cfg;
+		cfg.map.wipeCountsBeams = beams;
+		GridVectorConfig noMerge = cfg;
+		noMerge.map.mergeOnInsert = false;
+		GlobalMap merging(cfg), separate(noMerge);
+		for (GlobalMap* m : {&merging, &separate})
+		{
+			m->insertScan(TPose2D(0, 0, 0), first);
+			m->insertScan(TPose2D(0, 0, 0), second);
+		}
+		ASSERT_EQ(merging.size(), 2u) << "the merge is refused";
+		EXPECT_EQ(merging.lastInsertStats().refused, 1u);
+		const GridVector &x = merging.vectors()[0], &want = separate.vectors()[0];
+		ASSERT_EQ(x.scanIndex, 0);
+		EXPECT_GT(want.totalOccupy(), first.vectors[0].totalOccupy() + 1);  // j's part c reached X
+		ASSERT_EQ(x.cells().size(), want.cells().size());
+		for (size_t i = 0; i < x.cells().size(); ++i)
+		{
+			// per beam the same increments, summed in another order
+			const GridCell &a = x.cells()[i], &b = want.cells()[i];
+			EXPECT_NEAR(a.n_occupy, b.n_occupy, 1e-5 * b.n_occupy) << "beams " << beams << " cell " << i;
+			EXPECT_NEAR(a.n_visit, b.n_visit, 1e-5 * b.n_visit) << "beams " << beams << " cell " << i;
+		}
+	}
+}

@@ -116,3 +116,34 @@ TEST(ScanWipe, AloneTriangleAddsWhatItsMarksWould)
 		}
 	}
 }
+
+TEST(ScanWipe, CompleteAddsWhatTheHeldBackPartsWouldHave)
+{
+	// The HitWinsOverVisit scan, applied with the first triangle capped at part b,
+	// then completed to all parts: the cells end as with the full apply, per cell
+	// (the shared ray's cell still counted once) and per beam.
+	for (const bool beams : {false, true})
+	{
+		const GridVector wall({0.55, 2}, {-0.45, 2}, GridOptions{});
+		std::vector<GridVector> full{wall}, held{wall};
+		const VectorIndex idx = indexOf(full);
+		ScanWipe w(0.05, beams);
+		const std::vector<ScanWipe::Segment> scan{{{1, 2}, {0, 2}, 50}, {{0, 2.5}, {-1, 2.5}, 50}};
+		w.apply({0, 0}, scan, full, idx);
+		w.apply({0, 0}, scan, held, idx, [](size_t seg, uint32_t) { return seg == 0 ? WipePart::Visited : WipePart::Hit; });
+		ASSERT_LT(held[0].totalOccupy(), full[0].totalOccupy() - 1);  // the hits held back
+		const std::vector<WipeTriangle> tris{w.triangleOf({0, 0}, scan[0]), w.triangleOf({0, 0}, scan[1])};
+		ScanWipe::Stats st;
+		EXPECT_TRUE(ScanWipe::complete(tris, {WipePart::Visited, WipePart::Hit}, {WipePart::Hit, WipePart::Hit}, held[0],
+									   beams, st));
+		EXPECT_GT(st.cellsHit, 0u);
+		for (size_t i = 0; i < wall.cells().size(); ++i)
+		{
+			EXPECT_NEAR(held[0].cells()[i].n_occupy, full[0].cells()[i].n_occupy, 1e-5) << beams << " " << i;
+			EXPECT_NEAR(held[0].cells()[i].n_visit, full[0].cells()[i].n_visit, 1e-5) << beams << " " << i;
+		}
+		// nothing held back: nothing to add
+		EXPECT_FALSE(ScanWipe::complete(tris, {WipePart::Hit, WipePart::Hit}, {WipePart::Hit, WipePart::Hit}, held[0],
+										beams, st));
+	}
+}

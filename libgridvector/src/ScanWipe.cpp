@@ -84,6 +84,54 @@ bool ScanWipe::addAlone(const WipeTriangle& tri, GridVector& m, bool countBeams,
 	return hit + visited > 0;
 }
 
+WipeTriangle ScanWipe::triangleOf(const mrpt::math::TPoint2D& sensor, const Segment& v) const
+{
+	const double density = beams_ ? WipeTriangle::beamDensity(sensor, v.start, v.end, v.points) : 0.0;
+	return WipeTriangle(sensor, v.start, v.end, hitBand_, density);
+}
+
+// Eq. 8 of one scan on m: the increments of the parts `wanted` minus those of the parts `applied`.
+bool ScanWipe::complete(const std::vector<WipeTriangle>& tris, const std::vector<WipePart>& applied,
+						const std::vector<WipePart>& wanted, GridVector& m, bool countBeams, Stats& st)
+{
+	std::vector<Mark> was(m.cells().size()), now(m.cells().size());
+	Span spanWas, spanNow;
+	const Box2D box = Box2D::of(m);
+	for (size_t k = 0; k < tris.size(); ++k)
+	{
+		if (tris[k].misses(box.minX, box.minY, box.maxX, box.maxY)) continue;  // also a degenerate one
+		if (applied[k] != WipePart::Outside)
+			mark(tris[k], m, applied[k], countBeams, [&] { return was.data(); }, spanWas);
+		if (wanted[k] != WipePart::Outside)
+			mark(tris[k], m, wanted[k], countBeams, [&] { return now.data(); }, spanNow);
+	}
+	bool any = false;
+	size_t hits = 0, visitsGone = 0, visits = 0;
+	for (size_t i = spanNow.first; i < spanNow.last; ++i)
+	{
+		const Mark &a = was[i], &b = now[i];
+		const bool hitA = a.hit > 0, hitB = b.hit > 0, markedA = hitA || a.pass != 0, markedB = hitB || b.pass != 0;
+		GridCell& c = m.cells()[i];
+		if (countBeams)
+		{
+			c.n_occupy += b.hit - a.hit;
+			c.n_visit += (b.hit + b.pass) - (a.hit + a.pass);
+		}
+		else
+		{
+			c.n_occupy += float(hitB) - float(hitA);
+			c.n_visit += float(markedB) - float(markedA);
+		}
+		any |= markedB != markedA || b.hit != a.hit || b.pass != a.pass;
+		hits += hitB && !hitA;
+		visitsGone += hitB && !hitA && markedA;  // a cell of part b only is now a hit
+		visits += markedB && !markedA && !hitB;
+	}
+	st.cellsHit += hits;
+	st.cellsVisited = st.cellsVisited + visits - std::min(st.cellsVisited + visits, visitsGone);
+	return any;
+}
+
 // Eq. 8 for one scan q: the triangles of V_q over the map vectors near them.
 ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::vector<Segment>& scanVectors,
 								std::vector<GridVector>& map, const VectorIndex& index, const SkipFn& limit)
@@ -95,9 +143,7 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::v
 	if (span_.size() < map.size()) span_.resize(map.size());
 	for (size_t seg = 0; seg < scanVectors.size(); ++seg)
 	{
-		const Segment& v = scanVectors[seg];
-		const double density = beams_ ? WipeTriangle::beamDensity(sensor, v.start, v.end, v.points) : 0.0;
-		const WipeTriangle tri(sensor, v.start, v.end, hitBand_, density);
+		const WipeTriangle tri = triangleOf(sensor, scanVectors[seg]);
 		if (tri.degenerate()) continue;
 		++st.triangles;
 		candidates_.clear();

@@ -52,9 +52,11 @@ class GlobalMap
 	/** Insert V_t observed from robot pose x_t (sequential mode, see above).
 	 * Vectors of the map whose scanIndex equals scan.scanIndex (>= 0) are not
 	 * wiped by it, and the triangle of a new vector only adds part b (the
-	 * beams passing) to the map vectors it corresponds to: its endpoints reach
-	 * them through its own Algorithm 1 counts when merged, and counting them
-	 * again as part c would weigh that scan's hits double.
+	 * beams passing) to the map vectors it is merged into: its endpoints reach
+	 * them through its own Algorithm 1 counts, and counting them again as part
+	 * c would weigh that scan's hits double. A map vector the new vector
+	 * corresponds to but that does not absorb it (the guard refused the merge)
+	 * gets the part c too, after the insertion, as with merging off.
 	 * New vectors get fresh ids; merged vectors get a fresh id and scanIndex -1. */
 	void insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
 	/** insertScan(robotPose, scan), and when map.wipe_vectorless_beams is set
@@ -63,7 +65,8 @@ class GlobalMap
 	 * new vectors go in. */
 	void insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, const ScanBeams& beams);
 
-	/** Eq. 8 alone: the scan's triangles applied to the map, nothing inserted. */
+	/** Eq. 8 alone: the scan's triangles applied to the map (parts b and c; not to
+	 * the vectors of the scan itself), nothing inserted. */
 	ScanWipe::Stats wipe(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
 
 	/** Insert one vector already in global coordinates (merged with its
@@ -119,6 +122,22 @@ class GlobalMap
 	static MergeResult mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg);
 
    private:
+	/** What wipeBeforeMerging() held back: per new vector of the scan, its
+	 * segment and the ids of the map vectors that got part b of its triangle only. */
+	struct HeldBack
+	{
+		mrpt::math::TPoint2D sensor;
+		int64_t scanIndex = -1;
+		std::vector<ScanWipe::Segment> segs;
+		std::vector<std::vector<uint64_t>> targets;  //!< per segment, ascending
+		std::vector<std::pair<uint64_t, Box2D>> boxes;  //!< every target once, with its box
+	};
+	/** Eq. 8 with part b only from a new vector to the map vectors it corresponds
+	 * to (merge_on_insert), recorded in held_. */
+	ScanWipe::Stats wipeBeforeMerging(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
+	/** After the insertion: the held-back parts c for the targets still in the map
+	 * under their id (a merge gives a fresh id: such a vector absorbed nothing). */
+	void completeRefused();
 	void insertVectors(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
 	void addSlot(GridVector m);
 	void removeSlots(std::vector<size_t> slots);
@@ -131,6 +150,7 @@ class GlobalMap
 	ScanWipe wiper_;
 	VectorMerger merger_;
 	InsertStats stats_;
+	HeldBack held_;
 };
 
 }  // namespace gridvector

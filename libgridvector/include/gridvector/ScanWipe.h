@@ -70,6 +70,16 @@ class ScanWipe
 	{
 		return {globalVector.start(), globalVector.end(), globalVector.totalPoints()};
 	}
+	/** The wipe triangle apply() builds for a new vector seen from `sensor`. */
+	WipeTriangle triangleOf(const mrpt::math::TPoint2D& sensor, const Segment& v) const;
+
+	/** Eq. 8 of one scan on m, completed: the scan's triangles `tris` were applied
+	 * to m with the parts `applied[k]` (apply()'s limit) and m gets what the parts
+	 * `wanted[k]` (each at least applied[k]) add on top. Exact in both weightings
+	 * (per cell: a cell still counts once per scan, a hit if any triangle says
+	 * hit). True if a cell changed. */
+	static bool complete(const std::vector<WipeTriangle>& tris, const std::vector<WipePart>& applied,
+						 const std::vector<WipePart>& wanted, GridVector& m, bool countBeams, Stats& st);
 
 	/** What one scan's triangles leave on a map cell before Eq. 8 adds it
 	 * (per cell: 1 or 0; per beam: the beams counted). */

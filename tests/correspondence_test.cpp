@@ -110,3 +110,27 @@ TEST(Correspondence, CheapRejectionsDecideAsTheFullTest)
 	EXPECT_GT(matches, 1000);
 	EXPECT_LT(matches, 19000);
 }
+
+TEST(Correspondence, ThetaOfADirectedVectorRepeatsCriterion1)
+{
+	// Criterion 2's theta is the normal of the directed vector (psi - pi/2):
+	// its difference is the difference of the directions, so max_theta_diff_deg
+	// decides only where it is below max_direction_diff_deg (doc/paper-fidelity.md).
+	std::mt19937 rng(5);
+	std::uniform_real_distribution<double> X(-50, 50), A(-M_PI, M_PI), dA(-0.4, 0.4);
+	for (int i = 0; i < 1000; ++i)
+	{
+		const double a = A(rng), b = a + dA(rng), x = X(rng), y = X(rng);
+		const auto t = testCorrespondence(vec(x, y, x + 2 * std::cos(a), y + 2 * std::sin(a)),
+										  vec(x, y, x + 3 * std::cos(b), y + 3 * std::sin(b)), MapOptions{});
+		ASSERT_NEAR(t.dTheta, t.dPsi, 1e-12) << i;
+	}
+	const TPoint2D c(1, 0);
+	const GridVector a = vec(0, 0, 2, 0), b(rot({0, 0}, 7 * M_PI / 180, c), rot({2, 0}, 7 * M_PI / 180, c), GridOptions{});
+	MapOptions o;  // both 10 deg: 7 deg apart match
+	EXPECT_TRUE(corresponds(a, b, o));
+	o.maxThetaDiffDeg = 5;  // below criterion 1's bound: now it decides
+	EXPECT_FALSE(corresponds(a, b, o));
+	o.maxThetaDiffDeg = 30, o.maxDirectionDiffDeg = 5;  // above it: criterion 1 decides
+	EXPECT_FALSE(corresponds(a, b, o));
+}

@@ -19,6 +19,12 @@ namespace gridvector
  * of the parts' endpoints and of the occupied cells (line 19), and the new
  * grid is formed along the new vector (line 20).
  *
+ * Every cell's counts are added, with or without points: the pseudo-code's
+ * indentation puts lines 9-10 (n_occupy, n_visit) inside "if n_acc > 0", but
+ * the text adds up "the parameters from its corresponding cells" and says the
+ * merged grids "hold the same occupancy probability", which the free cells in
+ * front of a wall (no endpoint, many passes) would lose otherwise.
+ *
  * Posterior kept (Eq. 6): every cell's counts go into the new grid, so the
  * totals of n_occupy, n_visit and n_acc are conserved exactly. Across the
  * vector a cell's counts go to the row whose band contains its centre (no

@@ -290,6 +290,10 @@ TEST(CGridVectorMap, TextRepresentationAndVisualisation)
 	EXPECT_NE(svgText.find("<svg"), std::string::npos);
 	EXPECT_NE(svgText.find("<line"), std::string::npos);
 	EXPECT_NE(m.asString().find("grid vectors"), std::string::npos);
+	// Insertion alone runs no E-step: the summary says the vectors are unclassified, not "0 static, 0 dynamic".
+	EXPECT_NE(m.asString().find("(0 static, 0 dynamic, " + std::to_string(m.vectors().size()) + " not classified"),
+			  std::string::npos)
+		<< m.asString();
 	mrpt::maps::COccupancyGridMap2D png;
 	EXPECT_TRUE(png.loadFromBitmapFile(prefix + "_occupancy.png", float(m.config().occupancy.resolution)));
 	EXPECT_GT(png.getSizeX(), 10u);

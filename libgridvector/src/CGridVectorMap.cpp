@@ -91,8 +91,11 @@ std::string CGridVectorMap::asString() const
 		nDynamic += v.state == gridvector::VectorState::Dynamic;
 	}
 	std::ostringstream os;
-	os << "CGridVectorMap: " << map_.size() << " grid vectors (" << nStatic << " static, "
-	   << nDynamic << " dynamic), total length " << len << " m, " << insertedScans_
+	const size_t nUnclassified = map_.size() - nStatic - nDynamic;
+	os << "CGridVectorMap: " << map_.size() << " grid vectors (" << nStatic << " static, " << nDynamic
+	   << " dynamic";
+	if (nUnclassified > 0) os << ", " << nUnclassified << " not classified: no E-step has run";
+	os << "), total length " << len << " m, " << insertedScans_
 	   << " scans inserted, resolution " << map_.config().grid.resolution << " m";
 	return os.str();
 }

@@ -120,7 +120,7 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 	}
 	EmResult res = runKeyframes(ks, ko, [&](const EmIteration& it, const std::vector<TPose2D>& kp) {
 		if (onIteration) onIteration(it, expand(kp, key, odometry));
-	}, progress);
+	}, progress, key);
 	res.poses = expand(res.poses, key, odometry);
 	for (auto& v : res.perScan)
 		if (v.scanIndex >= 0) v.scanIndex = int64_t(key[size_t(v.scanIndex)]);
@@ -237,7 +237,8 @@ void doorStates(EmResult& res, const EStep& estep, const DoorOptions& opts)
 // Sec. 4: M-step (Eq. 16-25) and E-step (Eq. 14-15) alternated until an M-step changes no
 // constraint after an E-step that changed no vector's children (Fig. 11), then the final map.
 EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::vector<TPose2D>& odometry,
-							  const IterationCallback& onIteration, const ProgressCallback& progress) const
+							  const IterationCallback& onIteration, const ProgressCallback& progress,
+							  const std::vector<size_t>& key) const
 {
 	EmResult res;
 	MStep mstep(cfg_);
@@ -260,6 +261,7 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		auto t0 = std::chrono::steady_clock::now();
 		it.mstep = mstep.run(segs, res.poses, changedIds.empty() ? nullptr : &changedIds);  // M-step (Eq. 16-25)
 		changedIds.clear();  // consumed: an M-step after a skipped E-step sees no change
+		if (observer_) observer_(k, mstep, segs, key);
 		it.mSeconds = since(t0);
 		it.changedShare = it.mstep.changedShare;
 		// No constraint changed after an E-step that changed no vector: the trajectory did not

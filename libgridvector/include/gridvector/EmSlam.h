@@ -67,6 +67,13 @@ class EmSlam
 	EmResult run(const std::vector<LocalScan>& scans, const std::vector<mrpt::math::TPose2D>& odometry,
 				 const IterationCallback& onIteration = {}, const ProgressCallback& progress = {}) const;
 
+	/** Diagnosis: called after each M-step with the iteration (1-based), the M-step (its
+	 * constraints index keyframes), the static vectors it registered (per keyframe, in its
+	 * frame) and the scan index of every keyframe. */
+	using MStepObserver = std::function<void(int iteration, const MStep&, const std::vector<std::vector<MatchSegment>>& statics,
+											 const std::vector<size_t>& keyframes)>;
+	void setMStepObserver(MStepObserver f) { observer_ = std::move(f); }
+
 	/** Static children of the E-step as registration segments, in their scan's frame. */
 	static std::vector<std::vector<MatchSegment>> staticSegments(
 		const std::vector<GridVector>& children, const std::vector<mrpt::math::TPose2D>& poses);
@@ -82,9 +89,11 @@ class EmSlam
 
    private:
 	EmResult runKeyframes(const std::vector<LocalScan>& scans, const std::vector<mrpt::math::TPose2D>& odometry,
-						  const IterationCallback& onIteration, const ProgressCallback& progress) const;
+						  const IterationCallback& onIteration, const ProgressCallback& progress,
+						  const std::vector<size_t>& key) const;
 
 	GridVectorConfig cfg_;
+	MStepObserver observer_;
 };
 
 }  // namespace gridvector

@@ -90,6 +90,8 @@ class MStep
 	const std::map<EdgeKey, Constraint>& constraints() const { return constraints_; }
 	const PoseGraph& graph() const { return graph_; }
 	bool started() const { return started_; }
+	/** The constraint's information in the frame of the pose graph's error (mstep.information_in_edge_frame). */
+	Eigen::Matrix3d graphInformation(const Constraint& c) const;
 
    private:
 	using Scans = std::vector<std::vector<MatchSegment>>;
@@ -131,8 +133,6 @@ class MStep
 	bool fixesPlace(const Constraint& c) const;
 	void verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh, MStepReport& rep);
 	void optimise(Poses& poses, MStepReport& rep);
-	/** The constraint's information in the frame of the pose graph's error (mstep.information_in_edge_frame). */
-	Eigen::Matrix3d graphInformation(const Constraint& c) const;
 
 	/** Eq. 24-25: did this edge's vector correspondences change? */
 	bool correspondencesChanged(const Constraint& c, const Scans& scans, const Poses& poses) const;

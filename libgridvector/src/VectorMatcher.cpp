@@ -210,6 +210,16 @@ double VectorMatcher::correspondences(const std::vector<MatchSegment>& a,
 	return len;
 }
 
+// The share of a Gauss-Newton step (dx, dy, dphi) that stays within the gates its correspondences were gathered in.
+double VectorMatcher::stepScale(const Vector3d& delta, const MatchGates& gates)
+{
+	const double t = delta.head<2>().norm(), r = std::abs(delta.z());
+	double k = 1.0;
+	if (t > gates.rho) k = gates.rho / t;
+	if (r > gates.psi) k = std::min(k, gates.psi / r);
+	return k;
+}
+
 // Sec. 4.2: the registration of scan b against scan a by vector matching (Sohn & Kim 2008).
 MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 								 const std::vector<MatchSegment>& b, const TPose2D& guess) const
@@ -244,8 +254,9 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 		normalEquations(b, T, std::max(opts_.sigmaFloor, opts_.robustScaleGateShare * gates.rho), H, g, sumW,
 						sumWr2);
 		const double damp = 1e-6 * std::max(1e-12, H.trace());
-		const Vector3d delta = -(H + damp * Matrix3d::Identity()).ldlt().solve(g);
+		Vector3d delta = -(H + damp * Matrix3d::Identity()).ldlt().solve(g);
 		if (!delta.allFinite()) break;
+		if (opts_.stepWithinGates) delta *= stepScale(delta, gates);  // where its correspondences were gathered
 		T.x += delta.x();
 		T.y += delta.y();
 		T.phi = wrap(T.phi + delta.z());

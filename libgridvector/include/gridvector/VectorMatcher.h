@@ -100,6 +100,10 @@ class VectorMatcher
 
 	const MatcherOptions& options() const { return opts_; }
 	MatchGates finalGates(double factor = 1.0) const;
+	/** matcher.step_within_gates: the factor (<= 1) that keeps a Gauss-Newton step (dx, dy, dphi)
+	 * within `gates` (translation <= rho, rotation <= psi), its direction unchanged; match() bounds
+	 * each step by the gates of its iteration. */
+	static double stepScale(const Eigen::Vector3d& delta, const MatchGates& gates);
 
 	/** One candidate correspondence with its overlap-clipped support on B. */
 	struct Pair

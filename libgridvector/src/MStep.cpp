@@ -342,7 +342,8 @@ std::vector<uint32_t> MStep::overlapPartners(uint32_t i, uint32_t nearest, const
 
 // Sec. 4.3, the topology change: scans whose ranges cover each other get an edge.
 // Overlap edges: for each pose, one edge into every earlier pass through its place.
-std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep)
+std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep,
+										std::vector<MovedPair>* moved)
 {
 	std::vector<EdgeKey> fresh;
 	const double d = cfg_.mstep.overlapDistance;
@@ -368,6 +369,11 @@ std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, 
 				if (registerPair(from, i, EdgeKind::Overlap, scans, rel, c, rep) &&
 					(from == p.nearest || c.degeneracy >= cfg_.matcher.degenerateRatio || c.dof < 3))
 				{
+					if (moved && beyondInitialGates(rel, c.z))
+					{
+						moved->push_back({key, from == p.nearest});  // registered again once the rest is optimised
+						break;
+					}
 					constraints_[key] = std::move(c);
 					failed_.erase(key);
 					fresh.push_back(key);
@@ -602,7 +608,7 @@ Matrix3d MStep::graphInformation(const Constraint& c) const
 	return cfg_.mstep.informationInEdgeFrame ? PoseGraph::errorFrameInformation(c.information, c.z) : c.information;
 }
 
-void MStep::optimise(Poses& poses, MStepReport& rep)
+std::vector<EdgeKey> MStep::optimise(Poses& poses, MStepReport& rep, bool count)
 {
 	graph_.setNodes(poses);
 	graph_.clearEdges();
@@ -634,13 +640,60 @@ void MStep::optimise(Poses& poses, MStepReport& rep)
 		byEdge.push_back(&c);
 	}
 	rep.optimisation = graph_.optimize();
+	std::vector<EdgeKey> rejected;
 	for (size_t k = 0; k < byEdge.size(); ++k)
 		if (byEdge[k] && !graph_.edges()[k].active)
 		{
 			byEdge[k]->rejected = true;
-			if (steps_ > cfg_.mstep.reconsiderFreeSteps) countRejection({byEdge[k]->from, byEdge[k]->to}, *byEdge[k]);
+			rejected.push_back({byEdge[k]->from, byEdge[k]->to});
 		}
 	poses = graph_.nodes();
+	if (count) countRejections(rejected);
+	return rejected;
+}
+
+void MStep::countRejections(const std::vector<EdgeKey>& keys)
+{
+	if (steps_ <= cfg_.mstep.reconsiderFreeSteps) return;
+	for (const EdgeKey& k : keys) countRejection(k, constraints_.at(k));
+}
+
+bool MStep::beyondInitialGates(const TPose2D& guess, const TPose2D& z) const
+{
+	return se2::distance(guess, z) > cfg_.matcher.gateRhoInitial ||
+		   std::abs(mrpt::math::wrapToPi(guess.phi - z.phi)) > cfg_.matcher.gatePsiInitialDeg * M_PI / 180;
+}
+
+// mstep.overlap_reregister_moved: a registration that had to move beyond the initial gates started
+// from an estimate that did not show the overlap; from the estimate the other edges give, the
+// matcher starts inside its gates (or, where nothing moved the pair, repeats the first registration).
+bool MStep::reregisterMoved(const Scans& scans, Poses& poses, const std::vector<MovedPair>& moved, MStepReport& rep)
+{
+	std::vector<EdgeKey> again;
+	for (const MovedPair& m : moved)
+	{
+		if (constraints_.count(m.key)) continue;  // the loop search registered the pair
+		const TPose2D rel = se2::relative(poses[m.key.first], poses[m.key.second]);
+		Constraint c;
+		if (registerPair(m.key.first, m.key.second, EdgeKind::Overlap, scans, rel, c, rep) &&
+			(m.nearest || c.degeneracy >= cfg_.matcher.degenerateRatio || c.dof < 3))
+		{
+			constraints_[m.key] = std::move(c);
+			failed_.erase(m.key);
+			again.push_back(m.key);
+			++rep.added;
+		}
+		else
+			failed_[m.key] = {rel, sigs_[m.key.first], sigs_[m.key.second]};
+	}
+	verifyOverlaps(poses, again, rep);
+	if (std::none_of(again.begin(), again.end(), [&](const EdgeKey& k) { return constraints_.count(k) > 0; })) return false;
+	const OptimizeStats first = rep.optimisation;
+	optimise(poses, rep);
+	rep.optimisation.iterations += first.iterations;
+	rep.optimisation.seconds += first.seconds;
+	rep.optimisation.initialError = first.initialError;
+	return true;
 }
 
 MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::vector<uint64_t>>* changedChildren)
@@ -671,12 +724,19 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 		updateExisting(scans, poses, rep);
 		addSequential(scans, poses, rep);
 	}
-	auto fresh = addOverlaps(scans, poses, rep);
+	std::vector<MovedPair> moved;
+	auto fresh = addOverlaps(scans, poses, rep, cfg_.mstep.overlapReregisterMoved ? &moved : nullptr);
 	const auto found = searchLoops(scans, poses, fresh, rep);
 	fresh.insert(fresh.end(), found.begin(), found.end());
 	verifyOverlaps(poses, fresh, rep);
 	rep.registrationSeconds = secondsSince(t0);
-	if (rep.added + rep.removed + rep.recomputed > 0) optimise(poses, rep);  // else: still optimal
+	if (!moved.empty())
+	{
+		const auto rejected = optimise(poses, rep, false);  // without the moved pairs
+		if (!reregisterMoved(scans, poses, moved, rep)) countRejections(rejected);  // it was the last
+	}
+	else if (rep.added + rep.removed + rep.recomputed > 0)
+		optimise(poses, rep);  // else: still optimal
 	rep.constraints = constraints_.size();
 	for (const auto& [key, c] : constraints_)
 	{

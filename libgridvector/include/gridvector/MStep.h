@@ -100,8 +100,21 @@ class MStep
 	void chainSequential(const Scans& scans, Poses& poses, MStepReport& rep);
 	void updateExisting(const Scans& scans, const Poses& poses, MStepReport& rep);
 	void addSequential(const Scans& scans, const Poses& poses, MStepReport& rep);
-	/** Returns the keys of the edges it added. */
-	std::vector<EdgeKey> addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep);
+	/** A pair whose overlap registration moved beyond the matcher's initial gates (mstep.overlap_reregister_moved). */
+	struct MovedPair
+	{
+		EdgeKey key;
+		bool nearest = false;  //!< the pass's pose nearest in view (else a non-degenerate registration is needed)
+	};
+	/** Returns the keys of the edges it added; with `moved`, pairs whose registration moved beyond the
+	 * matcher's initial gates go there instead (mstep.overlap_reregister_moved). */
+	std::vector<EdgeKey> addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep,
+									 std::vector<MovedPair>* moved = nullptr);
+	/** Did a registration move the relative pose beyond the matcher's initial gates from `guess`? */
+	bool beyondInitialGates(const mrpt::math::TPose2D& guess, const mrpt::math::TPose2D& z) const;
+	/** mstep.overlap_reregister_moved: the moved pairs registered again from the optimised `poses`,
+	 * pairwise-checked and, if any is added, optimised again (returns whether it optimised). */
+	bool reregisterMoved(const Scans& scans, Poses& poses, const std::vector<MovedPair>& moved, MStepReport& rep);
 	/** The poses of an earlier pass an overlap edge of pose i is tried against, in order until one
 	 * registers: `nearest` (in view) when it shares mstep.overlap_min_length of corresponding static
 	 * vectors with i, else (mstep.overlap_most_overlapping) the members sharing that much, the most
@@ -132,7 +145,10 @@ class MStep
 	/** Does this edge fix the relative place (see mstep.loop_search_weak_links)? */
 	bool fixesPlace(const Constraint& c) const;
 	void verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh, MStepReport& rep);
-	void optimise(Poses& poses, MStepReport& rep);
+	/** Returns the edges the chi2 test rejected; `count`: they count towards mstep.reconsider_limit now
+	 * (else the caller counts them with countRejections if no optimisation follows in this M-step). */
+	std::vector<EdgeKey> optimise(Poses& poses, MStepReport& rep, bool count = true);
+	void countRejections(const std::vector<EdgeKey>& keys);
 
 	/** Eq. 24-25: did this edge's vector correspondences change? */
 	bool correspondencesChanged(const Constraint& c, const Scans& scans, const Poses& poses) const;

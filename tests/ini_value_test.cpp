@@ -103,3 +103,16 @@ TEST(IniValue, AbsentKeyLeavesTheFieldAndUnknownKeysAreNamed)
 		EXPECT_EQ(std::string(e.what()), "my.ini: unknown key 'sgima' in section [sec]");
 	}
 }
+
+TEST(IniValue, SixtyFourBitIntegersAreReadWholeAndInRange)
+{
+	int64_t v = 7;
+	EXPECT_TRUE(parseIniValue("9000000000", v));
+	EXPECT_EQ(v, 9000000000LL);
+	for (const char* bad : {"99999999999999999999", "1.5", "", "12x", "nan"})
+	{
+		v = 7;
+		EXPECT_FALSE(parseIniValue(bad, v)) << bad;
+		EXPECT_EQ(v, 7);  // left alone
+	}
+}

@@ -7,6 +7,7 @@
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/IniLayout.h>
+#include <gridvector/io/IniValue.h>
 #include <gridvector/io/Progress.h>
 #include <gridvector/sim/BuiltinWorlds.h>
 #include <gridvector/sim/SimOptions.h>
@@ -15,14 +16,14 @@
 
 #include <mrpt/config/CConfigFile.h>
 
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <iostream>
-#include <set>
 #include <iomanip>
+#include <iostream>
+#include <map>
+#include <set>
 #include <sstream>
 
 using namespace gridvector;
@@ -36,27 +37,28 @@ std::string dashed(std::string k)
 	return k;
 }
 
-/** Sets v from text; returns false if the text does not fit v's type. */
+/** Sets v from text as the .ini reader does (io/IniValue.h: whole, finite, in range);
+ * booleans also take on/off (doc/simulator.md). Returns false if the text does not fit v. */
 bool assign(std::string& v, const std::string& s) { return v = s, true; }
 bool assign(bool& v, const std::string& s)
 {
-	if (s == "1" || s == "on" || s == "true" || s == "yes") return v = true, true;
-	if (s == "0" || s == "off" || s == "false" || s == "no") return v = false, true;
-	return false;
+	const std::string l = io::lowerCase(s);
+	if (l == "on" || l == "off") return v = l == "on", true;
+	return io::parseIniValue(s, v);
 }
 template <class T>
 bool assign(T& v, const std::string& s)
 {
-	char* end = nullptr;
-	errno = 0;
-	if constexpr (std::is_integral_v<T>)
-	{
-		const long long x = std::strtoll(s.c_str(), &end, 10);
-		v = T(x);
-	}
-	else
-		v = T(std::strtod(s.c_str(), &end));
-	return !s.empty() && *end == 0 && errno != ERANGE;
+	return io::parseIniValue(s, v);
+}
+
+/** What assign accepts for v's type, for .ini messages. */
+template <class T>
+const char* kindOf(const T&)
+{
+	if constexpr (std::is_same_v<T, bool>) return "on/off, true/false, yes/no or 1/0";
+	else if constexpr (std::is_integral_v<T>) return "an integer";
+	else return "a finite number";
 }
 
 template <class T>
@@ -68,7 +70,24 @@ const char* typeName(const T&)
 	else return "NAME";
 }
 
-/** [gv_sim] keys from an .ini file; unknown keys and bad values are errors. */
+/** SimOptions::validate on the values an .ini file set (the flags' range checks), naming the file. */
+void requireValid(const sim::SimOptions& o, const std::map<std::string, std::string>& given, const std::string& path)
+{
+	try
+	{
+		o.validate();
+	}
+	catch (const std::invalid_argument& e)
+	{
+		const std::string m = e.what();  // "key: what is wrong", or the unknown world's message
+		const auto colon = m.find(": ");
+		const auto it = colon == std::string::npos ? given.end() : given.find(m.substr(0, colon));
+		if (it == given.end()) throw std::runtime_error(path + ": [gv_sim] " + m);
+		throw std::runtime_error(path + ": [gv_sim] " + it->first + " = '" + it->second + "' " + m.substr(colon + 2));
+	}
+}
+
+/** [gv_sim] keys from an .ini file; unknown keys, bad values and out-of-range values are errors. */
 void loadIni(sim::SimOptions& o, const std::string& path)
 {
 	if (!std::filesystem::is_regular_file(path)) throw std::runtime_error(path + ": cannot read (no such file)");
@@ -77,17 +96,17 @@ void loadIni(sim::SimOptions& o, const std::string& path)
 	mrpt::config::CConfigFile ini(path);
 	if (!ini.sectionExists("gv_sim"))
 		throw std::runtime_error(path + ": no [gv_sim] section (gv-sim reads its options from [gv_sim] only)");
-	std::vector<std::string> keys;
-	ini.getAllKeys("gv_sim", keys);
 	std::set<std::string> known;
 	o.visit([&](const char* k, auto&, const char*) { known.insert(k); });
-	for (const auto& k : keys)
-		if (!known.count(k)) throw std::runtime_error(path + ": [gv_sim] unknown key '" + k + "'");
+	io::requireKnownKeys(ini, "gv_sim", known, path);
+	std::map<std::string, std::string> given;  // key -> its text, for range messages
 	o.visit([&](const char* k, auto& v, const char*) {
 		if (!ini.keyExists("gv_sim", k)) return;
-		const std::string s = ini.read_string("gv_sim", k, "");
-		if (!assign(v, s)) throw std::runtime_error(path + ": [gv_sim] " + k + ": '" + s + "' is not a valid " + typeName(v));
+		const std::string s = io::iniValueText(ini, "gv_sim", k);
+		if (!assign(v, s)) throw std::runtime_error(path + ": [gv_sim] " + k + " = '" + s + "' is not " + kindOf(v));
+		given[k] = s;
 	});
+	requireValid(o, given, path);
 }
 
 std::string pct(double part, double whole)

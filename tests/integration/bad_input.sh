@@ -108,6 +108,20 @@ expect 1 "badval.ini: [gridvector_grid] half_width = '1.5' is not an integer" - 
 printf 'seed = 3\n[gv_sim]\nworld = office\n' > simnosec.ini  # the seed was ignored
 expect 1 "simnosec.ini:1: 'seed = 3' is outside any [section]" s8/sim.log -- "$B/gv-sim" --config simnosec.ini --out s8 --quiet --scans 20
 expect 1 "typo.ini: no [gv_sim] section" s8/sim.log -- "$B/gv-sim" --config typo.ini --out s8 --quiet
+# gv-sim's values are read as the other .ini values (io/IniValue.h), ranges as its flags'
+printf '[gv_sim]\nlaps = 4294967297\n' > simlaps.ini  # was read as 1 lap
+expect 1 "simlaps.ini: [gv_sim] laps = '4294967297' is not an integer" s8/sim.log -- "$B/gv-sim" --config simlaps.ini --out s8 --quiet
+expect 2 "--laps needs a N value, got '4294967297'" s8/sim.log -- "$B/gv-sim" --laps 4294967297 --out s8 --quiet
+printf '[gv_sim]\nspeed = nan\n' > simnan.ini
+expect 1 "simnan.ini: [gv_sim] speed = 'nan' is not a finite number" s8/sim.log -- "$B/gv-sim" --config simnan.ini --out s8 --quiet
+printf '[gv_sim]\ndoors = of\n' > simbool.ini
+expect 1 "simbool.ini: [gv_sim] doors = 'of' is not on/off, true/false, yes/no or 1/0" s8/sim.log -- "$B/gv-sim" --config simbool.ini --out s8 --quiet
+printf '[gv_sim]\nlaps = 5000 ; a long run\n' > simrange.ini
+expect 1 "simrange.ini: [gv_sim] laps = '5000' must be in 0..1000" s8/sim.log -- "$B/gv-sim" --config simrange.ini --out s8 --quiet --laps 2
+printf '[gv_sim]\nworld = mars\n' > simworld.ini
+expect 1 "simworld.ini: [gv_sim] unknown world 'mars'" s8/sim.log -- "$B/gv-sim" --config simworld.ini --out s8 --quiet
+printf '[gv_sim]\nscans = 20 ; short\ndoors = OFF\n' > simok.ini  # a comment after a value was refused
+"$B/gv-sim" --config simok.ini --out s9 --quiet && [ "$(grep -c '^FLASER' s9/sim.log)" -eq 20 ] || fail "gv-sim: simok.ini"
 # a config from a pipe (--config <(...)): read, not sized by seeking; a directory is named as such
 expect 1 "unknown key 'resolutoin'" - -- "$B/gv-config" --check <(cat typo.ini)
 "$B/gv-config" --check <(printf '[gridvector_grid]\nresolution = 0.1\n') > /dev/null || fail "gv-config: a config from a pipe is refused"

@@ -40,7 +40,7 @@ set +e
 [ $rc -eq 2 ] || fail "bad number: $rc"
 printf '[gv_sim]\nwrold = office\n' > "$T/bad.ini"
 "$BIN/gv-sim" --out "$T/e" --config "$T/bad.ini" 2> "$T/err.txt"; rc=$?
-[ $rc -eq 1 ] && [ "$(cat "$T/err.txt")" = "$T/bad.ini: [gv_sim] unknown key 'wrold'" ] || fail "ini key: $rc $(cat "$T/err.txt")"
+[ $rc -eq 1 ] && [ "$(cat "$T/err.txt")" = "$T/bad.ini: unknown key 'wrold' in section [gv_sim]" ] || fail "ini key: $rc $(cat "$T/err.txt")"
 "$BIN/gv-sim" --out /proc/gv-sim-cannot-write 2> "$T/err.txt"; rc=$?
 set -e
 [ $rc -eq 1 ] && grep -q "^/proc/gv-sim-cannot-write: cannot write" "$T/err.txt" || fail "unwritable: $rc $(cat "$T/err.txt")"

@@ -44,6 +44,15 @@ bool parseIniValue(const std::string& text, int& value)
 	return value = int(x), true;
 }
 
+bool parseIniValue(const std::string& text, int64_t& value)
+{
+	char* end = nullptr;
+	errno = 0;
+	const long long x = std::strtoll(text.c_str(), &end, 10);
+	if (text.empty() || *end || errno == ERANGE) return false;
+	return value = int64_t(x), true;
+}
+
 bool parseIniValue(const std::string& text, bool& value)
 {
 	const std::string v = lowerCase(text);
@@ -60,16 +69,27 @@ template <>
 const char* iniKindOf<bool>() { return "true or false"; }
 
 template <class T>
-void readIniValue(const mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
-				  T& field, const std::string& sourceName, const std::string& what, typename IniCheck<T>::Fn valid)
+void readIniText(const std::string& text, const std::string& section, const std::string& key, T& field,
+				 const std::string& sourceName, const std::string& what, typename IniCheck<T>::Fn valid)
 {
-	if (!c.keyExists(section, key)) return;
-	const std::string text = iniValueText(c, section, key);
 	T value{};
 	if (!parseIniValue(text, value) || (valid && !valid(value)))
 		throw std::runtime_error(sourceName + ": [" + section + "] " + key + " = '" + text + "' is not " +
 								 (what.empty() ? std::string(iniKindOf<T>()) : what));
 	field = value;
+}
+template void readIniText(const std::string&, const std::string&, const std::string&, double&, const std::string&,
+						  const std::string&, bool (*)(double));
+template void readIniText(const std::string&, const std::string&, const std::string&, int&, const std::string&,
+						  const std::string&, bool (*)(int));
+template void readIniText(const std::string&, const std::string&, const std::string&, bool&, const std::string&,
+						  const std::string&, bool (*)(bool));
+
+template <class T>
+void readIniValue(const mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
+				  T& field, const std::string& sourceName, const std::string& what, typename IniCheck<T>::Fn valid)
+{
+	if (c.keyExists(section, key)) readIniText(iniValueText(c, section, key), section, key, field, sourceName, what, valid);
 }
 template void readIniValue(const mrpt::config::CConfigFileBase&, const std::string&, const std::string&, double&,
 						   const std::string&, const std::string&, bool (*)(double));

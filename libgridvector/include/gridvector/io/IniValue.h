@@ -4,6 +4,7 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <cstdint>
 #include <set>
 #include <string>
 
@@ -21,6 +22,7 @@ std::string iniValueText(const mrpt::config::CConfigFileBase& c, const std::stri
 bool parseIniValue(const std::string& text, double& value);
 bool parseIniValue(const std::string& text, int& value);
 bool parseIniValue(const std::string& text, bool& value);
+bool parseIniValue(const std::string& text, int64_t& value);  //!< a decimal integer in int64_t's range
 
 /** What parseIniValue accepts for T, for messages: "a finite number", "an integer", "true or false". */
 template <class T>
@@ -38,6 +40,13 @@ struct IniCheck
 {
 	using Fn = bool (*)(T);
 };
+
+/** Parses `text`, the value of [section] key in `sourceName`, into `field` as readIniValue
+ * does (same error, `field` left alone then). For readers that take the text another way. */
+template <class T>
+void readIniText(const std::string& text, const std::string& section, const std::string& key, T& field,
+				 const std::string& sourceName, const std::string& what = {},
+				 typename IniCheck<T>::Fn valid = nullptr);
 
 /** If `key` is in `section`, reads it into `field` strictly. Throws std::runtime_error
  * "<sourceName>: [section] key = 'text' is not <what>" when the text is not a T or `valid`

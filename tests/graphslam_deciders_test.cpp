@@ -5,12 +5,14 @@
 #include <gridvector/graphslam/RunRecorder.h>
 
 #include <gtest/gtest.h>
+#include <mrpt/config/CConfigFile.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/graphslam/levmarq.h>
 #include <mrpt/obs/CObservationOdometry.h>
 #include <mrpt/poses/CPose2D.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 
 #include "test_scans.h"
@@ -143,6 +145,81 @@ TEST(graphslam_options, out_of_range_values_are_rejected)
 	EdgeDeciderOptions e;
 	EXPECT_THROW(e.load(ini("[GridVectorERD]\nmin_matched_share = 1.5\n"), "a.ini"), std::runtime_error);
 	EXPECT_THROW(e.load(ini("[GridVectorERD]\npass_gap = 0\n"), "a.ini"), std::runtime_error);
+}
+
+namespace
+{
+/** The message load() throws for `text`, "" if none. */
+template <class Opts>
+std::string loadError(const std::string& text)
+{
+	try
+	{
+		Opts().load(ini(text), "a.ini");
+	}
+	catch (const std::runtime_error& e)
+	{
+		return e.what();
+	}
+	return "";
+}
+}  // namespace
+
+TEST(graphslam_options, values_are_read_whole_not_by_their_first_digits)
+{
+	// MRPT's read_double / read_int / read_bool made these 0, 1 and false without a word
+	EXPECT_EQ(loadError<EdgeDeciderOptions>("[GridVectorERD]\nmin_matched_share = 0.o5\n"),
+			  "a.ini: [GridVectorERD] min_matched_share = '0.o5' is not a finite number");
+	EXPECT_EQ(loadError<EdgeDeciderOptions>("[GridVectorERD]\npass_gap = 1.5\n"),
+			  "a.ini: [GridVectorERD] pass_gap = '1.5' is not an integer");
+	EXPECT_EQ(loadError<NodeDeciderOptions>("[GridVectorNRD]\nuse_odometry = ture\n"),
+			  "a.ini: [GridVectorNRD] use_odometry = 'ture' is not true or false");
+	EXPECT_EQ(loadError<NodeDeciderOptions>("[NodeRegistrationDeciderParameters]\nregistration_max_angle = nan\n"),
+			  "a.ini: [NodeRegistrationDeciderParameters] registration_max_angle = 'nan' is not a finite number");
+	EXPECT_EQ(loadError<EdgeDeciderOptions>("[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 3O\n"),
+			  "a.ini: [EdgeRegistrationDeciderParameters] LC_min_nodeid_diff = '3O' is not an integer");
+	// other deciders' keys in the shared sections stay theirs to read
+	EXPECT_EQ(loadError<EdgeDeciderOptions>("[EdgeRegistrationDeciderParameters]\nICP_goodness_thresh = 0.o5\n"), "");
+}
+
+TEST(graphslam_options, values_end_as_in_mrpts_graphslam_files)
+{
+	EdgeDeciderOptions e;
+	e.load(ini("[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 12;\nclass_verbosity = 0 // debug\n"
+			   "[GridVectorERD]\nmax_distance = 4.5;\nsearch_offset = 0.25 ; m\nmatch_previous_node = true # x\n"
+			   "pass_gap = 7; once a pass\n"),
+		   "t.ini");
+	EXPECT_EQ(e.lcMinNodeIdDiff, 12);
+	EXPECT_EQ(e.classVerbosity, 0);
+	EXPECT_DOUBLE_EQ(e.maxDistance, 4.5);
+	EXPECT_DOUBLE_EQ(e.searchOffset, 0.25);
+	EXPECT_TRUE(e.matchPreviousNode);
+	EXPECT_EQ(e.passGap, 7);
+}
+
+TEST(graphslam_options, every_graphslam_ini_mrpt_and_we_ship_loads_with_mrpts_values)
+{
+	std::vector<std::string> files = {std::string(GV_SOURCE_DIR) + "/share/gridvector/graphslam-gridvector.ini"};
+	const std::string mrptDir = "/usr/share/mrpt/config_files/graphslam-engine";
+	if (std::filesystem::is_directory(mrptDir))
+		for (const auto& f : std::filesystem::directory_iterator(mrptDir))
+			if (f.path().extension() == ".ini") files.push_back(f.path().string());
+	ASSERT_GE(files.size(), 2u) << "MRPT's graphslam-engine .ini files not found in " << mrptDir;
+	for (const auto& path : files)
+	{
+		const mrpt::config::CConfigFile c(path);
+		NodeDeciderOptions n, nDefault;
+		EdgeDeciderOptions e, eDefault;
+		ASSERT_NO_THROW(n.load(c, path)) << path;
+		ASSERT_NO_THROW(e.load(c, path)) << path;
+		const char* ns = NodeDeciderOptions::sharedSection;
+		const char* es = EdgeDeciderOptions::sharedSection;
+		EXPECT_EQ(n.registrationMaxDistance, c.read_double(ns, "registration_max_distance", nDefault.registrationMaxDistance)) << path;
+		EXPECT_EQ(n.registrationMaxAngleDeg, c.read_double(ns, "registration_max_angle", nDefault.registrationMaxAngleDeg)) << path;
+		EXPECT_EQ(n.classVerbosity, c.read_int(ns, "class_verbosity", nDefault.classVerbosity)) << path;
+		EXPECT_EQ(e.lcMinNodeIdDiff, c.read_int(es, "LC_min_nodeid_diff", eDefault.lcMinNodeIdDiff)) << path;
+		EXPECT_EQ(e.classVerbosity, c.read_int(es, "class_verbosity", eDefault.classVerbosity)) << path;
+	}
 }
 
 TEST(graphslam_options, deciders_load_from_the_engine_ini_file)

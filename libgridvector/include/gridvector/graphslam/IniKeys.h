@@ -1,29 +1,37 @@
 // Reading decider options from graphslam-engine .ini sections, key lists walked once.
 #pragma once
 
+#include <gridvector/io/IniValue.h>
+
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <algorithm>
+#include <cctype>
 #include <ostream>
 #include <set>
 #include <stdexcept>
 #include <string>
-#include <vector>
 
 namespace gridvector::graphslam
 {
 namespace detail
 {
-inline void readKey(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k, double& f)
+/** The text of a decider key as MRPT writes its graphslam .ini files: a value may end in
+ * ';' ("1.5;") or be followed by "// comment" (CConfigFile::readString cuts " //" and its
+ * read_double / read_int stop at the first non-digit); " ; comment" / " # comment" as elsewhere. */
+inline std::string valueText(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k)
 {
-	f = c.read_double(s, k, f);
+	std::string v = io::iniValueText(c, s, k);
+	v = v.substr(0, std::min(v.find(';'), v.find("//")));
+	while (!v.empty() && std::isspace(static_cast<unsigned char>(v.back()))) v.pop_back();
+	return v;
 }
-inline void readKey(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k, int& f)
+/** Reads a present key strictly (io/IniValue.h): "0.o5" is an error, not 0. */
+template <class T>
+void readKey(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k, T& f,
+			 const std::string& source)
 {
-	f = c.read_int(s, k, f);
-}
-inline void readKey(const mrpt::config::CConfigFileBase& c, const std::string& s, const char* k, bool& f)
-{
-	f = c.read_bool(s, k, f);
+	if (c.keyExists(s, k)) io::readIniText(valueText(c, s, k), s, k, f, source);
 }
 inline void printValue(std::ostream& o, bool v) { o << (v ? "true" : "false"); }
 template <class T>
@@ -34,7 +42,7 @@ void printValue(std::ostream& o, const T& v)
 }  // namespace detail
 
 /** Reads every key a visitor lists from `section` (missing keys keep their
- * defaults). With `strict`, a key present in the section but not listed is an
+ * defaults; a value that is not its key's type is an error "source: [s] k = 'text' is not ..."). With `strict`, a key present in the section but not listed is an
  * error "source: unknown key 'k' in section [s]" (a typo must not fall back
  * silently to a default). Sections shared with MRPT's own deciders are read
  * non-strict: they legitimately hold keys meant for other deciders. */
@@ -42,17 +50,13 @@ template <class Visit>
 void readSection(const mrpt::config::CConfigFileBase& cfg, const std::string& section, bool strict,
 				 const std::string& source, Visit&& visit)
 {
-	if (strict && cfg.sectionExists(section))
+	if (strict)
 	{
 		std::set<std::string> known;
 		visit([&](const char* key, auto&, const char*) { known.insert(key); });
-		std::vector<std::string> present;
-		cfg.getAllKeys(section, present);
-		for (const auto& k : present)
-			if (!known.count(k))
-				throw std::runtime_error(source + ": unknown key '" + k + "' in section [" + section + "]");
+		io::requireKnownKeys(cfg, section, known, source);
 	}
-	visit([&](const char* key, auto& field, const char*) { detail::readKey(cfg, section, key, field); });
+	visit([&](const char* key, auto& field, const char*) { detail::readKey(cfg, section, key, field, source); });
 }
 
 /** "key = value ; doc" lines of a section, as an .ini fragment. */

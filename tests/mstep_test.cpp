@@ -656,6 +656,7 @@ AcesSeed8 acesSeed8FirstMStep(bool reregisterMoved)
 	const io::LogData log = io::readLog(sum.logPath, ro);
 	GridVectorConfig cfg = EmSlam::defaultConfig();
 	cfg.mstep.overlapReregisterMoved = reregisterMoved;
+	cfg.matcher.stepWithinGates = false;  // the re-registration alone (gv-em-slam's profile has both on)
 	const VectorExtractor ex(cfg.extraction, cfg.grid);
 	std::vector<std::vector<MatchSegment>> segs;
 	std::vector<TPose2D> odo;

@@ -17,5 +17,5 @@ mkdir -p "$OUT"
 echo
 echo "Outputs in $(cd "$OUT" && pwd):"
 echo "  sim/  simulated CARMEN log + ground truth"
-echo "  map/  trajectory.txt, vectors.svg (static blue, dynamic red, doors), occupancy.png/.pgm/.yaml, doors.txt, report.json, map.gvmap"
+echo "  map/  trajectory.txt, vectors.svg (static blue, dynamic red, doors), occupancy.png/.pgm/.yaml, doors.txt, door_states.txt, report.json, map.gvmap"
 echo "  eval_trajectory.txt, eval_map.txt  scores against the truth"

@@ -94,36 +94,33 @@ std::vector<size_t> GlobalMap::correspondents(const GridVector& v) const
 // Eq. 8: the triangles of V_t over the vectors already in the map (not over the scan's own).
 ScanWipe::Stats GlobalMap::wipe(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
 {
-	std::vector<ScanWipe::Segment> segs;
-	for (const auto& v : scan.vectors) segs.push_back(ScanWipe::segmentOf(v.compose(robotPose)));
-	const int64_t own = scan.scanIndex;
-	auto limit = [&](size_t, uint32_t slot) {
-		return own >= 0 && vectors_[slot].scanIndex == own ? WipePart::Outside : WipePart::Hit;
-	};
-	return wiper_.apply(sensorPosition(robotPose, scan), segs, vectors_, index_, limit);
+	HeldBack none;
+	return wipeHolding(robotPose, scan, false, none);
 }
 
-// Eq. 8 before the scan's vectors go in: a new vector's own beams reach the vectors it merges into
-// through Algorithm 1, so its correspondents get part b only until completeRefused() knows the merges.
-ScanWipe::Stats GlobalMap::wipeBeforeMerging(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
+// Eq. 8 before the scan's vectors go in. With `holdBack`, a new vector's own beams reach the vectors it
+// merges into through Algorithm 1, so its correspondents get part b only until completeRefused() knows
+// the merges; `held` records what was held back.
+ScanWipe::Stats GlobalMap::wipeHolding(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, bool holdBack,
+									   HeldBack& held)
 {
-	held_ = HeldBack{};
-	held_.sensor = sensorPosition(robotPose, scan);
-	held_.scanIndex = scan.scanIndex;
+	held = HeldBack{};
+	held.sensor = sensorPosition(robotPose, scan);
+	held.scanIndex = scan.scanIndex;
 	std::vector<std::vector<size_t>> mergeTargets(scan.vectors.size());
-	held_.targets.resize(scan.vectors.size());
+	held.targets.resize(scan.vectors.size());
 	for (size_t j = 0; j < scan.vectors.size(); ++j)
 	{
 		const GridVector m = scan.vectors[j].compose(robotPose);
-		held_.segs.push_back(ScanWipe::segmentOf(m));
-		if (!cfg_.map.mergeOnInsert) continue;
+		held.segs.push_back(ScanWipe::segmentOf(m));
+		if (!holdBack) continue;
 		mergeTargets[j] = correspondents(m);
 		for (size_t slot : mergeTargets[j])
 		{
-			held_.targets[j].push_back(vectors_[slot].id);
-			held_.boxes.push_back({vectors_[slot].id, index_.box(uint32_t(slot))});
+			held.targets[j].push_back(vectors_[slot].id);
+			held.boxes.push_back({vectors_[slot].id, index_.box(uint32_t(slot))});
 		}
-		std::sort(held_.targets[j].begin(), held_.targets[j].end());
+		std::sort(held.targets[j].begin(), held.targets[j].end());
 	}
 	const int64_t own = scan.scanIndex;
 	auto limit = [&](size_t seg, uint32_t slot) {
@@ -131,13 +128,13 @@ ScanWipe::Stats GlobalMap::wipeBeforeMerging(const mrpt::math::TPose2D& robotPos
 		const auto& t = mergeTargets[seg];
 		return std::binary_search(t.begin(), t.end(), size_t(slot)) ? WipePart::Visited : WipePart::Hit;
 	};
-	return wiper_.apply(held_.sensor, held_.segs, vectors_, index_, limit);
+	return wiper_.apply(held.sensor, held.segs, vectors_, index_, limit);
 }
 
 // Eq. 8 completed for the correspondents that absorbed no new vector: the parts c held back.
-void GlobalMap::completeRefused()
+void GlobalMap::completeRefused(HeldBack& held)
 {
-	auto& boxes = held_.boxes;
+	auto& boxes = held.boxes;
 	std::sort(boxes.begin(), boxes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
 	boxes.erase(std::unique(boxes.begin(), boxes.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
 				boxes.end());
@@ -149,15 +146,14 @@ void GlobalMap::completeRefused()
 		index_.query(box, cand);
 		const auto slot = std::find_if(cand.begin(), cand.end(), [&](uint32_t s) { return vectors_[s].id == id; });
 		if (slot == cand.end()) continue;  // merged: it holds the new vectors' endpoints
-		if (held_.scanIndex >= 0 && vectors_[*slot].scanIndex == held_.scanIndex) continue;  // not wiped by its scan
+		if (held.scanIndex >= 0 && vectors_[*slot].scanIndex == held.scanIndex) continue;  // not wiped by its scan
 		if (tris.empty())
-			for (const auto& seg : held_.segs) tris.push_back(wiper_.triangleOf(held_.sensor, seg));
+			for (const auto& seg : held.segs) tris.push_back(wiper_.triangleOf(held.sensor, seg));
 		std::vector<WipePart> applied(tris.size(), WipePart::Hit), wanted(tris.size(), WipePart::Hit);
 		for (size_t k = 0; k < tris.size(); ++k)
-			if (std::binary_search(held_.targets[k].begin(), held_.targets[k].end(), id)) applied[k] = WipePart::Visited;
+			if (std::binary_search(held.targets[k].begin(), held.targets[k].end(), id)) applied[k] = WipePart::Visited;
 		ScanWipe::complete(tris, applied, wanted, vectors_[*slot], cfg_.map.wipeCountsBeams, stats_.wipe);
 	}
-	held_ = HeldBack{};
 }
 
 // Algorithm 2 with every correspondent the guard allows, repeated while the merged vector finds new ones.
@@ -193,19 +189,21 @@ void GlobalMap::insertVector(GridVector m)
 void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
 {
 	stats_ = {};
-	stats_.wipe = wipeBeforeMerging(robotPose, scan);
+	HeldBack held;
+	stats_.wipe = wipeHolding(robotPose, scan, cfg_.map.mergeOnInsert, held);
 	insertVectors(robotPose, scan);
-	completeRefused();
+	completeRefused(held);
 }
 
 void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, const ScanBeams& beams)
 {
 	stats_ = {};
-	stats_.wipe = wipeBeforeMerging(robotPose, scan);
+	HeldBack held;
+	stats_.wipe = wipeHolding(robotPose, scan, cfg_.map.mergeOnInsert, held);
 	if (cfg_.map.wipeVectorlessBeams)  // beyond the paper (BeamWipe)
 		stats_.beams = BeamWipe::apply(robotPose, beams, vectors_, index_, scan.scanIndex);
 	insertVectors(robotPose, scan);
-	completeRefused();
+	completeRefused(held);
 }
 
 void GlobalMap::insertVectors(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)

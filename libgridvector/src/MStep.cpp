@@ -286,13 +286,9 @@ void MStep::addSequential(const Scans& scans, const Poses& poses, MStepReport& r
 			if (!retry(key, rel)) continue;
 			Constraint c;
 			if (registerPair(key.first, key.second, EdgeKind::Sequential, scans, rel, c, rep))
-			{
-				constraints_[key] = std::move(c);
-				failed_.erase(key);
-				++rep.added;
-			}
+				keepEdge(key, std::move(c), rep);
 			else
-				failed_[key] = {rel, sigs_[key.first], sigs_[key.second]};
+				failEdge(key, rel);
 		}
 }
 
@@ -340,6 +336,27 @@ std::vector<uint32_t> MStep::overlapPartners(uint32_t i, uint32_t nearest, const
 	return out;
 }
 
+void MStep::keepEdge(const EdgeKey& key, Constraint c, MStepReport& rep)
+{
+	constraints_[key] = std::move(c);
+	failed_.erase(key);
+	++rep.added;
+}
+
+void MStep::failEdge(const EdgeKey& key, const TPose2D& rel)
+{
+	failed_[key] = {rel, sigs_[key.first], sigs_[key.second]};
+}
+
+// An overlap registration from another pose of the pass than the nearest (which did not see the place)
+// is kept only if it cannot slide along a corridor (one whose weak direction is marginalised out cannot).
+bool MStep::registerOverlap(const EdgeKey& key, bool nearest, const Scans& scans, const TPose2D& rel, Constraint& c,
+							MStepReport& rep)
+{
+	return registerPair(key.first, key.second, EdgeKind::Overlap, scans, rel, c, rep) &&
+		   (nearest || c.degeneracy >= cfg_.matcher.degenerateRatio || c.dof < 3);
+}
+
 // Sec. 4.3, the topology change: scans whose ranges cover each other get an edge.
 // Overlap edges: for each pose, one edge into every earlier pass through its place.
 std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep,
@@ -364,23 +381,18 @@ std::vector<EdgeKey> MStep::addOverlaps(const Scans& scans, const Poses& poses, 
 				const EdgeKey key{from, i};
 				const TPose2D rel = se2::relative(poses[from], poses[i]);
 				Constraint c;
-				// another pose of the pass: the nearest did not see the place, so no slide along a corridor
-				// (one whose weak direction is marginalised out cannot slide: it is kept)
-				if (registerPair(from, i, EdgeKind::Overlap, scans, rel, c, rep) &&
-					(from == p.nearest || c.degeneracy >= cfg_.matcher.degenerateRatio || c.dof < 3))
+				if (registerOverlap(key, from == p.nearest, scans, rel, c, rep))
 				{
 					if (moved && beyondInitialGates(rel, c.z))
-					{
 						moved->push_back({key, from == p.nearest});  // registered again once the rest is optimised
-						break;
+					else
+					{
+						keepEdge(key, std::move(c), rep);
+						fresh.push_back(key);
 					}
-					constraints_[key] = std::move(c);
-					failed_.erase(key);
-					fresh.push_back(key);
-					++rep.added;
 					break;
 				}
-				failed_[key] = {rel, sigs_[key.first], sigs_[key.second]};
+				failEdge(key, rel);
 			}
 		}
 	}
@@ -566,7 +578,7 @@ void MStep::verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh
 	}
 	for (const EdgeKey& k : drop)
 	{
-		failed_[k] = {se2::relative(poses[k.first], poses[k.second]), sigs_[k.first], sigs_[k.second]};
+		failEdge(k, se2::relative(poses[k.first], poses[k.second]));
 		++rep.unverified;
 		auto r = replaced_.find(k);
 		if (r != replaced_.end())
@@ -675,16 +687,13 @@ bool MStep::reregisterMoved(const Scans& scans, Poses& poses, const std::vector<
 		if (constraints_.count(m.key)) continue;  // the loop search registered the pair
 		const TPose2D rel = se2::relative(poses[m.key.first], poses[m.key.second]);
 		Constraint c;
-		if (registerPair(m.key.first, m.key.second, EdgeKind::Overlap, scans, rel, c, rep) &&
-			(m.nearest || c.degeneracy >= cfg_.matcher.degenerateRatio || c.dof < 3))
+		if (registerOverlap(m.key, m.nearest, scans, rel, c, rep))
 		{
-			constraints_[m.key] = std::move(c);
-			failed_.erase(m.key);
+			keepEdge(m.key, std::move(c), rep);
 			again.push_back(m.key);
-			++rep.added;
 		}
 		else
-			failed_[m.key] = {rel, sigs_[m.key.first], sigs_[m.key.second]};
+			failEdge(m.key, rel);
 	}
 	verifyOverlaps(poses, again, rep);
 	if (std::none_of(again.begin(), again.end(), [&](const EdgeKey& k) { return constraints_.count(k) > 0; })) return false;

@@ -122,8 +122,8 @@ class GlobalMap
 	static MergeResult mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg);
 
    private:
-	/** What wipeBeforeMerging() held back: per new vector of the scan, its
-	 * segment and the ids of the map vectors that got part b of its triangle only. */
+	/** What wipeHolding() held back: per new vector of the scan, its segment and
+	 * the ids of the map vectors that got part b of its triangle only. */
 	struct HeldBack
 	{
 		mrpt::math::TPoint2D sensor;
@@ -132,12 +132,13 @@ class GlobalMap
 		std::vector<std::vector<uint64_t>> targets;  //!< per segment, ascending
 		std::vector<std::pair<uint64_t, Box2D>> boxes;  //!< every target once, with its box
 	};
-	/** Eq. 8 with part b only from a new vector to the map vectors it corresponds
-	 * to (merge_on_insert), recorded in held_. */
-	ScanWipe::Stats wipeBeforeMerging(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
+	/** Eq. 8; with `holdBack` (merge_on_insert) part b only from a new vector to the
+	 * map vectors it corresponds to, recorded in `held`. */
+	ScanWipe::Stats wipeHolding(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, bool holdBack,
+								HeldBack& held);
 	/** After the insertion: the held-back parts c for the targets still in the map
 	 * under their id (a merge gives a fresh id: such a vector absorbed nothing). */
-	void completeRefused();
+	void completeRefused(HeldBack& held);
 	void insertVectors(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
 	void addSlot(GridVector m);
 	void removeSlots(std::vector<size_t> slots);
@@ -150,7 +151,6 @@ class GlobalMap
 	ScanWipe wiper_;
 	VectorMerger merger_;
 	InsertStats stats_;
-	HeldBack held_;
 };
 
 }  // namespace gridvector

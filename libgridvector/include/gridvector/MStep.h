@@ -110,6 +110,13 @@ class MStep
 	 * matcher's initial gates go there instead (mstep.overlap_reregister_moved). */
 	std::vector<EdgeKey> addOverlaps(const Scans& scans, const Poses& poses, MStepReport& rep,
 									 std::vector<MovedPair>* moved = nullptr);
+	/** A registered pair into the graph (no longer failed). */
+	void keepEdge(const EdgeKey& key, Constraint c, MStepReport& rep);
+	/** A pair whose registration failed or was dropped, retried when something changed (retry()). */
+	void failEdge(const EdgeKey& key, const mrpt::math::TPose2D& rel);
+	/** registerPair() as an overlap edge, and kept by the rule for passes (see addOverlaps). */
+	bool registerOverlap(const EdgeKey& key, bool nearest, const Scans& scans, const mrpt::math::TPose2D& rel,
+						 Constraint& c, MStepReport& rep);
 	/** Did a registration move the relative pose beyond the matcher's initial gates from `guess`? */
 	bool beyondInitialGates(const mrpt::math::TPose2D& guess, const mrpt::math::TPose2D& z) const;
 	/** mstep.overlap_reregister_moved: the moved pairs registered again from the optimised `poses`,

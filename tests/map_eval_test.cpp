@@ -124,6 +124,26 @@ TEST(MapEval, DoorRecallOverDoorsSeenSwinging)
 	EXPECT_NE(eval::formatJson(m).find("\"door_recall_observed\": 1.000000"), std::string::npos);
 }
 
+// A 2-beam run (grazing incidence) fits any line: it shows no leaf state, however long it is.
+TEST(MapEval, TwoBeamRunShowsNoLeafState)
+{
+	sim::Truth t = truth();
+	auto hit = [](double x1, double y1, double x2, double y2, int beams) {
+		sim::HitRun h;
+		h.kind = sim::HitKind::Door, h.id = 0, h.seg = {x1, y1, x2, y2}, h.beams = beams;
+		return h;
+	};
+	t.hits.push_back(hit(20, 0.9, 20, 0.2, 8));  // door 0 open, 8 beams
+	t.hits.push_back(hit(20.1, 0, 20.7, 0, 2));  // closed, 2 beams 0.6 m apart
+	EXPECT_FALSE(eval::showsLeafState(t.hits.back(), {}));
+	EXPECT_FALSE(eval::doorsSeenSwinging(t)[0]);
+	eval::MapEvalOptions lax;
+	lax.doorMinRunBeams = 2;
+	EXPECT_TRUE(eval::doorsSeenSwinging(t, lax)[0]);
+	t.hits.back().beams = 3;
+	EXPECT_TRUE(eval::doorsSeenSwinging(t)[0]);
+}
+
 TEST(MapEval, SecondGhostFigureLeavesOutDoorsSeenInOneState)
 {
 	sim::Truth t = truth();
@@ -152,6 +172,11 @@ TEST(MapEval, SecondGhostFigureLeavesOutDoorsSeenInOneState)
 	EXPECT_NEAR(m.ghostShareSeenSwinging, 1.0 / 11.6, kTol);
 	EXPECT_NE(eval::formatJson(m).find("\"ghost_length_seen_swinging_m\": 1.0"), std::string::npos) << eval::formatJson(m);
 	EXPECT_NE(eval::formatText(m).find("ghost length (doors seen in one state are static): 1.00 m"), std::string::npos)
+		<< eval::formatText(m);
+	// the precision by the same reading: the wall and door 2's closed leaf are correct, 1.0 m is not
+	EXPECT_NEAR(m.staticPrecision, 10.0 / 11.6, kTol);
+	EXPECT_NEAR(m.staticPrecisionSeenSwinging, 10.6 / 11.6, kTol);
+	EXPECT_NE(eval::formatText(m).find("static precision (doors seen in one state are static): 0.9138"), std::string::npos)
 		<< eval::formatText(m);
 }
 

@@ -84,6 +84,7 @@ int mapCommand(const io::ArgParser& a)
 	o.wallTolerance = o.dynamicTolerance = a.getDouble("tolerance", o.wallTolerance);
 	o.doorTolerance = a.getDouble("door-tolerance", o.doorTolerance);
 	o.doorPassGap = a.getDouble("pass-gap", o.doorPassGap);
+	o.doorMinRunBeams = int(a.getInt("door-min-beams", o.doorMinRunBeams, 1, 100000));
 	if (o.wallTolerance <= 0 || o.doorTolerance <= 0) a.fail("tolerances must be > 0");
 	if (!(o.doorPassGap > 0)) a.fail("--pass-gap must be > 0");
 	auto vectors = eval::readVectors(a.positional()[1]);
@@ -146,6 +147,8 @@ int main(int argc, char** argv)
 	args.flag("breakdown", "map: the static length off every true wall by its nearest dynamic truth, and each door's passes");
 	args.option("tolerance", "M", "map: distance for 'on a wall' / 'on a dynamic object' (default 0.1 m)");
 	args.option("door-tolerance", "M", "map: hinge match distance (default 0.3 m)");
+	args.option("door-min-beams", "N",
+				"map: a truth hit run shows a door leaf's state with at least N beams (default 3: two points fit any line)");
 	args.option("pass-gap", "S", "map --breakdown: a door's leaf hits further apart in time are two passes (default 2 s)");
 	return io::runTool(args, argc, argv, [&]() -> int {
 		if (args.positional().empty()) args.fail("missing command (traj or map)");

@@ -47,7 +47,7 @@ std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const Map
 			DoorPass& p = o.passes.back();
 			p.t1 = h->t;
 			p.runs++;
-			if (h->seg.length() < opt.doorMinRunLength) continue;
+			if (!showsLeafState(*h, opt)) continue;
 			const double a = std::abs(leafAngle(*h, d)) * kDeg;
 			p.minDeg = p.angled ? std::min(p.minDeg, a) : a;
 			p.maxDeg = p.angled ? std::max(p.maxDeg, a) : a;

@@ -17,7 +17,7 @@ struct DoorPass
 {
 	double t0 = 0, t1 = 0;  //!< first and last hit run [s]
 	size_t runs = 0;  //!< hit runs (scans that hit the leaf with >= 2 beams)
-	bool angled = false;  //!< some run was long enough (doorMinRunLength) to give an angle
+	bool angled = false;  //!< some run showed a leaf state (showsLeafState) to give an angle
 	double minDeg = 0, maxDeg = 0;  //!< leaf angles seen from closed [deg]
 };
 

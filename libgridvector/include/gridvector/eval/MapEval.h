@@ -34,9 +34,12 @@ struct MapEvalOptions
 	double dynamicTolerance = 0.10;  //!< ... on a dynamic hit / object / door sweep [m]
 	double doorTolerance = 0.30;  //!< a detected hinge matches a true one within this [m]
 	/** A swinging door counts as observed swinging when the laser hit its leaf
-	 * (runs of at least doorMinRunLength) at angles this far apart [deg]. */
+	 * (runs of at least doorMinRunLength and doorMinRunBeams) at angles this far apart [deg]. */
 	double doorMinStateDiffDeg = 10.0;
 	double doorMinRunLength = 0.30;  //!< [m]
+	/** A run shows a leaf state only with this many beams: two points fit any
+	 * line, a third checks it (no line extractor accepts fewer; gv-em-slam's min_points is 3). */
+	int doorMinRunBeams = 3;
 	double sampleStep = 0.01;  //!< length integrals are sampled this finely [m]
 	double doorPassGap = 2.0;  //!< --breakdown: a door's leaf hits further apart in time than this are two passes [s]
 };
@@ -58,6 +61,9 @@ struct MapMetrics
 	 * environment"): its sector and leaf hits are left out. ghostLength is unchanged. */
 	double ghostLengthSeenSwinging = 0;
 	double ghostShareSeenSwinging = 0;  //!< ghostLengthSeenSwinging / staticLength
+	/** The precision by the same reading: static length on true walls or on the places
+	 * of doors seen in one state only (and no other dynamic place), over staticLength. */
+	double staticPrecisionSeenSwinging = 0;
 	double dynamicHitLength = 0;  //!< total length of runs of dynamic hits (truth_dynamic.txt) [m]
 	double dynamicHitDetected = 0;  //!< ... of it within tolerance of a dynamic vector [m]
 	double dynamicDetection = 0;  //!< dynamicHitDetected / dynamicHitLength
@@ -80,8 +86,10 @@ struct MapMetrics
  * overflow int, and sample for hours) or for a length or step that is not finite and positive. */
 int sampleCount(double length, double step);
 
+/** Does this truth hit run show a door leaf's state: at least doorMinRunLength long, of at least doorMinRunBeams beams? */
+bool showsLeafState(const sim::HitRun& h, const MapEvalOptions& opt);
 /** Per true door: was its leaf seen in two states, i.e. truth hit runs
- * (truth_dynamic.txt, `hit door`) of at least doorMinRunLength whose leaf
+ * (truth_dynamic.txt, `hit door`) showing a state (showsLeafState) whose leaf
  * angles differ by doorMinStateDiffDeg or more? */
 std::vector<bool> doorsSeenSwinging(const sim::Truth& truth, const MapEvalOptions& opt = {});
 /** The leaf angle of a door's hit run from its closed angle [rad] (the run's end

@@ -11,6 +11,9 @@
 #                           instead of re-running them; gv-em-slam always runs when selected
 #     --no-sim / --no-real  skip the simulated worlds / the real logs
 #     --core N              the core every timed process is pinned to (default 0)
+#     --sim-rows "W:S[:P] ..."  simulated rows to run instead of the 7 default ones: world W,
+#                           seed S, P people (default: the world's own count), e.g.
+#                           "corridor-loop:4 office:2 corridor-loop:3:15 corridor-loop:1:0"
 #
 # Real logs: every log made into a benchmark with mkbench.py, mapped by gv-em-slam and by
 # MRPT's icp-slam (icp_classic_tuned.ini, icp_grid_tuned.ini) and rbpf-slam
@@ -18,13 +21,15 @@
 # gv-carmen2rawlog (peer_run.sh), each process pinned to one core, all scored by
 # evaltraj.py. Prints the gv-em-slam table, then one table per seed comparing the systems
 # (peer_table.py; systems not run this time are taken from OUT_DIR/results if there).
-# Simulated worlds: gv-sim (default world, seeds 1-3, and seeds 1-2 with 15 people; the other worlds, seed 1),
+# Simulated worlds: gv-sim (default world, seeds 1-3, and seeds 1-2 with 15 people; the other worlds, seed 1;
+# or the rows --sim-rows names),
 # scored with gv-eval (trajectory, and the map after aligning it to the truth frame, with the
 # false-static breakdown: a second table).
 # Prints markdown tables; each run's outputs stay in OUT_DIR.
 set -euo pipefail
 BIN=$1; OUT=$2; shift 2
 SEEDS="" LOGS="" SYSTEMS="gv,gv-rawlog,icp-classic,icp-grid,rbpf" REUSE=0 SIM=1 REAL=1 CORE=0
+SIM_ROWS="corridor-loop:1 corridor-loop:2 corridor-loop:3 office:1 long-corridor:1 corridor-loop:1:15 corridor-loop:2:15"
 while [ $# -gt 0 ]; do
   case $1 in
     --seeds) SEEDS=$2; shift 2 ;;
@@ -34,6 +39,7 @@ while [ $# -gt 0 ]; do
     --no-sim) SIM=0; shift ;;
     --no-real) REAL=0; shift ;;
     --core) CORE=$2; shift 2 ;;
+    --sim-rows) SIM_ROWS=$2; shift 2 ;;
     -*) echo "unknown option $1" >&2; exit 2 ;;
     *) SEEDS="$SEEDS $1"; shift ;;
   esac
@@ -148,10 +154,10 @@ sim_row() {
   echo "| $world | $seed | ${3:-default} | $(echo "$r" | field n) | $it | $(secs "$t0" "$t1") | $(echo "$r" | field ate_rmse_m) | $prec | $prec1 | $rec | $ghost | $ghost1 | $det | $door | $doorseen |"
 }
 rm -f "$OUT/false_static.md"
-for seed in 1 2 3; do sim_row corridor-loop "$seed"; done
-sim_row office 1
-sim_row long-corridor 1
-for seed in 1 2; do sim_row corridor-loop "$seed" 15; done
+for row in $SIM_ROWS; do
+  IFS=: read -r world seed people <<< "$row"
+  sim_row "$world" "$seed" $people
+done
 echo
 echo "False static (gv-eval map --breakdown, m; per door and pass in each row's map_eval.txt):"
 echo

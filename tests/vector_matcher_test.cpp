@@ -283,3 +283,34 @@ TEST(VectorMatcher, StepScaleKeepsTheDirectionWithinBothGates)
 	EXPECT_DOUBLE_EQ(VectorMatcher::stepScale(Eigen::Vector3d(3.0, 4.0, 0.0), g), 0.3 / 5.0);
 	EXPECT_DOUBLE_EQ(VectorMatcher::stepScale(Eigen::Vector3d(0.0, 0.3, -0.4), g), 0.25);
 }
+
+TEST(VectorMatcher, AngleRotationSeedsConvergesToOneFixedPoint)
+{
+	// Noisy vectors: their directions' weighted mean and the point-to-line least squares disagree
+	// about the rotation, so a registration taking both steps in every iteration alternates and
+	// runs all max_iterations; with the angle step only while the gates tighten it converges.
+	const TPose2D xa(1.0, 1.0, 0.3), xb(2.0, 1.5, -0.2);
+	const TPose2D truth = relative(xa, xb);
+	MatcherOptions both, seeds;
+	seeds.angleRotationSeeds = true;
+	const VectorMatcher alternating(both), seeded(seeds);
+	int alternatingFull = 0;
+	for (unsigned seed = 0; seed < 20; ++seed)
+	{
+		const auto a = observe(room(), xa, 0.01, 10 + seed, 1);
+		const auto b = observe(room(), xb, 0.01, 50 + seed, 100);
+		const TPose2D guess(truth.x - 0.3, truth.y + 0.2, truth.phi - 0.1);
+		alternatingFull += alternating.match(a, b, guess).iterations == both.maxIterations;
+		const MatchResult r = seeded.match(a, b, guess);
+		ASSERT_TRUE(r.ok()) << toString(r.status);
+		EXPECT_LT(r.iterations, 12) << "seed " << seed;
+		EXPECT_LT(std::hypot(r.pose.x - truth.x, r.pose.y - truth.y), 0.03);
+		EXPECT_NEAR(r.pose.phi, truth.phi, 0.01);
+		// a fixed point: started from its own solution the registration stays there
+		const MatchResult again = seeded.match(a, b, r.pose);
+		EXPECT_LT(again.iterations, 12);
+		EXPECT_LT(std::hypot(again.pose.x - r.pose.x, again.pose.y - r.pose.y), 2e-4) << "seed " << seed;
+		EXPECT_NEAR(again.pose.phi, r.pose.phi, 2e-5) << "seed " << seed;
+	}
+	EXPECT_EQ(alternatingFull, 20);  // the defect: every registration ran all iterations
+}

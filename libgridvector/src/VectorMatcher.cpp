@@ -192,6 +192,22 @@ void VectorMatcher::normalEquations(const std::vector<MatchSegment>& b, const TP
 	}
 }
 
+// The rotation step of the weighted angle differences applied to T about the matched centroid; returns it.
+double VectorMatcher::rotateAboutMatchedCentre(TPose2D& T) const
+{
+	const double dphi = rotationStep();
+	Vector2d cen(0, 0);
+	double sw = 0;
+	for (const Pair& p : pairs_) cen += p.overlap * gb_[size_t(p.ib)].c, sw += p.overlap;
+	cen /= sw;
+	const double cd = std::cos(dphi), sd = std::sin(dphi);
+	const Vector2d t0 = Vector2d(T.x, T.y) - cen;
+	T.x = cen.x() + cd * t0.x() - sd * t0.y();
+	T.y = cen.y() + sd * t0.x() + cd * t0.y();
+	T.phi = wrap(T.phi + dphi);
+	return dphi;
+}
+
 double VectorMatcher::correspondences(const std::vector<MatchSegment>& a,
 									  const std::vector<MatchSegment>& b, const TPose2D& pose,
 									  const MatchGates& gates, std::vector<VectorPair>* out) const
@@ -239,17 +255,9 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 		gather(gates);
 		if (int(pairs_.size()) < opts_.minMatches) break;
 		for (Pair& p : pairs_) p.weight = 1.0;
-		// rotation from weighted angle differences, about the matched centroid
-		const double dphi = rotationStep();
-		Vector2d cen(0, 0);
-		double sw = 0;
-		for (const Pair& p : pairs_) cen += p.overlap * gb_[size_t(p.ib)].c, sw += p.overlap;
-		cen /= sw;
-		const double cd = std::cos(dphi), sd = std::sin(dphi);
-		const Vector2d t0 = Vector2d(T.x, T.y) - cen;
-		T.x = cen.x() + cd * t0.x() - sd * t0.y();
-		T.y = cen.y() + sd * t0.x() + cd * t0.y();
-		T.phi = wrap(T.phi + dphi);
+		const bool tight = gates.rho <= fin.rho + 1e-12 && gates.psi <= fin.psi + 1e-12;
+		// rotation from weighted angle differences (matcher.angle_rotation_seeds: only while the gates tighten)
+		const double dphi = opts_.angleRotationSeeds && tight ? 0.0 : rotateAboutMatchedCentre(T);
 		// joint Gauss-Newton step on point-to-line distances (translation and rotation)
 		normalEquations(b, T, std::max(opts_.sigmaFloor, opts_.robustScaleGateShare * gates.rho), H, g, sumW,
 						sumWr2);
@@ -260,7 +268,6 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 		T.x += delta.x();
 		T.y += delta.y();
 		T.phi = wrap(T.phi + delta.z());
-		const bool tight = gates.rho <= fin.rho + 1e-12 && gates.psi <= fin.psi + 1e-12;
 		if (tight && delta.head<2>().norm() < opts_.convergenceTranslation &&
 			std::abs(delta.z()) + std::abs(dphi) < opts_.convergenceRotation)
 		{

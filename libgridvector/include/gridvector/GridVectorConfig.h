@@ -148,6 +148,7 @@ struct MatcherOptions
 	double convergenceRotation = 1e-5;  //!< ... and turns less than this [rad]
 	double robustScaleGateShare = 0.5;  //!< Cauchy scale while iterating = this x the rho gate (>= sigma_floor)
 	bool stepWithinGates = false;  //!< a Gauss-Newton step moves at most the current rho gate and turns at most the current psi gate
+	bool angleRotationSeeds = false;  //!< the angle-difference rotation step only while the gates tighten; then Gauss-Newton alone to its fixed point
 
 	template <class V>
 	void visit(V&& v)
@@ -169,6 +170,7 @@ struct MatcherOptions
 		v("convergence_rotation", convergenceRotation, "Registration converged when a step turns less than this [rad]");
 		v("robust_scale_gate_share", robustScaleGateShare, "Beyond the paper (Sec. 4.2 and Sohn & Kim 2008 weight no residuals): while iterating, a point-to-line residual r weighs 1 / (1 + r^2 / c^2) (Cauchy) with c = this x the current line-offset gate, never below sigma_floor; large: least squares over the gated pairs");
 		v("step_within_gates", stepWithinGates, "Beyond the paper: each Gauss-Newton step of a registration is scaled down (its direction kept) so that it translates at most the iteration's line-offset gate and turns at most its direction gate (gate_rho_* and gate_psi_*_deg as they shrink), where the correspondences it solves for were gathered: a few nearly parallel pairs whose offsets disagree (a wall and a cabinet front in the wide first gates) otherwise send the estimate metres away from its guess, where the registration fails or locks onto something else (csail seed 4: scans 0 and 48, 0.8 m / 3 deg apart in the first M-step's chain, jumped 12 m); false (default): the full step. On: csail seed 4 0.204 -> 0.034 m, aces 0.0015-0.0024 m worse on seeds 1-6 (doc/benchmarks-history.md, session 7)");
+		v("angle_rotation_seeds", angleRotationSeeds, "The rotation step from the weighted angle differences (Sec. 4.2) seeds the registration while the gates tighten, and once they are final (gate_rho_final, gate_psi_final_deg) only the joint Gauss-Newton step on point-to-line distances runs, tested alone for convergence: the two rotation estimates have different fixed points (noisy vector directions against the lever arms of the line offsets), so with both in every iteration (false, the default) a registration alternates between them and runs all max_iterations, ending wherever the last step lands");
 	}
 };
 

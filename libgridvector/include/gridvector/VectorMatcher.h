@@ -82,7 +82,9 @@ Eigen::Matrix3d marginaliseTranslation(const Eigen::Matrix3d& information, const
  * than half the summed lengths) with gates that start wide and tighten;
  * rotation from the overlap-weighted angle differences; then a Gauss-Newton
  * step on point-to-line distances of the overlap-clipped segments (integrated
- * exactly along each segment by Simpson's rule) with Cauchy weights.
+ * exactly along each segment by Simpson's rule) with Cauchy weights. With
+ * matcher.angle_rotation_seeds the angle step only seeds (while the gates
+ * tighten) and the Gauss-Newton step alone iterates to its fixed point.
  * Not thread-safe: one workspace per matcher. Allocation-free once warm. */
 class VectorMatcher
 {
@@ -126,6 +128,7 @@ class VectorMatcher
 	void transformB(const std::vector<MatchSegment>& b, const mrpt::math::TPose2D& T) const;
 	void gather(const MatchGates& g) const;
 	double rotationStep() const;
+	double rotateAboutMatchedCentre(mrpt::math::TPose2D& T) const;
 	void normalEquations(const std::vector<MatchSegment>& b, const mrpt::math::TPose2D& T,
 						 double robustScale, Eigen::Matrix3d& H, Eigen::Vector3d& g,
 						 double& sumW, double& sumWr2) const;

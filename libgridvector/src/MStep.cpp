@@ -186,9 +186,7 @@ void MStep::chainSequential(const Scans& scans, Poses& poses, MStepReport& rep)
 		for (size_t j = i; j-- > lo;)
 		{
 			Constraint c;
-			if (!registerPair(uint32_t(j), uint32_t(i), EdgeKind::Sequential, scans,
-							  se2::relative(poses[j], guess), c, rep))
-				continue;
+			if (!registerChained(uint32_t(j), uint32_t(i), scans, se2::relative(poses[j], guess), c, rep)) continue;
 			const TPose2D est = se2::compose(poses[j], c.z);
 			const Matrix3d Iw = toWorld(c.information, poses[j].phi);
 			const Vector3d d(est.x - guess0.x, est.y - guess0.y,
@@ -202,6 +200,17 @@ void MStep::chainSequential(const Scans& scans, Poses& poses, MStepReport& rep)
 		}
 		poses[i] = guess;
 	}
+}
+
+// A sequential pair of the first M-step from the chained guess, else (mstep.sequential_odometry_guess) from the
+// odometry between its scans: a guess that does not pass through the predecessors' registered poses.
+bool MStep::registerChained(uint32_t j, uint32_t i, const Scans& scans, const TPose2D& chained, Constraint& c,
+							MStepReport& rep) const
+{
+	if (registerPair(j, i, EdgeKind::Sequential, scans, chained, c, rep)) return true;
+	if (!cfg_.mstep.sequentialOdometryGuess) return false;
+	const TPose2D odo = se2::relative(odometry_[j], odometry_[i]);
+	return movedSince(chained, odo) && registerPair(j, i, EdgeKind::Sequential, scans, odo, c, rep);
 }
 
 // Eq. 25: the static children of both scans (their ids) as when the edge was registered.

@@ -98,6 +98,10 @@ class MStep
 	using Poses = std::vector<mrpt::math::TPose2D>;
 
 	void chainSequential(const Scans& scans, Poses& poses, MStepReport& rep);
+	/** Registers sequential pair (j, i) of the first M-step from `chained`, else (mstep.sequential_odometry_guess)
+	 * from the odometry between j and i. */
+	bool registerChained(uint32_t j, uint32_t i, const Scans& scans, const mrpt::math::TPose2D& chained,
+						 Constraint& c, MStepReport& rep) const;
 	void updateExisting(const Scans& scans, const Poses& poses, MStepReport& rep);
 	void addSequential(const Scans& scans, const Poses& poses, MStepReport& rep);
 	/** A pair whose overlap registration moved beyond the matcher's initial gates (mstep.overlap_reregister_moved). */

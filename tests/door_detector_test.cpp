@@ -121,6 +121,47 @@ TEST(DoorDetector, ClosedLeafReachingIntoTheWallStartsAtTheWallEnd)
 	EXPECT_NEAR(doors[0].angles[1], 0.0, 0.05);
 }
 
+TEST(DoorDetector, ClosedLeafReachingFarIntoTheWallStartsAtTheWallEnd)
+{
+	// gv-sim long-corridor seed 3, door 3 (hinge about (15.0, -1.29) in the map, leaf 0.9 m;
+	// vectors as gv-em-slam's final map has them): both walls reach into the doorway (the door
+	// was closed most of the run) and the merged closed state reaches 0.34 m back into the wall,
+	// more than doors.max_corner_gap; from the wall's end it is 0.96 m, like the 0.93 m open
+	// state (static: never seen through after the door closed). The closed state's end inside the
+	// wall (1.30 m from its tip) is no hinge here.
+	const std::vector<GridVector> v = {
+		vec(11.0021, -1.2979, 15.1457, -1.2984, S),  // the wall, 0.15 m into the doorway
+		vec(15.6776, -1.2997, 17.3252, -1.2968, S),  // the latch-side wall, also in the doorway
+		vec(14.8032, -1.2972, 16.1039, -1.2974, D),  // the closed state, 1.30 m
+		vec(15.0003, -1.2711, 15.1447, -2.1892, S),  // the open state, -81 deg
+		vec(14.9410, -1.0438, 14.6426, -0.7230, D),  // people in the corridor
+		vec(15.4063, -0.7215, 16.0149, -0.6025, D)};
+	const auto doors = DoorDetector().detect(v);
+	ASSERT_EQ(doors.size(), 1u);
+	EXPECT_NEAR(doors[0].hinge.x, 15.0, 0.1);
+	EXPECT_NEAR(doors[0].hinge.y, -1.29, 0.05);
+	EXPECT_NEAR(doors[0].length, 0.94, 0.05);
+	ASSERT_EQ(doors[0].angles.size(), 2u);
+	EXPECT_NEAR(doors[0].angles[0], -81.1 * M_PI / 180, 0.05);
+	EXPECT_NEAR(doors[0].angles[1], 0.0, 0.05);
+	EXPECT_EQ(doors[0].wall, 0u);
+	// the closed state is one of its leaves, so EmSlam makes it and the open state dynamic
+	EXPECT_NE(std::find(doors[0].leaves.begin(), doors[0].leaves.end(), 2u), doors[0].leaves.end());
+	EXPECT_NE(std::find(doors[0].leaves.begin(), doors[0].leaves.end(), 3u), doors[0].leaves.end());
+	// corridor-loop seed 4, door 0 (hinge about (4.50, -1.20)): the wall reaches 0.31 m into the
+	// doorway but the closed state starts at the hinge: its end inside the wall is the hinge
+	const std::vector<GridVector> w = {
+		vec(-1.2115, -1.1996, 4.8066, -1.2009, S),  // the wall
+		vec(5.1907, -1.1999, 18.8076, -1.2015, S),  // the latch-side wall
+		vec(4.4987, -1.1991, 5.4100, -1.1993, D),  // the closed state, 0.91 m
+		vec(4.5293, -1.1772, 5.0851, -1.9201, S)};  // the open state, -53 deg
+	const auto doors4 = DoorDetector().detect(w);
+	ASSERT_EQ(doors4.size(), 1u);
+	EXPECT_NEAR(doors4[0].hinge.x, 4.51, 0.05);
+	EXPECT_NEAR(doors4[0].length, 0.92, 0.05);
+	EXPECT_EQ(doors4[0].angles.size(), 2u);
+}
+
 TEST(DoorDetector, HingeInsideAWallMergedAcrossTheDoorway)
 {
 	// the wall was merged across the doorway (the door closed most of the time): the closed

@@ -126,7 +126,11 @@ bool DoorDetector::endCorner(const std::vector<GridVector>& v, size_t s, size_t 
 // Sec. 5.4, beyond the paper (the T corner).
 // A hinge inside the wall: an end of the candidate on the wall's line, between its ends. The
 // candidate leaves the wall (open state) or, dynamic, lies along it (closed state inside a wall
-// merged across the doorway: each of its ends may be the hinge).
+// merged across the doorway: each of its ends may be the hinge). A closed state along the wall
+// that runs on past the wall's end overlaps the wall by more than the corner gap: the wall merged
+// part way into the doorway, or the merged closed state reaching back into the wall (endCorner),
+// or both; the hinge is its end inside the wall or the wall's end, and both are corners (the
+// other states' corners decide which, sameDoor).
 void DoorDetector::teeCorners(const std::vector<GridVector>& v, size_t s, size_t d, std::vector<Corner>& out) const
 {
 	const double half = v[s].length() / 2;
@@ -138,8 +142,16 @@ void DoorDetector::teeCorners(const std::vector<GridVector>& v, size_t s, size_t
 		Corner c = cornerAt(v, s, d, vertex, tip);
 		c.tee = true;
 		c.alongWall = bendDeg(c.leafAngle, v[s]) < opts_.minCornerAngleDeg;
-		if (c.alongWall && !(c.dynamicLeaf && alongAndOff(v[s], tip).second <= opts_.maxTeeOffset)) continue;
+		const auto [tipAlong, tipOff] = alongAndOff(v[s], tip);
+		if (c.alongWall && !(c.dynamicLeaf && tipOff <= opts_.maxTeeOffset)) continue;
 		out.push_back(c);
+		if (c.alongWall && std::abs(tipAlong) > half)  // past the wall's end: or it starts there
+		{
+			c.vertex = tipAlong > 0 ? v[s].end() : v[s].start();
+			c.leafLength = dist(c.vertex, tip);
+			c.tee = false;
+			out.push_back(c);
+		}
 	}
 }
 

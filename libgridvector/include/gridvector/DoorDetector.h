@@ -50,7 +50,8 @@ struct Door
  * it is a state Eq. 6 could not see change (an open leaf whose place was never
  * seen through after the door closed) and is a door state all the same.
  * A dynamic leaf may continue the wall's line: the closed state (if it
- * reaches into the wall, it starts at the wall's end). Where the static wall
+ * reaches into the wall, it starts at the wall's end; reaching in by more than
+ * doors.max_corner_gap, it starts there or at its end inside the wall: a corner at each). Where the static wall
  * was merged across the doorway, the hinge lies on the wall's interior: a
  * candidate's end within doors.max_tee_offset of a wall longer than a door
  * makes a T corner (open states leave the wall, a dynamic closed state lies

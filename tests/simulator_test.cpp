@@ -170,6 +170,23 @@ TEST(Simulator, DynamicContentIsConfigurable)
 	EXPECT_GT(before, 0u);
 	EXPECT_GT(after, 0u);
 	EXPECT_THROW(simulate(small("no-such-world")), std::invalid_argument);
+	// the refused key as visit() names it, and the problem apart (gv-sim words flags and .ini keys from them)
+	using Refusal = std::pair<std::string, std::string>;  // key, problem
+	auto refusal = [](const SimOptions& o) -> Refusal {
+		try
+		{
+			o.validate();
+		}
+		catch (const SimOptionError& e)
+		{
+			return {e.key, e.problem};
+		}
+		return {};
+	};
+	EXPECT_EQ(refusal(small("no_such_world")), Refusal("world", "must be one of corridor-loop, office, long-corridor"));
+	SimOptions turn = small("office");
+	turn.turnRateDeg = 400;
+	EXPECT_EQ(refusal(turn), Refusal("turn_rate_deg", "must be in (0, 360]"));
 	SimOptions bad = small("office");
 	bad.beams = 1;
 	EXPECT_THROW(simulate(bad), std::invalid_argument);

@@ -77,13 +77,11 @@ void requireValid(const sim::SimOptions& o, const std::map<std::string, std::str
 	{
 		o.validate();
 	}
-	catch (const std::invalid_argument& e)
+	catch (const sim::SimOptionError& e)
 	{
-		const std::string m = e.what();  // "key: what is wrong", or the unknown world's message
-		const auto colon = m.find(": ");
-		const auto it = colon == std::string::npos ? given.end() : given.find(m.substr(0, colon));
-		if (it == given.end()) throw std::runtime_error(path + ": [gv_sim] " + m);
-		throw std::runtime_error(path + ": [gv_sim] " + it->first + " = '" + it->second + "' " + m.substr(colon + 2));
+		const auto it = given.find(e.key);
+		if (it == given.end()) throw std::runtime_error(path + ": [gv_sim] " + e.what());
+		throw std::runtime_error(path + ": [gv_sim] " + e.key + " = '" + it->second + "' " + e.problem);
 	}
 }
 
@@ -168,9 +166,10 @@ int main(int argc, char** argv)
 		{
 			opt.validate();
 		}
-		catch (const std::invalid_argument& e)
+		catch (const sim::SimOptionError& e)  // a flag's value: the .ini values were checked when read
 		{
-			args.fail(std::string("--") + dashed(e.what()));
+			const std::string flag = dashed(e.key);
+			args.fail("--" + flag + " " + e.problem + ", got '" + args.get(flag, "?") + "'");
 		}
 		const std::string dir = args.get("out", "gv-sim-" + opt.world + "-seed" + std::to_string(opt.seed));
 		io::OutputDirectory outDir(dir);  // fail before simulating, create when writing

@@ -119,7 +119,10 @@ expect 1 "simbool.ini: [gv_sim] doors = 'of' is not on/off, true/false, yes/no o
 printf '[gv_sim]\nlaps = 5000 ; a long run\n' > simrange.ini
 expect 1 "simrange.ini: [gv_sim] laps = '5000' must be in 0..1000" s8/sim.log -- "$B/gv-sim" --config simrange.ini --out s8 --quiet --laps 2
 printf '[gv_sim]\nworld = mars\n' > simworld.ini
-expect 1 "simworld.ini: [gv_sim] unknown world 'mars'" s8/sim.log -- "$B/gv-sim" --config simworld.ini --out s8 --quiet
+expect 1 "simworld.ini: [gv_sim] world = 'mars' must be one of corridor-loop, office, long-corridor" s8/sim.log -- "$B/gv-sim" --config simworld.ini --out s8 --quiet
+# a flag's range error names the flag as typed, underscores as dashes in the flag only
+expect 2 "gv-sim: --turn-rate-deg must be in (0, 360], got '400' (see --help)" s8/sim.log -- "$B/gv-sim" --turn-rate-deg 400 --out s8 --quiet
+expect 2 "gv-sim: --world must be one of corridor-loop, office, long-corridor, got 'mars_2' (see --help)" s8/sim.log -- "$B/gv-sim" --world mars_2 --out s8 --quiet
 printf '[gv_sim]\nscans = 20 ; short\ndoors = OFF\n' > simok.ini  # a comment after a value was refused
 "$B/gv-sim" --config simok.ini --out s9 --quiet && [ "$(grep -c '^FLASER' s9/sim.log)" -eq 20 ] || fail "gv-sim: simok.ini"
 # a config from a pipe (--config <(...)): read, not sized by seeking; a directory is named as such

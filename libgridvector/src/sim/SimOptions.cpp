@@ -1,8 +1,8 @@
 #include <gridvector/sim/BuiltinWorlds.h>
 #include <gridvector/sim/SimOptions.h>
 
+#include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace gridvector::sim
 {
@@ -10,13 +10,21 @@ namespace
 {
 void require(bool ok, const std::string& key, const std::string& what)
 {
-	if (!ok) throw std::invalid_argument(key + ": " + what);
+	if (!ok) throw SimOptionError(key, what);
+}
+
+std::string worldNames()
+{
+	std::string names;
+	for (const auto& n : builtinWorldNames()) names += (names.empty() ? "" : ", ") + n;
+	return names;
 }
 }  // namespace
 
 void SimOptions::validate() const
 {
-	makeWorld(world);  // throws for unknown names
+	const auto worlds = builtinWorldNames();
+	require(std::find(worlds.begin(), worlds.end(), world) != worlds.end(), "world", "must be one of " + worldNames());
 	require(seed >= 0, "seed", "must be >= 0");
 	require(laps >= 0 && laps <= 1000, "laps", "must be in 0..1000");
 	require(scans >= 0 && scans <= 10000000, "scans", "must be in 0..10000000");

@@ -3,10 +3,22 @@
 #pragma once
 
 #include <cstdint>
+#include <stdexcept>
 #include <string>
 
 namespace gridvector::sim
 {
+/** An option value SimOptions::validate refuses: which key (as in visit(), with underscores) and why. */
+struct SimOptionError : std::invalid_argument
+{
+	SimOptionError(const std::string& key, const std::string& problem)
+		: std::invalid_argument(key + ": " + problem), key(key), problem(problem)
+	{
+	}
+	std::string key;  //!< e.g. "turn_rate_deg"
+	std::string problem;  //!< e.g. "must be in (0, 360]"
+};
+
 struct SimOptions
 {
 	std::string world = "corridor-loop";
@@ -51,7 +63,7 @@ struct SimOptions
 		v("start_time", startTime, "timestamp of the first scan [s]");
 	}
 
-	/** Throws std::invalid_argument("key: what is wrong") for out-of-range values. */
+	/** Throws SimOptionError("key: what is wrong") for an unknown world or an out-of-range value. */
 	void validate() const;
 };
 

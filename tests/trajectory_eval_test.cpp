@@ -191,6 +191,31 @@ TEST(TrajectoryEval, TimesSharedByDifferentPosesAreMatchedByOrderWhenBothArePerS
 	EXPECT_GT(eval::evaluateTrajectory(est, ref).ateRmse, 1.0);
 }
 
+TEST(TrajectoryEval, AlignmentTransformMatchesAsGvEvalTraj)
+{
+	// gv-eval map --trajectory aligns the map by the trajectory's SE(2) alignment: where times are
+	// shared by different poses, pairing by time sent all 120 tied reference poses to one estimate pose
+	const auto ref = tiedPath(200, 120);
+	const auto est = transformed(ref, 3.0, -7.5, 1.1);  // the same path in another frame
+	const auto A = eval::alignmentTransform(est, ref, 0.05);
+	EXPECT_TRUE(A == eval::alignmentTransform(eval::matchPoses(est, ref, 0.05).pairs));
+	auto worst = [&](const TPose2D& T) {  // largest distance of an aligned estimate position from its reference
+		double w = 0;
+		for (size_t k = 0; k < ref.size(); k++)
+		{
+			const auto& e = est[k].second;
+			const double x = std::cos(T.phi) * e.x - std::sin(T.phi) * e.y + T.x, y = std::sin(T.phi) * e.x + std::cos(T.phi) * e.y + T.y;
+			w = std::max(w, std::hypot(x - ref[k].second.x, y - ref[k].second.y));
+		}
+		return w;
+	};
+	EXPECT_LT(worst(A), 1e-6);
+	EXPECT_GT(worst(eval::alignmentTransform(eval::matchByTimestamp(est, ref, 0.05))), 1.0);  // what pairing by time gave
+	auto fewer = est;
+	fewer.pop_back();
+	EXPECT_THROW(eval::alignmentTransform(fewer, ref, 0.05), std::runtime_error);  // refused as gv-eval traj refuses it
+}
+
 TEST(TrajectoryEval, TimesSharedByDifferentPosesWithoutOnePosePerScanAreAnError)
 {
 	const auto ref = tiedPath(200, 120);

@@ -40,20 +40,21 @@ io::Trajectory loadTrajectory(const std::string& path, bool logPose)
 	return t;
 }
 
-int trajectoryCommand(const io::ArgParser& a)
+/** --max-dt, checked (traj and map --trajectory). */
+double maxTimeDiff(const io::ArgParser& a)
 {
-	a.requirePositional(3, 3);
-	eval::TrajectoryEvalOptions o;
-	o.maxTimeDiff = a.getDouble("max-dt", o.maxTimeDiff);
-	if (o.maxTimeDiff <= 0) a.fail("--max-dt must be > 0");
-	const bool logPose = a.has("log-pose");
-	const auto est = loadTrajectory(a.positional()[1], logPose);
-	const auto ref = loadTrajectory(a.positional()[2], logPose);
-	const std::string files = a.positional()[1] + " vs " + a.positional()[2] + ": ";
+	const double dt = a.getDouble("max-dt", eval::TrajectoryEvalOptions().maxTimeDiff);
+	if (dt <= 0) a.fail("--max-dt must be > 0");
+	return dt;
+}
+
+/** eval::matchPoses with the files named in its errors, and a note on stderr when it matched by order. */
+eval::PosePairs matchTrajectories(const io::Trajectory& est, const io::Trajectory& ref, double maxDt, const std::string& files)
+{
 	eval::PoseMatch match;
 	try
 	{
-		match = eval::matchPoses(est, ref, o.maxTimeDiff);  // by time as evaltraj.py; by order if times are ambiguous
+		match = eval::matchPoses(est, ref, maxDt);  // by time as evaltraj.py; by order if times are ambiguous
 	}
 	catch (const std::runtime_error& e)
 	{
@@ -62,17 +63,36 @@ int trajectoryCommand(const io::ArgParser& a)
 	if (match.byOrder)
 		std::fprintf(stderr, "gv-eval: %s%s: matched by order (one pose per scan of the same log)\n", files.c_str(),
 					 match.why.c_str());
-	eval::TrajectoryMetrics m;
+	return match.pairs;
+}
+
+/** "too few matched poses (n)" from f(), naming the files and --max-dt. */
+template <class F>
+auto withTooFewNamed(F&& f, const std::string& files, double maxDt)
+{
 	try
 	{
-		m = eval::evaluatePairs(match.pairs, o);
+		return f();
 	}
-	catch (const std::runtime_error& e)  // "too few matched poses (n)": say which files
+	catch (const std::runtime_error& e)
 	{
 		char dt[32];
-		std::snprintf(dt, sizeof dt, "%g", o.maxTimeDiff);
+		std::snprintf(dt, sizeof dt, "%g", maxDt);
 		throw std::runtime_error(files + e.what() + " within --max-dt " + dt + " s");
 	}
+}
+
+int trajectoryCommand(const io::ArgParser& a)
+{
+	a.requirePositional(3, 3);
+	eval::TrajectoryEvalOptions o;
+	o.maxTimeDiff = maxTimeDiff(a);
+	const bool logPose = a.has("log-pose");
+	const auto est = loadTrajectory(a.positional()[1], logPose);
+	const auto ref = loadTrajectory(a.positional()[2], logPose);
+	const std::string files = a.positional()[1] + " vs " + a.positional()[2] + ": ";
+	const eval::PosePairs pairs = matchTrajectories(est, ref, o.maxTimeDiff, files);
+	const auto m = withTooFewNamed([&] { return eval::evaluatePairs(pairs, o); }, files, o.maxTimeDiff);
 	std::cout << (a.has("json") ? eval::formatJson(m) : eval::formatText(m)) << "\n";
 	return 0;
 }
@@ -94,9 +114,13 @@ int mapCommand(const io::ArgParser& a)
 	if (a.has("trajectory"))
 	{
 		// The map is in the estimate's frame: align it to the truth as the ATE does.
+		const double maxDt = maxTimeDiff(a);
 		const auto est = loadTrajectory(a.get("trajectory"), false);
-		const auto ref = io::readTrajectory(a.positional()[2] + "/" + sim::SimFiles::trajectory);
-		const auto T = eval::alignmentTransform(est, ref, a.getDouble("max-dt", 0.05));
+		const std::string refFile = a.positional()[2] + "/" + sim::SimFiles::trajectory;
+		const auto ref = io::readTrajectory(refFile);
+		const std::string files = a.get("trajectory") + " vs " + refFile + ": ";
+		const eval::PosePairs pairs = matchTrajectories(est, ref, maxDt, files);  // the same rule as traj
+		const auto T = withTooFewNamed([&] { return eval::alignmentTransform(pairs); }, files, maxDt);
 		vectors = eval::transformVectors(vectors, T);
 		doors = eval::transformDoors(doors, T);
 	}
@@ -139,8 +163,8 @@ int main(int argc, char** argv)
 					   "       gv-eval map VECTORS.txt TRUTHDIR [options]  (TRUTHDIR: a gv-sim output directory)");
 	args.flag("json", "print JSON instead of text");
 	args.option("max-dt", "S",
-				"traj: match poses within this time difference (default 0.05 s); where times are shared by different "
-				"poses, one pose per scan of the same log is matched by order");
+				"traj, map --trajectory: match poses within this time difference (default 0.05 s); where times are "
+				"shared by different poses, one pose per scan of the same log is matched by order");
 	args.flag("log-pose", "traj: for logs, use the poses the log attaches to scans instead of odometry");
 	args.option("trajectory", "EST", "map: the trajectory the map was built with; aligns the map to the truth like the ATE");
 	args.option("doors", "FILE", "map: detected doors 'hinge_x hinge_y length ...' to score door recall");

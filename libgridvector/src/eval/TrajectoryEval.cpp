@@ -196,11 +196,15 @@ std::string formatJson(const TrajectoryMetrics& m)
 		   ", \"rel_loop_r_deg\": " + jsonNum(m.loopRDeg) + ", \"loop_pairs\": " + std::to_string(m.loopPairs) + "}";
 }
 
-TPose2D alignmentTransform(const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff)
+TPose2D alignmentTransform(const Pairs& p)
 {
-	const Pairs p = matchByTimestamp(est, ref, maxTimeDiff);
 	if (p.size() < 3) throw std::runtime_error("too few matched poses (" + std::to_string(p.size()) + ")");
 	return bestAlignment(p);
+}
+
+TPose2D alignmentTransform(const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff)
+{
+	return alignmentTransform(matchPoses(est, ref, maxTimeDiff).pairs);
 }
 
 }  // namespace gridvector::eval

@@ -57,9 +57,12 @@ TrajectoryMetrics evaluatePairs(const PosePairs& pairs, const TrajectoryEvalOpti
 TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajectory& ref,
 									 const TrajectoryEvalOptions& opt = {});
 
-/** The rigid transform (x, y, phi) that best maps the estimate's positions onto
- * the reference's (the alignment of the ATE): p_ref ~ R(phi) p_est + (x, y).
- * Used to bring an estimated map into the truth's frame. Throws like evaluateTrajectory. */
+/** The rigid transform (x, y, phi) that best maps the estimates' positions onto the
+ * references' (the alignment of the ATE): p_ref ~ R(phi) p_est + (x, y). Used to bring an
+ * estimated map into the truth's frame. Throws std::runtime_error("too few matched poses (n)") below 3 pairs. */
+mrpt::math::TPose2D alignmentTransform(const PosePairs& pairs);
+
+/** alignmentTransform(matchPoses(est, ref, maxTimeDiff).pairs): gv-eval traj's matching rule. */
 mrpt::math::TPose2D alignmentTransform(const io::Trajectory& est, const io::Trajectory& ref,
 									   double maxTimeDiff = 0.05);
 

@@ -392,3 +392,25 @@ TEST(EStep, SplitSpansMakesTheGivenStretchesDynamic)
 	EXPECT_EQ(same[0].state, VectorState::Static);
 	EXPECT_NEAR(same[0].length(), 3.0, 1e-9);
 }
+
+TEST(EStep, PeakRowProfileReadsCellsWithoutCountsAsThePrior)
+{
+	// A merged grid's cell that no part covered has no counts (n_visit = 0); the peak-row
+	// profile reads it as a cell at the configured prior (here 0.3 of 1.5 visits, which
+	// min_visits 1 lets count), as GridVector::occupancyProfile and Eq. 6 read it.
+	GridOptions g;
+	g.priorOccupy = 0.3, g.priorVisit = 1.5;
+	EStepOptions o;
+	o.usePeakRow = true;
+	o.minVisits = 1;
+	GridVector v(TPoint2D(0, 0), TPoint2D(1, 0), g);
+	const auto atPrior = EStep(o, g).profile(v);
+	for (auto& c : v.cells()) c = GridCell{0.f, 0.f, 0.f, 0.f, 0.f};
+	const auto empty = EStep(o, g).profile(v);
+	ASSERT_EQ(empty.size(), atPrior.size());
+	for (size_t c = 0; c < empty.size(); ++c)
+	{
+		EXPECT_NEAR(atPrior[c], 0.2, 1e-6) << c;
+		EXPECT_DOUBLE_EQ(empty[c], atPrior[c]) << c;  // was 1: a column of cells without counts read as unseen
+	}
+}

@@ -152,7 +152,7 @@ TEST(VectorMerger, NoisyWallsKeepDecisionsAndTotals)
 			const TPoint2D p = m.cellCentre(r, c);
 			const auto before = eq6({&a, &b}, p);
 			if (before.second == 0) continue;
-			const double pb = before.first / before.second, pa = m.cell(r, c).occupancy();
+			const double pb = before.first / before.second, pa = m.cell(r, c).occupancy(m.priorRatio());
 			EXPECT_NEAR(pa, pb, 0.06) << r << " " << c;
 			if (std::abs(pb - 0.5) > 0.06)
 			{
@@ -259,7 +259,7 @@ TEST(VectorMerger, ShortPartIntoALongWallKeepsTheWallsGrid)
 	expectTotalsConserved({&a, &b}, r);
 	for (int k = 0; k < r.rows(); ++k)
 		for (int c = 1; c + 1 < r.cols(); ++c)
-			EXPECT_NEAR(r.cell(k, c).occupancy(), m.cell(k, c).occupancy(), 0.02) << k << " " << c;
+			EXPECT_NEAR(r.cell(k, c).occupancy(r.priorRatio()), m.cell(k, c).occupancy(m.priorRatio()), 0.02) << k << " " << c;
 	// a part that moves the line further than the tolerance gets a new grid
 	const GridVector once = wall({0, 0}, {20, 0}, 0.003, 4), far = wall({5, 0.12}, {15, 0.12}, 0.003, 3);
 	const GridVector moved = fast.merge(once, far);
@@ -327,4 +327,37 @@ TEST(VectorMerger, MergeGreedyTakesTheCandidatesThatHold)
 	expectTotalsConserved({&base, &near}, out);
 	const auto none = merger.mergeGreedy(base, {}, out);
 	EXPECT_TRUE(none.empty());
+}
+
+TEST(VectorMerger, UncoveredCellsOfTheMergedGridReadTheConfiguredPrior)
+{
+	// Two pieces of one wall 1 m apart: Algorithm 2's new grid spans the gap, whose cells no part
+	// covers and get no counts (the totals are moved, no prior added). They read the configured
+	// prior's ratio, 0.3 / 1.5, not the paper's 1/2.
+	GridVectorConfig cfg;
+	cfg.grid.priorOccupy = 0.3, cfg.grid.priorVisit = 1.5;
+	auto piece = [&](double x0, double x1) {
+		GridVector v(TPoint2D(x0, 0), TPoint2D(x1, 0), cfg.grid);
+		for (double u = x0 + 0.01; u < x1; u += 0.02) v.addEndpoint({u, 0});
+		return v;
+	};
+	const GridVector a = piece(0, 1), b = piece(2, 3);
+	const GridVector m = VectorMerger(cfg).merge(a, b);
+	EXPECT_DOUBLE_EQ(m.priorRatio(), double(0.3f) / double(1.5f));
+	expectTotalsConserved({&a, &b}, m);
+	const auto prof = m.occupancyProfile();
+	int empty = 0;
+	for (int c = 0; c < m.cols(); ++c)
+	{
+		bool counts = false;
+		for (int r = 0; r < m.rows(); ++r) counts |= m.cell(r, c).n_visit > 0;
+		if (counts) continue;
+		++empty;
+		EXPECT_DOUBLE_EQ(m.cell(m.halfWidth(), c).occupancy(m.priorRatio()), m.priorRatio()) << c;
+		EXPECT_NEAR(prof[size_t(c)], m.priorRatio(), 1e-12) << c;  // was 0.5
+	}
+	EXPECT_GE(empty, 8);  // the 1 m gap at 0.1 m, less the columns the parts' edges reach
+	double mean = 0;
+	for (double p : prof) mean += p / double(prof.size());
+	EXPECT_NEAR(m.pStatic(), mean, 1e-12);
 }

@@ -21,12 +21,12 @@ double distanceToSegment(const GridVector& v, const TPoint2D& p)
 	return std::hypot(g.x - u, g.y);
 }
 
-// Occupancy of the cell of v nearest to p (the prior's ratio where no cell covers p).
+// Occupancy of the cell of v nearest to p (the prior's ratio where no cell covers p or the cell has no counts).
 double occupancyNear(const GridVector& v, const TPoint2D& p, double prior)
 {
 	int row, col;
 	if (!v.cellOf(p, row, col)) return prior;
-	return v.cell(row, col).occupancy();
+	return v.cell(row, col).occupancy(prior);
 }
 }  // namespace
 

@@ -54,10 +54,12 @@ std::vector<double> EStep::profile(const GridVector& v) const
 		for (int r = 0; r < v.rows(); ++r)
 		{
 			const GridCell& cell = v.cell(r, c);
-			if (cell.n_visit < opts_.minVisits) continue;
+			const bool counts = cell.n_visit > 0;  // else a merged grid's uncovered cell: it reads the prior
+			const double occ = counts ? cell.n_occupy : v.priorOccupy(), visit = counts ? cell.n_visit : v.priorVisit();
+			if (visit < opts_.minVisits) continue;
 			seen = true;
 			// free observations (beams through the cell) weigh free_weight times an occupied one
-			const double occ = cell.n_occupy, freeObs = std::max(0.0, double(cell.n_visit) - occ);
+			const double freeObs = std::max(0.0, visit - occ);
 			const double p = occ / std::max(1e-9, occ + opts_.freeWeight * freeObs);
 			prof[size_t(c)] = std::max(prof[size_t(c)], p);
 		}

@@ -108,7 +108,7 @@ Group groupOf(const GridVector& v, uint32_t pos)
 			if (v.cell(r, c).n_acc > 0)
 			{
 				const TPoint2D p = v.cellMeanPoint(r, c);
-				g.moments.add(p.x, p.y, v.cell(r, c).occupancy());
+				g.moments.add(p.x, p.y, v.cell(r, c).occupancy(v.priorRatio()));
 			}
 	g.dirRef = v.direction();
 	g.extA = v.start();

@@ -135,7 +135,7 @@ std::vector<double> GridVector::occupancyProfile() const
 	for (int c = 0; c < cols_; ++c)
 	{
 		double s = 0;
-		for (int r = 0; r < rows(); ++r) s += cell(r, c).occupancy();
+		for (int r = 0; r < rows(); ++r) s += cell(r, c).occupancy(priorRatio());
 		prof[size_t(c)] = s / rows();
 	}
 	return prof;

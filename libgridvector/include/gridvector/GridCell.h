@@ -17,8 +17,10 @@ struct GridCell
 	float n_occupy = 0.5f;
 	float n_visit = 1.f;
 
-	/** Counting model: p(occupied) = n_occupy / n_visit (Sec. 3.1). */
-	double occupancy() const { return n_visit > 0 ? double(n_occupy) / n_visit : 0.5; }
+	/** Counting model: p(occupied) = n_occupy / n_visit (Sec. 3.1); `prior`, the configured
+	 * prior_occupy / prior_visit (GridVector::priorRatio()), for a cell with no counts (a cell of a
+	 * merged grid that no part covered: Algorithm 2 moves counts, it adds no prior). */
+	double occupancy(double prior) const { return n_visit > 0 ? double(n_occupy) / n_visit : prior; }
 	bool hasPoints() const { return n_acc > 0; }
 };
 

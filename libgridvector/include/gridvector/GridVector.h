@@ -69,12 +69,18 @@ class GridVector
 	/** Gravity centre (x_acc, y_acc)/n_acc of a cell in the vector's frame. */
 	mrpt::math::TPoint2D cellMeanPoint(int row, int col) const;
 
+	/** The counting model's prior (Sec. 3.1: 1/2 over 1), as the grid was made with. */
+	float priorOccupy() const { return priorOcc_; }
+	float priorVisit() const { return priorVisit_; }
+	/** prior_occupy / prior_visit: what a cell with no counts reads (GridCell::occupancy). */
+	double priorRatio() const { return double(priorOcc_) / double(priorVisit_); }
+
 	/** Algorithm 1: add a beam endpoint (vector's frame). False if outside. */
 	bool addEndpoint(const mrpt::math::TPoint2D& p);
 
 	// --- probabilities ---
 	/** Fig. 4: occupancy profile along the vector, one value per column:
-	 * the mean over the width of the cells' n_occupy / n_visit. */
+	 * the mean over the width of the cells' n_occupy / n_visit (priorRatio() where a cell has no counts). */
 	std::vector<double> occupancyProfile() const;
 	/** p(c_i = 1): the mean of the occupancy profile. */
 	double pStatic() const;

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "graphslam_ini_files.h"
 #include "test_scans.h"
 
 using namespace gridvector::graphslam;
@@ -199,12 +200,8 @@ TEST(graphslam_options, values_end_as_in_mrpts_graphslam_files)
 
 TEST(graphslam_options, every_graphslam_ini_mrpt_and_we_ship_loads_with_mrpts_values)
 {
-	std::vector<std::string> files = {std::string(GV_SOURCE_DIR) + "/share/gridvector/graphslam-gridvector.ini"};
-	const std::string mrptDir = "/usr/share/mrpt/config_files/graphslam-engine";
-	if (std::filesystem::is_directory(mrptDir))
-		for (const auto& f : std::filesystem::directory_iterator(mrptDir))
-			if (f.path().extension() == ".ini") files.push_back(f.path().string());
-	ASSERT_GE(files.size(), 2u) << "MRPT's graphslam-engine .ini files not found in " << mrptDir;
+	const auto files = gvtest::graphslamIniFiles();
+	ASSERT_GE(files.size(), 2u) << "MRPT's graphslam-engine .ini files not found in " << gvtest::mrptGraphslamIniDir;
 	for (const auto& path : files)
 	{
 		const mrpt::config::CConfigFile c(path);

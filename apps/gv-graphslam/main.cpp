@@ -5,7 +5,10 @@
 //   gv-graphslam --list-regs
 #include <gridvector/ErrorText.h>
 #include <gridvector/MapExport.h>
+#include <gridvector/graphslam/DeciderOptions.h>
 #include <gridvector/graphslam/DeciderRegistry.h>
+#include <gridvector/graphslam/EngineOptions.h>
+#include <gridvector/graphslam/IniKeys.h>
 #include <gridvector/graphslam/RunRecorder.h>
 #include <gridvector/io/ArgParser.h>
 #include <gridvector/io/AtomicFile.h>
@@ -45,24 +48,6 @@ struct Settings
 {
 	std::string ini, rawlog, groundTruth, nodeReg, edgeReg, optimizer, outDir;
 	bool finalOptimization = true, quiet = false;
-};
-
-/** [GeneralConfiguration] keys that MRPT's app reads for its outputs. */
-struct GeneralConfig
-{
-	std::string outputDir = "graphslam_results";
-	bool saveGraph = true, saveMap = true;
-	std::string graphName = "output_graph.graph", mapName = "output_map";
-
-	explicit GeneralConfig(const mrpt::config::CConfigFileBase& c)
-	{
-		const char* s = "GeneralConfiguration";
-		outputDir = c.read_string(s, "output_dir_fname", outputDir);
-		saveGraph = c.read_bool(s, "save_graph", saveGraph);
-		saveMap = c.read_bool(s, "save_map", saveMap);
-		graphName = c.read_string(s, "save_graph_fname", graphName);
-		mapName = c.read_string(s, "save_map_fname", mapName);
-	}
 };
 
 // MRPT's graphslam-engine spells its value options with one dash.
@@ -229,7 +214,7 @@ void writeGridVectorMap(const std::string& dir, const mrpt::maps::CGridVectorMap
 }
 
 /** The engine's own outputs, as MRPT's graphslam-engine app writes them. */
-void writeEngineOutputs(mrpt::graphslam::CGraphSlamEngine<graph_t>& engine, const GeneralConfig& gc,
+void writeEngineOutputs(mrpt::graphslam::CGraphSlamEngine<graph_t>& engine, const EngineOptions& gc,
 						const std::string& dir)
 {
 	engine.generateReportFiles(dir);
@@ -318,7 +303,10 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 	requireFile(s.rawlog, "rawlog");
 	if (!s.groundTruth.empty()) requireGroundTruth(s.groundTruth);
 	mrpt::config::CConfigFile ini(s.ini);
-	const GeneralConfig gc(ini);
+	EngineOptions gc;
+	gc.load(ini, s.ini);  // before the engine reads its keys loosely
+	EdgeDeciderOptions lc;  // the summary's loop-closure threshold, read as CGridVectorERD reads it
+	readSection(ini, EdgeDeciderOptions::sharedSection, false, s.ini, [&](auto&& v) { lc.visitShared(v); });
 	const GridVectorConfig mapConfig = validateGridVectorSections(ini, s);
 	const std::string dir = s.outDir.empty() ? gc.outputDir : s.outDir;
 	io::OutputDirectory outDir(dir);  // checked now, created when the engine has results
@@ -369,7 +357,7 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 				"closures), %zu map vectors; SLAM %.2f s -> %s/\n",
 				s.nodeReg.c_str(), s.edgeReg.c_str(), s.optimizer.c_str(), steps, rec.scanCount(),
 				graph.nodeCount(), graph.edgeCount(),
-				loopClosures(graph, ini.read_int("EdgeRegistrationDeciderParameters", "LC_min_nodeid_diff", 30)),
+				loopClosures(graph, lc.lcMinNodeIdDiff),
 				map.vectors().size(), slamSeconds, dir.c_str());
 	return summary;
 }

@@ -65,6 +65,11 @@ expect_error "only 2D" --3d -i "$INI" -r "$W/short.rawlog"
 printf '[GridVectorERD]\nmax_distanse = 3\n' > "$W/typo.ini"
 expect_error "typo.ini: unknown key 'max_distanse' in section \[GridVectorERD\]" \
 	-i "$W/typo.ini" -r "$W/short.rawlog" --output-dir "$W/typo"
+# [GeneralConfiguration]: MRPT's read_bool took 'ture' as false (no graph written, no word said)
+sed 's/^save_graph = true/save_graph = ture/' "$INI" > "$W/general.ini"
+expect_error "general.ini: \[GeneralConfiguration\] save_graph = 'ture' is not true or false" \
+	-i "$W/general.ini" -r "$W/short.rawlog" --output-dir "$W/general"
+[ ! -e "$W/general" ] || fail "general.ini: output directory created"
 printf 'this is not a rawlog\n' > "$W/bad.rawlog"
 expect_error "bad.rawlog" -i "$INI" -r "$W/bad.rawlog" --output-dir "$W/bad" --quiet
 echo "gv_graphslam: OK"

@@ -1,0 +1,14 @@
+#include <gridvector/graphslam/EngineOptions.h>
+#include <gridvector/graphslam/IniKeys.h>
+
+namespace gridvector::graphslam
+{
+void EngineOptions::load(const mrpt::config::CConfigFileBase& cfg, const std::string& source)
+{
+	readSection(cfg, section, false, source, [&](auto&& v) { visit(v); });
+	outputDir = cfg.read_string(section, "output_dir_fname", outputDir);
+	graphName = cfg.read_string(section, "save_graph_fname", graphName);
+	mapName = cfg.read_string(section, "save_map_fname", mapName);
+}
+
+}  // namespace gridvector::graphslam

@@ -24,7 +24,8 @@
 # Simulated worlds: gv-sim (default world, seeds 1-3, and seeds 1-2 with 15 people; the other worlds, seed 1;
 # or the rows --sim-rows names),
 # scored with gv-eval (trajectory, and the map after aligning it to the truth frame, with the
-# false-static breakdown: a second table).
+# false-static breakdown: a second table); time [s] is gv-em-slam's wall time, user [s] its user
+# CPU time (/usr/bin/time; each row's em_user.txt).
 # Prints markdown tables; each run's outputs stay in OUT_DIR.
 set -euo pipefail
 BIN=$1; OUT=$2; shift 2
@@ -130,13 +131,17 @@ fi
 
 [ $SIM -eq 1 ] || exit 0
 echo
-echo "| world | seed | people | scans | iterations | time [s] | ATE [m] | static precision | static precision (one-state doors static) | static recall | ghost share | ghost share (one-state doors static) | dynamic detection | door recall | door recall (seen swinging) |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| world | seed | people | scans | iterations | time [s] | ATE [m] | static precision | static precision (one-state doors static) | static recall | ghost share | ghost share (one-state doors static) | dynamic detection | door recall | door recall (seen swinging) | user [s] |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 sim_row() {
   local world=$1 seed=$2 people=${3:--1} d="$OUT/sim_$1_s$2_p${3:-default}"
   "$BIN/gv-sim" --world "$world" --seed "$seed" --people "$people" --out "$d/sim" --quiet
   t0=$(date +%s.%N)
-  "$BIN/gv-em-slam" --input "$d/sim/sim.log" --out "$d/em" --quiet
+  if [ -x /usr/bin/time ]; then   # user CPU time [s] of gv-em-slam, the last column
+    /usr/bin/time -f %U -o "$d/em_user.txt" "$BIN/gv-em-slam" --input "$d/sim/sim.log" --out "$d/em" --quiet
+  else
+    "$BIN/gv-em-slam" --input "$d/sim/sim.log" --out "$d/em" --quiet; echo na > "$d/em_user.txt"
+  fi
   t1=$(date +%s.%N)
   r=$("$BIN/gv-eval" traj "$d/em/trajectory.txt" "$d/sim/truth_trajectory.txt")
   "$BIN/gv-eval" map "$d/em/vectors.txt" "$d/sim" --trajectory "$d/em/trajectory.txt" \
@@ -151,7 +156,7 @@ sim_row() {
   doorseen=$(sed -n 's/^door recall (seen swinging): *\([0-9.]*\) (\([0-9]* of [0-9]*\).*/\1 (\2)/p' "$d/map_eval.txt")
   it=$(sed -n 's/.*"iterations_run": \([0-9]*\).*/\1/p' "$d/em/report.json")
   sed -n "s/^false static: *\([0-9.]*\) m off every true wall: doors seen in one state \([0-9.]*\), doors seen in two states \([0-9.]*\), moved object \([0-9.]*\), people \([0-9.]*\), other \([0-9.]*\) m/| $world | $seed | ${3:-default} | \1 | \2 | \3 | \4 | \5 | \6 |/p" "$d/map_eval.txt" >> "$OUT/false_static.md"
-  echo "| $world | $seed | ${3:-default} | $(echo "$r" | field n) | $it | $(secs "$t0" "$t1") | $(echo "$r" | field ate_rmse_m) | $prec | $prec1 | $rec | $ghost | $ghost1 | $det | $door | $doorseen |"
+  echo "| $world | $seed | ${3:-default} | $(echo "$r" | field n) | $it | $(secs "$t0" "$t1") | $(echo "$r" | field ate_rmse_m) | $prec | $prec1 | $rec | $ghost | $ghost1 | $det | $door | $doorseen | $(tail -1 "$d/em_user.txt") |"
 }
 rm -f "$OUT/false_static.md"
 for row in $SIM_ROWS; do

@@ -1,0 +1,116 @@
+#!/usr/bin/env python3
+"""Why a simulated row misses doors (doc/benchmarks.md, "Held-out simulator seeds"): the map
+around every true door, and the detected hinges that match no true door.
+
+usage: door_misses.py ROW_DIR [--all] [--radius 0.45] [--tolerance 0.3]
+  ROW_DIR: one simulated row of run_benchmarks.sh (sim/ from gv-sim, em/ from gv-em-slam,
+  map_eval.txt from gv-eval map --breakdown).
+Everything is put in the truth frame by the SE(2) alignment of em/trajectory.txt to
+sim/truth_trajectory.txt (Umeyama without scale over poses with equal timestamps, as gv-eval).
+Per true door seen in two states and matched by no detected hinge within TOLERANCE (every true
+door with --all): its map_eval.txt line (passes: leaf angle and scans per pass), the nearest
+detected hinge, and the map's vectors (state, p_static, length, ends, direction) passing within
+RADIUS of the true hinge or of the tip of the true leaf closed or open. Then every detected
+hinge farther than TOLERANCE from each true door (a false door), with its state directions."""
+import argparse, math, re
+
+
+def rows(path):
+    return [l.split() for l in open(path) if l.strip() and not l.startswith('#')]
+
+
+def trajectory(path):
+    return {round(float(f[0]), 3): (float(f[1]), float(f[2])) for f in rows(path)}
+
+
+def alignment(est, truth):
+    """Rotation and translation taking est onto truth (2-D Umeyama, no scale)."""
+    keys = [k for k in est if k in truth]
+    n = len(keys)
+    ax = sum(est[k][0] for k in keys) / n; ay = sum(est[k][1] for k in keys) / n
+    bx = sum(truth[k][0] for k in keys) / n; by = sum(truth[k][1] for k in keys) / n
+    c = sum((est[k][0] - ax) * (truth[k][0] - bx) + (est[k][1] - ay) * (truth[k][1] - by) for k in keys)
+    s = sum((est[k][0] - ax) * (truth[k][1] - by) - (est[k][1] - ay) * (truth[k][0] - bx) for k in keys)
+    th = math.atan2(s, c)
+    tx = bx - (math.cos(th) * ax - math.sin(th) * ay)
+    ty = by - (math.sin(th) * ax + math.cos(th) * ay)
+    return th, lambda x, y: (math.cos(th) * x - math.sin(th) * y + tx, math.sin(th) * x + math.cos(th) * y + ty)
+
+
+def dist(p, q):
+    return math.hypot(p[0] - q[0], p[1] - q[1])
+
+
+def seg_dist(p, a, b):
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    ll = dx * dx + dy * dy
+    u = 0.0 if ll == 0 else max(0.0, min(1.0, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / ll))
+    return dist((a[0] + u * dx, a[1] + u * dy), p)
+
+
+def load_map(d, to_truth):
+    vectors = [(to_truth(float(f[0]), float(f[1])), to_truth(float(f[2]), float(f[3])), float(f[4]), f[5])
+               for f in rows(d + '/em/vectors.txt')]
+    hinges = []
+    for line in open(d + '/em/door_states.txt'):
+        if line.startswith('#') or not line.strip():
+            continue
+        parts = line.split('|')
+        h = parts[0].split()
+        hinges.append((to_truth(float(h[0]), float(h[1])), float(h[2]), parts[-1].split()[1:]))
+    return vectors, hinges
+
+
+def door_lines(d):
+    out = {}
+    for line in open(d + '/map_eval.txt'):
+        m = re.match(r'door (\d+):', line)
+        if m:
+            out[int(m.group(1))] = line.strip()
+    return out
+
+
+def show_door(i, door, line, vectors, hinges, th, radius):
+    hx, hy, length, closed, opened = map(float, door[:5])
+    hinge = (hx, hy)
+    tips = [(hx + length * math.cos(a), hy + length * math.sin(a)) for a in (closed, opened)]
+    print(line or 'door %d' % i)
+    print('  true hinge (%.2f, %.2f), leaf %.2f m, closed %.0f deg, open %.0f deg'
+          % (hx, hy, length, math.degrees(closed), math.degrees(opened)))
+    if hinges:
+        g = min(hinges, key=lambda g: dist(g[0], hinge))
+        print('  nearest detected hinge %.2f m off: (%.2f, %.2f), leaf %.2f m, states %s deg'
+              % (dist(g[0], hinge), g[0][0], g[0][1], g[1],
+                 ' '.join('%.0f' % (float(a) + math.degrees(th)) for a in g[2])))
+    for a, b, p, state in vectors:
+        if min(seg_dist(q, a, b) for q in [hinge] + tips) <= radius:
+            print('    %-7s p=%.2f %.2f m (%.2f, %.2f)-(%.2f, %.2f) dir %4.0f deg, %.2f m from the hinge'
+                  % (state, p, dist(a, b), a[0], a[1], b[0], b[1],
+                     math.degrees(math.atan2(b[1] - a[1], b[0] - a[0])), seg_dist(hinge, a, b)))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument('row_dir')
+    ap.add_argument('--all', action='store_true')
+    ap.add_argument('--radius', type=float, default=0.45)
+    ap.add_argument('--tolerance', type=float, default=0.3)
+    a = ap.parse_args()
+    d = a.row_dir
+    th, to_truth = alignment(trajectory(d + '/em/trajectory.txt'), trajectory(d + '/sim/truth_trajectory.txt'))
+    vectors, hinges = load_map(d, to_truth)
+    lines = door_lines(d)
+    truth = rows(d + '/sim/truth_doors.txt')
+    for i, door in enumerate(truth):
+        found = any(dist(g[0], (float(door[0]), float(door[1]))) <= a.tolerance for g in hinges)
+        if a.all or (not found and 'seen in two states' in lines.get(i, '')):
+            show_door(i, door, lines.get(i), vectors, hinges, th, a.radius)
+    for g in hinges:
+        off = min(dist(g[0], (float(t[0]), float(t[1]))) for t in truth)
+        if off > a.tolerance:
+            print('false door: hinge (%.2f, %.2f), leaf %.2f m, states %s deg, %.2f m from the nearest true door'
+                  % (g[0][0], g[0][1], g[1], ' '.join('%.0f' % (float(x) + math.degrees(th)) for x in g[2]), off))
+
+
+if __name__ == '__main__':
+    main()

@@ -10,9 +10,15 @@ sim/truth_trajectory.txt (Umeyama without scale over poses with equal timestamps
 Per true door seen in two states and matched by no detected hinge within TOLERANCE (every true
 door with --all): its map_eval.txt line (passes: leaf angle and scans per pass), the nearest
 detected hinge, and the map's vectors (state, p_static, length, ends, direction) passing within
-RADIUS of the true hinge or of the tip of the true leaf closed or open. Then every detected
-hinge farther than TOLERANCE from each true door (a false door), with its state directions."""
-import argparse, math, re
+RADIUS of the true hinge or of the tip of the true leaf closed or open; and, per leaf angle the
+passes list (and closed), what the scans saw of the true leaf at that angle from the true poses
+(door_evidence.py's test along the beams): the scans in which it was present and those that saw
+through its place, as time spans [s]. Then every detected hinge farther than TOLERANCE from each
+true door (a false door), with its state directions."""
+import argparse, math, os, re, sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import door_evidence  # noqa: E402
 
 
 def rows(path):
@@ -70,6 +76,39 @@ def door_lines(d):
     return out
 
 
+def spans(ts):
+    out = []
+    for t in ts:
+        if out and t - out[-1][1] < 2.5:
+            out[-1][1] = t
+        else:
+            out.append([t, t])
+    return ' '.join('%.0f-%.0f' % tuple(s) for s in out) or '-'
+
+
+class Scans:
+    """The row's scans at the true poses, looked at along the beams (door_evidence.Looker)."""
+    def __init__(self, d):
+        scans, start, res, rmax = door_evidence.read_scans(d + '/sim/sim.log')
+        truth = rows(d + '/sim/truth_trajectory.txt')
+        self.times = [float(f[0]) - float(truth[0][0]) for f in truth]
+        self.poses = [tuple(map(float, f[1:4])) for f in truth]
+        self.look = door_evidence.Looker(scans, start, res, rmax, self.poses, 0.1)
+
+    def show_leaf(self, door, line):
+        hx, hy, length, closed, opened = map(float, door[:5])
+        angles = sorted({0.0} | {float(x) for x in re.findall(r'(\d+) deg\]', line or '')}
+                        | {float(x) for x in re.findall(r'(\d+)-\d+ deg\]', line or '')})
+        sign = 1 if opened > closed else -1
+        near = [k for k, p in enumerate(self.poses) if math.hypot(p[0] - hx, p[1] - hy) < 15]
+        d = dict(hinge=(hx, hy), length=length, angles=[closed + sign * math.radians(a) for a in angles])
+        for a, row in zip(angles, door_evidence.state_outcomes(self.look, d, near)[0]):
+            present = [self.times[k] for k, r in zip(near, row) if r == 'P']
+            through = [self.times[k] for k, r in zip(near, row) if r == 'A']
+            print('  leaf at %2.0f deg: present in %d scans (%s), seen through in %d (%s)'
+                  % (a, len(present), spans(present), len(through), spans(through)))
+
+
 def show_door(i, door, line, vectors, hinges, th, radius):
     hx, hy, length, closed, opened = map(float, door[:5])
     hinge = (hx, hy)
@@ -101,10 +140,12 @@ def main():
     vectors, hinges = load_map(d, to_truth)
     lines = door_lines(d)
     truth = rows(d + '/sim/truth_doors.txt')
+    scans = Scans(d)
     for i, door in enumerate(truth):
         found = any(dist(g[0], (float(door[0]), float(door[1]))) <= a.tolerance for g in hinges)
         if a.all or (not found and 'seen in two states' in lines.get(i, '')):
             show_door(i, door, lines.get(i), vectors, hinges, th, a.radius)
+            scans.show_leaf(door, lines.get(i))
     for g in hinges:
         off = min(dist(g[0], (float(t[0]), float(t[1]))) for t in truth)
         if off > a.tolerance:

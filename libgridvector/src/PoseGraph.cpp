@@ -1,3 +1,4 @@
+#include <gridvector/CorrelatedEdges.h>
 #include <gridvector/NormalEquations.h>
 #include <gridvector/PoseGraph.h>
 #include <gridvector/SparseCholesky.h>
@@ -110,7 +111,7 @@ double PoseGraph::updateResiduals(const std::vector<TPose2D>& x, bool robust)
 	{
 		if (!e.active) continue;
 		const Vector3d r = error(x[e.from], x[e.to], e.z);
-		e.chi2 = r.dot(e.information * r);
+		e.chi2 = e.share * r.dot(e.information * r);
 		e.scale = 1;
 		const double phi = phiByDof[std::clamp(e.dof, 1, 3)];
 		if (robust && e.kind != EdgeKind::Odometry && phi > 0)
@@ -130,10 +131,18 @@ size_t PoseGraph::rejectOutliers()
 	return n;
 }
 
+// Each edge's share of its correlated group among the active edges (1 with the key off).
+void PoseGraph::updateShares()
+{
+	const std::vector<double> w = correlatedEdgeWeights(edges_, opts_.correlatedGroupGap);
+	for (size_t k = 0; k < edges_.size(); ++k) edges_[k].share = w[k];
+}
+
 OptimizeStats PoseGraph::optimize()
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	phi_ = opts_.robustKernelWidth;
+	updateShares();
 	OptimizeStats st = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
 	// Iterative edge rejection by chi2, then re-optimisation from the robust solution.
 	for (int round = 0; round < opts_.rejectRounds; ++round)
@@ -142,6 +151,7 @@ OptimizeStats PoseGraph::optimize()
 		const size_t rej = rejectOutliers();
 		if (!rej) break;
 		st.rejected += rej;
+		updateShares();  // a group that lost members is shared by fewer
 		phi_ = opts_.robustKernelWidth;
 		const OptimizeStats again =
 			opts_.useMrptOptimizer ? optimizeMrpt() : levenbergMarquardt(opts_.maxIterations, opts_.tolerance);
@@ -219,7 +229,7 @@ void linearise(const std::vector<TPose2D>& x, const std::vector<const PoseEdge*>
 		A(2, 2) = -1;
 		B.topLeftCorner<2, 2>() = RzT * RiT;
 		B(2, 2) = 1;
-		eq.add(k, A, B, e.scale * e.scale * e.information, r);
+		eq.add(k, A, B, e.scale * e.scale * e.share * e.information, r);
 	}
 }
 }  // namespace
@@ -296,7 +306,7 @@ mrpt::graphs::CNetworkOfPoses2DInf PoseGraph::toMrpt(bool activeOnly) const
 		if (activeOnly && !e.active) continue;
 		mrpt::math::CMatrixDouble33 inf;
 		for (int r = 0; r < 3; ++r)
-			for (int c = 0; c < 3; ++c) inf(r, c) = e.information(r, c);
+			for (int c = 0; c < 3; ++c) inf(r, c) = e.share * e.information(r, c);
 		g.insertEdge(e.from, e.to, mrpt::poses::CPosePDFGaussianInf(mrpt::poses::CPose2D(e.z), inf));
 	}
 	return g;

@@ -88,6 +88,8 @@ TEST(CorrelatedEdges, RegistrationsOfOneScanAgainstConsecutiveScansShareTheirEvi
 	const auto w = correlatedEdgeWeights(edges, 1);
 	for (size_t k = 0; k < 3; ++k) EXPECT_DOUBLE_EQ(w[k], 1.0 / 3) << k;  // 8 x 11-13: one group
 	for (size_t k = 3; k < edges.size(); ++k) EXPECT_EQ(w[k], 1.0) << k;  // another pass, or not a registration
+	EXPECT_DOUBLE_EQ(correlatedEdgeWeights(edges, 1, 0.5)[0], 0.5);  // 3 / (1 + 2 x 0.5) = 1.5 edges' worth
+	EXPECT_EQ(correlatedEdgeWeights(edges, 1, 0.0)[0], 1.0);  // uncorrelated: independent edges
 	edges[1].active = false;  // 11 and 13 are 2 apart: two groups of one at gap 1, one of two at gap 2
 	EXPECT_EQ(correlatedEdgeWeights(edges, 1)[0], 1.0);
 	EXPECT_DOUBLE_EQ(correlatedEdgeWeights(edges, 2)[2], 0.5);

@@ -14,22 +14,22 @@ bool grouped(const PoseEdge& e)
 }
 
 // Runs of other ends at most `gap` apart among (other end, edge index) sorted by other end.
-void weighRuns(std::vector<std::pair<uint32_t, size_t>>& ends, int gap, std::vector<double>& w)
+void weighRuns(std::vector<std::pair<uint32_t, size_t>>& ends, int gap, double rho, std::vector<double>& w)
 {
 	std::sort(ends.begin(), ends.end());
 	for (size_t a = 0; a < ends.size();)
 	{
 		size_t b = a + 1;
 		while (b < ends.size() && ends[b].first - ends[b - 1].first <= uint32_t(gap)) ++b;
-		const double share = 1.0 / double(b - a);
+		const double share = 1.0 / (1.0 + double(b - a - 1) * rho);
 		for (size_t k = a; k < b; ++k) w[ends[k].second] = std::min(w[ends[k].second], share);
 		a = b;
 	}
 }
 }  // namespace
 
-// Covariance intersection with equal weights over each group of correlated registrations.
-std::vector<double> correlatedEdgeWeights(const std::vector<PoseEdge>& edges, int gap)
+// Each group of n correlated registrations: n / (1 + (n - 1) rho) edges' worth (rho = 1: covariance intersection).
+std::vector<double> correlatedEdgeWeights(const std::vector<PoseEdge>& edges, int gap, double rho)
 {
 	std::vector<double> w(edges.size(), 1.0);
 	if (gap <= 0) return w;
@@ -42,7 +42,7 @@ std::vector<double> correlatedEdgeWeights(const std::vector<PoseEdge>& edges, in
 		byScan[e.to].emplace_back(e.from, k);
 	}
 	for (auto& [scan, ends] : byScan)
-		if (ends.size() > 1) weighRuns(ends, gap, w);
+		if (ends.size() > 1) weighRuns(ends, gap, rho, w);
 	return w;
 }
 

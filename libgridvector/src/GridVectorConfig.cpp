@@ -187,7 +187,8 @@ void GridVectorConfig::validate() const
 			"matcher gates and sigma_floor must be > 0");
 	require(posegraph.robustKernelWidth > 0 && posegraph.maxIterations >= 1,
 			"posegraph.robust_kernel_width must be > 0, max_iterations >= 1");
-	require(posegraph.correlatedGroupGap >= 0, "posegraph.correlated_group_gap must be >= 0");
+	require(posegraph.correlatedGroupGap >= 0 && posegraph.correlatedGroupRho >= 0 && posegraph.correlatedGroupRho <= 1,
+			"posegraph.correlated_group_gap must be >= 0, correlated_group_rho in [0,1]");
 	require(posegraph.rejectRounds >= 0 && posegraph.graduationIterations >= 1,
 			"posegraph.reject_rounds must be >= 0, graduation_iterations >= 1");
 	require(posegraph.tolerance >= 0 && posegraph.graduationTolerance >= 0,

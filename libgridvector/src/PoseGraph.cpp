@@ -134,7 +134,7 @@ size_t PoseGraph::rejectOutliers()
 // Each edge's share of its correlated group among the active edges (1 with the key off).
 void PoseGraph::updateShares()
 {
-	const std::vector<double> w = correlatedEdgeWeights(edges_, opts_.correlatedGroupGap);
+	const std::vector<double> w = correlatedEdgeWeights(edges_, opts_.correlatedGroupGap, opts_.correlatedGroupRho);
 	for (size_t k = 0; k < edges_.size(); ++k) edges_[k].share = w[k];
 }
 

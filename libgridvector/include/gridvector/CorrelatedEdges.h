@@ -24,11 +24,16 @@ namespace gridvector
  * and the group is expressed in the information, so the kernel and the chi2 rejection see each
  * member's share of the evidence.
  *
+ * Between independence and covariance intersection: n measurements of one quantity with equal
+ * variance and pairwise correlation rho carry together the information of n / (1 + (n - 1) rho)
+ * of them (the variance of their mean is sigma^2 (1 + (n - 1) rho) / n), so each member's weight is
+ * 1 / (1 + (n - 1) rho): rho = 1 is covariance intersection's 1 / n, rho = 0 independence.
+ *
  * A group: the active overlap and loop edges with one end at scan s whose other ends, sorted,
- * are at most `gap` scans apart one to the next (one pass near s). Each member's weight is 1 / the
- * group's size; an edge in groups at both of its ends takes the smaller weight. Odometry and
+ * are at most `gap` scans apart one to the next (one pass near s). Each member's weight is
+ * 1 / (1 + (n - 1) rho) for a group of n; an edge in groups at both of its ends takes the smaller weight. Odometry and
  * sequential edges keep 1 (the sequential window registers every scan against the same number
  * of predecessors; its correlation is the same everywhere). gap <= 0: every weight 1. */
-std::vector<double> correlatedEdgeWeights(const std::vector<PoseEdge>& edges, int gap);
+std::vector<double> correlatedEdgeWeights(const std::vector<PoseEdge>& edges, int gap, double rho = 1.0);
 
 }  // namespace gridvector

@@ -197,6 +197,7 @@ struct PoseGraphOptions
 	double lmMinLambda = 1e-9;  //!< Nielsen's update never damps below this
 	double lmMaxLambda = 1e8;  //!< a stage gives up once rejections raised the damping above this
 	int correlatedGroupGap = 0;  //!< overlap/loop edges sharing a scan, other ends this close: one piece of evidence (0: off)
+	double correlatedGroupRho = 1.0;  //!< correlation assumed within such a group (1: covariance intersection)
 
 	template <class V>
 	void visit(V&& v)
@@ -220,7 +221,8 @@ struct PoseGraphOptions
 		v("lm_initial_lambda", lmInitialLambda, "Beyond the paper: Levenberg-Marquardt damping (added to H's diagonal) at the start of every stage");
 		v("lm_min_lambda", lmMinLambda, "Beyond the paper: Nielsen's damping update never lowers the damping below this");
 		v("lm_max_lambda", lmMaxLambda, "Beyond the paper: a stage ends once rejected steps have raised the damping above this");
-		v("correlated_group_gap", correlatedGroupGap, "Beyond the paper (Eq. 22 treats every edge as independent): overlap and loop edges with one end at the same scan whose other ends are at most this many scans apart, one to the next (one pass), share that scan's error; each one's information is divided by the group's size (covariance intersection with equal weights), so an alias of one scan registered against consecutive poses weighs as one edge; 0: off");
+		v("correlated_group_gap", correlatedGroupGap, "Beyond the paper (Eq. 22 treats every edge as independent): overlap and loop edges with one end at the same scan whose other ends are at most this many scans apart, one to the next (one pass), share that scan's error; each one's information is divided by the group's size (covariance intersection with equal weights; correlated_group_rho below 1 divides less), so an alias of one scan registered against consecutive poses weighs as one edge; 0: off");
+		v("correlated_group_rho", correlatedGroupRho, "Beyond the paper: the correlation assumed between the members of a correlated_group_gap group: a group of n carries the information of n / (1 + (n - 1) rho) independent edges (each member's divided by 1 + (n - 1) rho); 1: covariance intersection (divided by n), 0: independent (0..1)");
 	}
 };
 

@@ -435,12 +435,20 @@ LoopWindow MStep::windowOf(uint32_t from, uint32_t to) const
 	return w;
 }
 
-bool MStep::linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi) const
+// An overlap edge of this M-step not verified yet links the places only provisionally: verifyOverlaps may
+// still drop it, and then no edge would join the passes whose loop search it spared.
+MStep::Link MStep::linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi,
+						  const std::vector<EdgeKey>& unverified) const
 {
+	Link link = Link::None;
 	auto it = constraints_.lower_bound({jlo, 0});
 	for (; it != constraints_.end() && it->first.first <= jhi; ++it)
-		if (it->first.second >= ilo && it->first.second <= ihi && fixesPlace(it->second)) return true;
-	return false;
+	{
+		if (it->first.second < ilo || it->first.second > ihi || !fixesPlace(it->second)) continue;
+		if (std::find(unverified.begin(), unverified.end(), it->first) == unverified.end()) return Link::Verified;
+		link = Link::Unverified;
+	}
+	return link;
 }
 
 // A corridor-degenerate edge leaves the position along the corridor open, a rejected one
@@ -492,7 +500,7 @@ bool MStep::relabelled(uint32_t t, const Scans& scans) const
 // Loop search: for each pose, every earlier pass within the window (its nearest
 // pose and the other candidates) that no edge links to the pose's neighbourhood yet.
 std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& added,
-										MStepReport& rep)
+										MStepReport& rep, std::vector<EdgeKey>* deferred, const std::vector<EdgeKey>* only)
 {
 	std::vector<EdgeKey> fresh;
 	const double R = cfg_.mstep.loopSearchMaxRadius;
@@ -510,8 +518,15 @@ std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, 
 		if (scans[i].empty()) continue;
 		for (const auto& p : passes)
 		{
-			if (linked(p.lo > K ? p.lo - K : 0, p.hi + K, i > K ? i - K : 0, i)) continue;
+			if (only && std::find(only->begin(), only->end(), EdgeKey{p.nearest, i}) == only->end()) continue;
+			const Link link = linked(p.lo > K ? p.lo - K : 0, p.hi + K, i > K ? i - K : 0, i, added);
+			if (link == Link::Verified || (link == Link::Unverified && !deferred)) continue;
 			if (searchedNear(i, p.lo, p.hi, poses)) continue;
+			if (link == Link::Unverified)
+			{
+				deferred->push_back({p.nearest, i});  // searched if verifyOverlaps drops the edge
+				continue;
+			}
 			searched_[{p.nearest, i}] = se2::relative(poses[p.nearest], poses[i]);
 			++rep.loopSearches;
 			// the best registration against the pass's candidates (the most matched length)
@@ -525,6 +540,13 @@ std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, 
 			if (best.ok()) found.push_back(constraintOf({from, i}, EdgeKind::Loop, best, se2::relative(poses[from], poses[i])));
 		}
 	}
+	return keepLoops(found, added, rep);
+}
+
+std::vector<EdgeKey> MStep::keepLoops(std::vector<Constraint>& found, const std::vector<EdgeKey>& added,
+									  MStepReport& rep)
+{
+	std::vector<EdgeKey> fresh;
 	// added after the search, so that every pose near a found loop is searched too
 	// (its neighbours' edges then support it in verifyOverlaps)
 	for (Constraint& c : found)
@@ -547,6 +569,16 @@ std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, 
 		++rep.added;
 	}
 	return fresh;
+}
+
+// The order of the M-step: overlap edges, loop search, verifyOverlaps; a loop search that an overlap edge of
+// this step deferred runs now, where verifyOverlaps dropped the edge, and its edges are verified in turn.
+void MStep::searchDeferred(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& deferred,
+						   MStepReport& rep)
+{
+	if (deferred.empty()) return;
+	const auto found = searchLoops(scans, poses, {}, rep, nullptr, &deferred);
+	verifyOverlaps(poses, found, rep);
 }
 
 // Pairwise consistency of loop closures: a new overlap edge (j, i) is supported by
@@ -744,9 +776,11 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 	}
 	std::vector<MovedPair> moved;
 	auto fresh = addOverlaps(scans, poses, rep, cfg_.mstep.overlapReregisterMoved ? &moved : nullptr);
-	const auto found = searchLoops(scans, poses, fresh, rep);
+	std::vector<EdgeKey> deferred;
+	const auto found = searchLoops(scans, poses, fresh, rep, &deferred);
 	fresh.insert(fresh.end(), found.begin(), found.end());
 	verifyOverlaps(poses, fresh, rep);
+	searchDeferred(scans, poses, deferred, rep);
 	rep.registrationSeconds = secondsSince(t0);
 	if (!moved.empty())
 	{

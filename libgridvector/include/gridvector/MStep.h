@@ -134,9 +134,19 @@ class MStep
 										  const Scans& scans, const Poses& poses) const;
 	/** Loop search (LoopSearch) between poses near each other with no edge between
 	 * their passes yet (or only weak ones, mstep.loop_search_weak_links); returns the keys
-	 * of the edges it added or replaced (`added`: the overlap edges added in this step). */
+	 * of the edges it added or replaced (`added`: the overlap edges added in this step, not verified yet).
+	 * A pair linked only by such an edge is not searched but goes to `deferred` (pass's nearest pose, pose):
+	 * searched once verifyOverlaps has decided (searchDeferred). With `only`: just these pairs. */
 	std::vector<EdgeKey> searchLoops(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& added,
-									 MStepReport& rep);
+									 MStepReport& rep, std::vector<EdgeKey>* deferred = nullptr,
+									 const std::vector<EdgeKey>* only = nullptr);
+	/** The loop search's registrations into the graph (replacing weak edges of the same pairs); their keys. */
+	std::vector<EdgeKey> keepLoops(std::vector<Constraint>& found, const std::vector<EdgeKey>& added,
+								   MStepReport& rep);
+	/** The loop searches an unverified overlap edge deferred, for the pairs verifyOverlaps left unlinked
+	 * (it dropped the edge), their edges verified in turn. */
+	void searchDeferred(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& deferred,
+						MStepReport& rep);
 	/** Poses of an earlier pass the loop search registers against: the nearest in view, then
 	 * the members (time order) at least mstep.loop_search_candidate_spacing along the path
 	 * from every pose already taken. */
@@ -151,8 +161,14 @@ class MStep
 	LoopWindow windowOf(uint32_t from, uint32_t to) const;
 	/** Was i searched against a j in [jlo, jhi] from (nearly) its current relative pose? */
 	bool searchedNear(uint32_t i, uint32_t jlo, uint32_t jhi, const Poses& poses) const;
-	/** Is there an edge (j, i) with j in [jlo, jhi] and i in [ilo, ihi] that fixes the place? */
-	bool linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi) const;
+	/** How an edge (j, i) with j in [jlo, jhi] and i in [ilo, ihi] links the two places. */
+	enum class Link
+	{
+		None,  //!< no edge that fixes the place
+		Unverified,  //!< only edges of `unverified` (this M-step's overlap edges before verifyOverlaps)
+		Verified  //!< an edge that fixes the place and is not in `unverified`
+	};
+	Link linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi, const std::vector<EdgeKey>& unverified) const;
 	/** Does this edge fix the relative place (see mstep.loop_search_weak_links)? */
 	bool fixesPlace(const Constraint& c) const;
 	void verifyOverlaps(const Poses& poses, const std::vector<EdgeKey>& fresh, MStepReport& rep);

@@ -88,7 +88,18 @@ Corner cornerAt(const std::vector<GridVector>& v, size_t s, size_t d, const TPoi
 	c.vertex = vertex;
 	c.leafAngle = std::atan2(tip.y - vertex.y, tip.x - vertex.x);
 	c.leafLength = v[d].length();
+	c.hingeFrom = c.hingeTo = vertex;
+	c.tip = tip;
 	return c;
+}
+
+/** The point of c's hinge interval nearest p. */
+TPoint2D closestOn(const Corner& c, const TPoint2D& p)
+{
+	const double dx = c.hingeTo.x - c.hingeFrom.x, dy = c.hingeTo.y - c.hingeFrom.y, l2 = dx * dx + dy * dy;
+	if (l2 <= 0) return c.hingeFrom;
+	const double t = std::clamp(((p.x - c.hingeFrom.x) * dx + (p.y - c.hingeFrom.y) * dy) / l2, 0.0, 1.0);
+	return TPoint2D(c.hingeFrom.x + t * dx, c.hingeFrom.y + t * dy);
 }
 }  // namespace
 
@@ -115,9 +126,12 @@ bool DoorDetector::endCorner(const std::vector<GridVector>& v, size_t s, size_t 
 		const double half = v[s].length() / 2;
 		if (std::abs(alongAndOff(v[s], c.vertex).first) < half)  // the leaf overlaps the wall
 		{
-			c.vertex = alongAndOff(v[s], tip).first > 0 ? v[s].end() : v[s].start();  // it starts at the wall's end
+			if (opts_.closedLeafHiddenEnds) c.hingeFrom = c.vertex;  // the hinge lies from its end inside the wall
+			c.vertex = c.hingeTo = alongAndOff(v[s], tip).first > 0 ? v[s].end() : v[s].start();  // to the wall's end
+			if (!opts_.closedLeafHiddenEnds) c.hingeFrom = c.vertex;
 			c.leafLength = dist(c.vertex, tip);
 		}
+		closedLeafEnds(v, s, c);
 	}
 	out.push_back(c);
 	return true;
@@ -144,15 +158,53 @@ void DoorDetector::teeCorners(const std::vector<GridVector>& v, size_t s, size_t
 		c.alongWall = bendDeg(c.leafAngle, v[s]) < opts_.minCornerAngleDeg;
 		const auto [tipAlong, tipOff] = alongAndOff(v[s], tip);
 		if (c.alongWall && !(c.dynamicLeaf && tipOff <= opts_.maxTeeOffset)) continue;
-		out.push_back(c);
-		if (c.alongWall && std::abs(tipAlong) > half)  // past the wall's end: or it starts there
+		const bool pastEnd = c.alongWall && std::abs(tipAlong) > half;
+		if (!pastEnd || !opts_.closedLeafHiddenEnds)
 		{
-			c.vertex = tipAlong > 0 ? v[s].end() : v[s].start();
+			if (c.alongWall) closedLeafEnds(v, s, c);
+			out.push_back(c);
+		}
+		if (pastEnd)  // past the wall's end: it starts there (or, closed_leaf_hidden_ends, anywhere from its end inside the wall)
+		{
+			c.vertex = c.hingeTo = tipAlong > 0 ? v[s].end() : v[s].start();
+			if (!opts_.closedLeafHiddenEnds) c.hingeFrom = c.vertex;
 			c.leafLength = dist(c.vertex, tip);
 			c.tee = false;
+			closedLeafEnds(v, s, c);
 			out.push_back(c);
 		}
 	}
+}
+
+// Sec. 5.4, beyond the paper (the closed leaf's tip): a closed leaf whose tip runs into the
+// latch-side wall (a static vector on its line starting between its ends: both merged into the
+// doorway) ends anywhere from that wall's start to its tip. With doors.closed_leaf_to_latch, a
+// leaf ending short of such a wall ahead (no farther than a door's length from the vertex) was
+// seen in part and may reach that wall.
+void DoorDetector::closedLeafEnds(const std::vector<GridVector>& v, size_t s, Corner& c) const
+{
+	// along the wall's line (a doorway in one wall), towards the tip, from the vertex
+	double dx = v[s].direction().x, dy = v[s].direction().y;
+	if ((c.tip.x - c.vertex.x) * dx + (c.tip.y - c.vertex.y) * dy < 0) dx = -dx, dy = -dy;
+	const TPoint2D o = v[s].start();
+	const auto along = [&](const TPoint2D& p) { return (p.x - c.vertex.x) * dx + (p.y - c.vertex.y) * dy; };
+	const auto off = [&](const TPoint2D& p) { return std::abs((p.x - o.x) * dy - (p.y - o.y) * dx); };
+	const double tipU = along(c.tip);
+	double ahead = opts_.maxDoorLength - tipU;
+	bool hidden = false;
+	for (size_t w = 0; w < v.size(); ++w)
+	{
+		if (w == s || w == c.leaf || v[w].state != VectorState::Static || bendDeg(v[w].psi(), v[s]) >= opts_.minCornerAngleDeg)
+			continue;
+		const bool startNear = along(v[w].start()) <= along(v[w].end());
+		const TPoint2D nearEnd = startNear ? v[w].start() : v[w].end();
+		const double u0 = along(nearEnd), u1 = along(startNear ? v[w].end() : v[w].start());
+		// its near end on the wall's line, ahead of the hinge (not the wall, nor one merged across the doorway)
+		if (off(nearEnd) > opts_.maxTeeOffset || u0 <= 0) continue;
+		if (u0 < tipU && tipU <= u1) c.tipBack = opts_.closedLeafHiddenEnds ? std::max(c.tipBack, tipU - u0) : 0.0, hidden = true;
+		else if (u0 >= tipU) ahead = std::min(ahead, u0 - tipU);
+	}
+	if (opts_.closedLeafToLatch && !hidden && ahead < opts_.maxDoorLength - tipU) c.tipAhead = std::max(0.0, ahead);
 }
 
 // Sec. 5.4, beyond the paper: a closed leaf: on the wall's line, pointing away from the wall (not lying along it).
@@ -189,10 +241,37 @@ std::vector<std::pair<double, double>> DoorDetector::stateSpans(const std::vecto
 }
 
 // Sec. 5.4, Fig. 10: two corners share the static vector, their vertices are close, their leaves equally long.
+// A closed leaf overlapping the wall or the latch-side wall is compared over where its hinge and
+// tip may lie (Corner::hingeFrom/hingeTo, tipBack/tipAhead); other corners at their vertex.
 bool DoorDetector::sameDoor(const Corner& a, const Corner& b) const
 {
-	return a.wall == b.wall && dist(a.vertex, b.vertex) <= opts_.maxVertexDistance &&
-		   std::abs(a.leafLength - b.leafLength) <= opts_.maxLengthDiff;
+	if (a.wall != b.wall) return false;
+	const TPoint2D pb = closestOn(b, closestOn(a, b.vertex)), pa = closestOn(a, pb);
+	if (dist(pa, pb) > opts_.maxVertexDistance) return false;
+	const auto [a0, a1] = lengthRange(a, pb, opts_.maxVertexDistance);
+	const auto [b0, b1] = lengthRange(b, pa, opts_.maxVertexDistance);
+	return std::max(a0 - b1, b0 - a1) <= opts_.maxLengthDiff;
+}
+
+// The leaf's length [shortest, longest] from a hinge on its interval within `radius` of `near`,
+// its tip anywhere it may lie.
+std::pair<double, double> DoorDetector::lengthRange(const Corner& c, const TPoint2D& near, double radius) const
+{
+	if (!c.spansHinge()) return {c.leafLength, c.leafLength};
+	const double dx = c.hingeTo.x - c.hingeFrom.x, dy = c.hingeTo.y - c.hingeFrom.y, l = std::hypot(dx, dy);
+	double t0 = 0, t1 = l;  // the part of the interval within radius of near, from hingeFrom [m]
+	if (l > 0)
+	{
+		const double t = ((near.x - c.hingeFrom.x) * dx + (near.y - c.hingeFrom.y) * dy) / l;
+		const double off = ((near.x - c.hingeFrom.x) * dy - (near.y - c.hingeFrom.y) * dx) / l;
+		const double w = std::sqrt(std::max(0.0, radius * radius - off * off));
+		t0 = std::clamp(t - w, 0.0, l), t1 = std::clamp(t + w, 0.0, l);
+	}
+	const auto at = [&](double t) {
+		return l > 0 ? TPoint2D(c.hingeFrom.x + t / l * dx, c.hingeFrom.y + t / l * dy) : c.hingeFrom;
+	};
+	const double la = dist(at(t0), c.tip), lb = dist(at(t1), c.tip);
+	return {std::min(la, lb) - c.tipBack, std::max(la, lb) + c.tipAhead};
 }
 
 // Sec. 5.4, beyond the paper (the leaf chain).
@@ -295,6 +374,12 @@ std::vector<Door> DoorDetector::detectIn(const std::vector<GridVector>& v) const
 		wallAsState(v, door, reach, taken);
 		joinStates(v, door, reach, taken);
 		closedInWall(v, door);
+		// no door (below): with closed_leaf_hidden_ends it claims no leaf another hinge may have
+		if (opts_.closedLeafHiddenEnds && isNew && !turnsFromWall(v, door))
+		{
+			for (size_t leaf : door.leaves) taken[leaf] = false;
+			doors.pop_back();
+		}
 	}
 	doors.erase(std::remove_if(doors.begin(), doors.end(), [&](const Door& d) { return !turnsFromWall(v, d); }),
 				doors.end());
@@ -349,20 +434,44 @@ bool DoorDetector::isHinge(const std::vector<Corner>& cs, const std::vector<size
 }
 
 // Fig. 10: the door of a hinge's corners: the hinge at their vertices' mean, the leaf length
-// their mean, the first corner's wall, every corner's leaf (no states yet).
+// their mean, the first corner's wall, every corner's leaf (no states yet). A closed leaf whose
+// hinge or tip a wall hides takes its hinge nearest the other corners' vertices and its length
+// (where its tip may lie) nearest their longest leaf; the door's hinge then lies on its line.
 Door DoorDetector::hingeOf(const std::vector<Corner>& cs, const std::vector<size_t>& group) const
 {
 	Door d;
 	d.wall = cs[group[0]].wall;
+	TPoint2D seen(0, 0);
+	double seenLen = 0, n = 0;  // the longest of them: leaves seen in part are short
+	for (size_t k : group)
+		if (!cs[k].spansHinge())
+			seen.x += cs[k].vertex.x, seen.y += cs[k].vertex.y, seenLen = std::max(seenLen, cs[k].leafLength), ++n;
+	if (n > 0) seen.x /= n, seen.y /= n;
 	double len = 0;
 	for (size_t k : group)
 	{
-		d.hinge.x += cs[k].vertex.x / group.size();
-		d.hinge.y += cs[k].vertex.y / group.size();
-		len += cs[k].leafLength;
+		TPoint2D h = cs[k].vertex;
+		double l = cs[k].leafLength;
+		if (n > 0 && cs[k].spansHinge())  // its length from there nearest theirs, its tip where it may lie
+		{
+			h = closestOn(cs[k], seen);
+			const auto [l0, l1] = lengthRange(cs[k], h, 0.0);
+			l = std::clamp(seenLen, l0, l1);
+		}
+		d.hinge.x += h.x / group.size();
+		d.hinge.y += h.y / group.size();
+		len += l;
 		d.leaves.push_back(cs[k].leaf);
 	}
 	d.length = len / group.size();
+	for (size_t k : group)  // a closed leaf along the wall: the hinge lies on its line
+		if (cs[k].alongWall && cs[k].spansHinge())
+		{
+			const double ux = std::cos(cs[k].leafAngle), uy = std::sin(cs[k].leafAngle);
+			const double t = (d.hinge.x - cs[k].vertex.x) * ux + (d.hinge.y - cs[k].vertex.y) * uy;
+			d.hinge = TPoint2D(cs[k].vertex.x + t * ux, cs[k].vertex.y + t * uy);
+			break;
+		}
 	return d;
 }
 

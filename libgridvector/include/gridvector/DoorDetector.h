@@ -23,6 +23,18 @@ struct Corner
 	double leafLength = 0;
 	bool tee = false;  //!< the vertex lies on the wall's interior, not at an end
 	bool alongWall = false;  //!< the leaf continues or lies along the wall's line (a closed state)
+	/** Where the hinge may lie: [hingeFrom, hingeTo] on the wall's line. A point (both = vertex)
+	 * but for a closed leaf overlapping the wall's end, whose hinge the wall hides: anywhere from
+	 * the leaf's end inside the wall to the wall's end (vertex). */
+	mrpt::math::TPoint2D hingeFrom, hingeTo;
+	mrpt::math::TPoint2D tip;  //!< the leaf's far end
+	/** A closed leaf's tip hidden by the latch-side wall (the leaf runs into a collinear static
+	 * vector): the tip may lie this much nearer the hinge [m]. */
+	double tipBack = 0;
+	/** A closed leaf seen in part, ending short of the latch-side wall ahead on its line
+	 * (doors.closed_leaf_to_latch): the tip may lie this much farther [m]. */
+	double tipAhead = 0;
+	bool spansHinge() const { return tipBack > 0 || tipAhead > 0 || hingeFrom.x != hingeTo.x || hingeFrom.y != hingeTo.y; }
 };
 
 /** A door: a hinge and the leaf states seen (Fig. 10). */
@@ -50,8 +62,10 @@ struct Door
  * it is a state Eq. 6 could not see change (an open leaf whose place was never
  * seen through after the door closed) and is a door state all the same.
  * A dynamic leaf may continue the wall's line: the closed state (if it
- * reaches into the wall, it starts at the wall's end; reaching in by more than
- * doors.max_corner_gap, it starts there or at its end inside the wall: a corner at each). Where the static wall
+ * reaches into the wall, its hinge lies anywhere from its end inside the wall to
+ * the wall's end, and where it runs into the latch-side wall, its tip anywhere
+ * from that wall's start to its end: corners are compared, and its hinge placed,
+ * where the other corners' vertices and lengths fit best). Where the static wall
  * was merged across the doorway, the hinge lies on the wall's interior: a
  * candidate's end within doors.max_tee_offset of a wall longer than a door
  * makes a T corner (open states leave the wall, a dynamic closed state lies
@@ -96,6 +110,8 @@ class DoorDetector
 	bool endCorner(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	void teeCorners(const std::vector<GridVector>& v, size_t wall, size_t leaf, std::vector<Corner>& out) const;
 	bool sameDoor(const Corner& a, const Corner& b) const;
+	std::pair<double, double> lengthRange(const Corner& c, const mrpt::math::TPoint2D& near, double radius) const;
+	void closedLeafEnds(const std::vector<GridVector>& v, size_t s, Corner& c) const;
 	void closedInWall(const std::vector<GridVector>& v, Door& d) const;
 	void wallAsState(const std::vector<GridVector>& v, Door& d, double reach, std::vector<bool>& taken) const;
 	bool inSweep(const Door& d, const GridVector& wall, double angle) const;

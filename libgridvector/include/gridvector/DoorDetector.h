@@ -62,10 +62,12 @@ struct Door
  * it is a state Eq. 6 could not see change (an open leaf whose place was never
  * seen through after the door closed) and is a door state all the same.
  * A dynamic leaf may continue the wall's line: the closed state (if it
- * reaches into the wall, its hinge lies anywhere from its end inside the wall to
- * the wall's end, and where it runs into the latch-side wall, its tip anywhere
- * from that wall's start to its end: corners are compared, and its hinge placed,
- * where the other corners' vertices and lengths fit best). Where the static wall
+ * reaches into the wall, it starts at the wall's end; reaching in by more than
+ * doors.max_corner_gap, it starts there or at its end inside the wall: a corner at each;
+ * with doors.closed_leaf_hidden_ends its hinge lies anywhere from its end inside the wall
+ * to the wall's end and, where it runs into the latch-side wall, its tip anywhere from that
+ * wall's start to its end: corners are compared, and its hinge placed, where the other
+ * corners' vertices and lengths fit best). Where the static wall
  * was merged across the doorway, the hinge lies on the wall's interior: a
  * candidate's end within doors.max_tee_offset of a wall longer than a door
  * makes a T corner (open states leave the wall, a dynamic closed state lies

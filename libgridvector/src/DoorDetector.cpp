@@ -183,6 +183,7 @@ void DoorDetector::teeCorners(const std::vector<GridVector>& v, size_t s, size_t
 // seen in part and may reach that wall.
 void DoorDetector::closedLeafEnds(const std::vector<GridVector>& v, size_t s, Corner& c) const
 {
+	if (!opts_.closedLeafHiddenEnds && !opts_.closedLeafToLatch) return;  // the tip where it was seen
 	// along the wall's line (a doorway in one wall), towards the tip, from the vertex
 	double dx = v[s].direction().x, dy = v[s].direction().y;
 	if ((c.tip.x - c.vertex.x) * dx + (c.tip.y - c.vertex.y) * dy < 0) dx = -dx, dy = -dy;

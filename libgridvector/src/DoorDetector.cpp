@@ -187,9 +187,7 @@ void DoorDetector::closedLeafEnds(const std::vector<GridVector>& v, size_t s, Co
 	// along the wall's line (a doorway in one wall), towards the tip, from the vertex
 	double dx = v[s].direction().x, dy = v[s].direction().y;
 	if ((c.tip.x - c.vertex.x) * dx + (c.tip.y - c.vertex.y) * dy < 0) dx = -dx, dy = -dy;
-	const TPoint2D o = v[s].start();
 	const auto along = [&](const TPoint2D& p) { return (p.x - c.vertex.x) * dx + (p.y - c.vertex.y) * dy; };
-	const auto off = [&](const TPoint2D& p) { return std::abs((p.x - o.x) * dy - (p.y - o.y) * dx); };
 	const double tipU = along(c.tip);
 	double ahead = opts_.maxDoorLength - tipU;
 	bool hidden = false;
@@ -201,7 +199,7 @@ void DoorDetector::closedLeafEnds(const std::vector<GridVector>& v, size_t s, Co
 		const TPoint2D nearEnd = startNear ? v[w].start() : v[w].end();
 		const double u0 = along(nearEnd), u1 = along(startNear ? v[w].end() : v[w].start());
 		// its near end on the wall's line, ahead of the hinge (not the wall, nor one merged across the doorway)
-		if (off(nearEnd) > opts_.maxTeeOffset || u0 <= 0) continue;
+		if (alongAndOff(v[s], nearEnd).second > opts_.maxTeeOffset || u0 <= 0) continue;
 		if (u0 < tipU && tipU <= u1) c.tipBack = opts_.closedLeafHiddenEnds ? std::max(c.tipBack, tipU - u0) : 0.0, hidden = true;
 		else if (u0 >= tipU) ahead = std::min(ahead, u0 - tipU);
 	}

@@ -6,7 +6,7 @@ usage: door_misses.py ROW_DIR [--all] [--radius 0.45] [--tolerance 0.3]
   ROW_DIR: one simulated row of run_benchmarks.sh (sim/ from gv-sim, em/ from gv-em-slam,
   map_eval.txt from gv-eval map --breakdown).
 Everything is put in the truth frame by the SE(2) alignment of em/trajectory.txt to
-sim/truth_trajectory.txt (Umeyama without scale over poses with equal timestamps, as gv-eval).
+sim/truth_trajectory.txt (door_stability.py's Umeyama without scale over poses matched by timestamp).
 Per true door seen in two states and matched by no detected hinge within TOLERANCE (every true
 door with --all): its map_eval.txt line (passes: leaf angle and scans per pass), the nearest
 detected hinge, and the map's vectors (state, p_static, length, ends, direction) passing within
@@ -19,28 +19,19 @@ import argparse, math, os, re, sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import door_evidence  # noqa: E402
+import door_stability  # noqa: E402
 
 
 def rows(path):
     return [l.split() for l in open(path) if l.strip() and not l.startswith('#')]
 
 
-def trajectory(path):
-    return {round(float(f[0]), 3): (float(f[1]), float(f[2])) for f in rows(path)}
-
-
-def alignment(est, truth):
-    """Rotation and translation taking est onto truth (2-D Umeyama, no scale)."""
-    keys = [k for k in est if k in truth]
-    n = len(keys)
-    ax = sum(est[k][0] for k in keys) / n; ay = sum(est[k][1] for k in keys) / n
-    bx = sum(truth[k][0] for k in keys) / n; by = sum(truth[k][1] for k in keys) / n
-    c = sum((est[k][0] - ax) * (truth[k][0] - bx) + (est[k][1] - ay) * (truth[k][1] - by) for k in keys)
-    s = sum((est[k][0] - ax) * (truth[k][1] - by) - (est[k][1] - ay) * (truth[k][0] - bx) for k in keys)
-    th = math.atan2(s, c)
-    tx = bx - (math.cos(th) * ax - math.sin(th) * ay)
-    ty = by - (math.sin(th) * ax + math.cos(th) * ay)
-    return th, lambda x, y: (math.cos(th) * x - math.sin(th) * y + tx, math.sin(th) * x + math.cos(th) * y + ty)
+def alignment(est_path, truth_path):
+    """door_stability's SE(2) fit of the estimated trajectory onto the truth, and its rotation."""
+    f = door_stability.se2_fit(door_stability.matched_positions(door_stability.load(est_path, 4),
+                                                                door_stability.load(truth_path, 4)))
+    (x0, y0), (x1, y1) = f(0.0, 0.0), f(1.0, 0.0)
+    return math.atan2(y1 - y0, x1 - x0), f
 
 
 def dist(p, q):
@@ -136,7 +127,7 @@ def main():
     ap.add_argument('--tolerance', type=float, default=0.3)
     a = ap.parse_args()
     d = a.row_dir
-    th, to_truth = alignment(trajectory(d + '/em/trajectory.txt'), trajectory(d + '/sim/truth_trajectory.txt'))
+    th, to_truth = alignment(d + '/em/trajectory.txt', d + '/sim/truth_trajectory.txt')
     vectors, hinges = load_map(d, to_truth)
     lines = door_lines(d)
     truth = rows(d + '/sim/truth_doors.txt')

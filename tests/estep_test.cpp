@@ -393,6 +393,33 @@ TEST(EStep, SplitSpansMakesTheGivenStretchesDynamic)
 	EXPECT_NEAR(same[0].length(), 3.0, 1e-9);
 }
 
+// Sec. 4.1's minimum vector length: the pieces a door's states cut from a wall keep no static
+// sliver (vectors.txt held static vectors of 0.0002-0.043 m beside the sim rows' doors): a wall's
+// last partial column past a closed state that reaches the wall's end, a stub between two states.
+TEST(EStep, SplitSpansLeavesNoStaticSliverBesideAStretch)
+{
+	const EStep e;
+	const double minLen = EStepOptions{}.minPieceLength;
+	GridVector wall = withProfile(std::vector<double>(30, 0.95));
+	wall = GridVector::fromParts(wall.start(), TPoint2D(wall.start().x + 3.003, wall.start().y), GridOptions{}, 31,
+								 std::vector<GridCell>(size_t(3 * 31), wall.cell(1, 0)));
+	ASSERT_EQ(wall.cols(), 31);  // the last column holds 3 mm of the wall, its centre 5 cm past the end
+	wall.state = VectorState::Static;
+	const auto pieces = e.splitSpans(wall, {{2.0, 3.003}});
+	ASSERT_EQ(pieces.size(), 2u);
+	EXPECT_EQ(pieces[0].state, VectorState::Static);
+	EXPECT_NEAR(pieces[0].length(), 2.0, 1e-9);
+	EXPECT_EQ(pieces[1].state, VectorState::Dynamic);
+	EXPECT_NEAR(pieces[1].length(), 1.003, 1e-9);
+	// a 0.2 m stub between two states joins them; the 1 m and 0.5 m ends stay static
+	const auto stub = e.splitSpans(withProfile(std::vector<double>(30, 0.95)), {{1.0, 1.4}, {1.6, 2.5}});
+	ASSERT_EQ(stub.size(), 3u);
+	EXPECT_EQ(stub[1].state, VectorState::Dynamic);
+	EXPECT_NEAR(stub[1].length(), 1.5, 1e-9);
+	for (const auto& p : stub)
+		if (p.state == VectorState::Static) EXPECT_GE(p.length(), minLen - 1e-9);
+}
+
 TEST(EStep, PeakRowProfileReadsCellsWithoutCountsAsThePrior)
 {
 	// A merged grid's cell that no part covered has no counts (n_visit = 0); the peak-row

@@ -230,6 +230,24 @@ std::vector<GridVector> EStep::finalSplit(const std::vector<GridVector>& childre
 	return out;
 }
 
+// Sec. 4.1's minimum vector length for the pieces a door's states cut from a wall: a static run
+// shorter than estep.min_piece_length between or beside dynamic stretches (a wall's last partial
+// column past a closed state's end, a stub between two states) joins its dynamic neighbours.
+std::vector<ProfilePiece> EStep::joinShortStatic(const GridVector& v, std::vector<double>& staticCols) const
+{
+	std::vector<ProfilePiece> ps = pieces(staticCols, 0.5, 1);  // runs, none merged away
+	if (ps.size() <= 1) return ps;
+	bool joined = false;
+	for (const ProfilePiece& p : ps)
+	{
+		const double len = std::min(v.length(), p.last * v.resolution()) - p.first * v.resolution();
+		if (!p.isStatic || len >= opts_.minPieceLength) continue;
+		std::fill(staticCols.begin() + p.first, staticCols.begin() + p.last, 0.0);
+		joined = true;
+	}
+	return joined ? pieces(staticCols, 0.5, 1) : ps;
+}
+
 // Sec. 5.4 on Eq. 14's children: the given stretches of a vector are dynamic.
 std::vector<GridVector> EStep::splitSpans(const GridVector& v,
 										  const std::vector<std::pair<double, double>>& dynamicSpans) const
@@ -243,7 +261,7 @@ std::vector<GridVector> EStep::splitSpans(const GridVector& v,
 										[&](const auto& s) { return u >= s.first && u <= s.second; });
 		staticCols[size_t(c)] = vStatic && !inSpan ? 1.0 : 0.0;
 	}
-	const std::vector<ProfilePiece> ps = pieces(staticCols, 0.5, 1);  // runs, none merged away
+	const std::vector<ProfilePiece> ps = joinShortStatic(v, staticCols);
 	if (ps.size() <= 1)
 	{
 		GridVector one = v;

@@ -95,7 +95,8 @@ class EStep
 	 * in metres from v's start) are dynamic and the rest keeps v's state: a
 	 * column is dynamic if its centre lies in a stretch. Used for a door's
 	 * states (Sec. 5.4) lying on a static wall. One child: v itself. The
-	 * first child keeps v's id; the others get id 0 (the caller numbers them). */
+	 * first child keeps v's id; the others get id 0 (the caller numbers them). A static piece
+	 * shorter than estep.min_piece_length left beside a stretch becomes dynamic too (Sec. 4.1). */
 	std::vector<GridVector> splitSpans(const GridVector& v,
 									   const std::vector<std::pair<double, double>>& dynamicSpans) const;
 
@@ -113,6 +114,9 @@ class EStep
 	/** split() without the ids (a single piece is the parent itself, id included). */
 	std::vector<GridVector> pieceVectors(const GridVector& parent, const std::vector<ProfilePiece>& previous,
 										 std::vector<ProfilePiece>* piecesOut) const;
+	/** splitSpans' runs of `staticCols` (1 static, 0 dynamic), a cut static run shorter than
+	 * estep.min_piece_length turned dynamic (in `staticCols` too). */
+	std::vector<ProfilePiece> joinShortStatic(const GridVector& v, std::vector<double>& staticCols) const;
 	void applyHysteresis(std::vector<double>& prof, const std::vector<ProfilePiece>& previous) const;
 	GridVector subVector(const GridVector& parent, const ProfilePiece& p) const;
 

@@ -151,6 +151,38 @@ TEST(MStep, AMovedSplitPointReRegistersTheEdgesOfItsVector)
 	EXPECT_LT(emtest::ate(poses, f.truth), 0.05);
 }
 
+// Eq. 24-25, the child-id gap: a child keeps its id when the E-step moves its split point
+// (EStep::childId), so a pair whose registration failed is tried again when a static child of
+// one of its scans changed its extent (EStep::changedChildren), not only when the ids changed.
+TEST(MStep, AFailedPairIsRetriedWhenAChildOfItsScanChangedKeepingItsId)
+{
+	Fixture f = ring();
+	const size_t cut = 30;
+	const auto whole = f.scans[cut];
+	for (auto& s : f.scans[cut])  // the E-step kept only a sliver of each vector of scan 30 static
+	{
+		s.e = s.s + 0.05 * (s.e - s.s);
+		s.length *= 0.05;
+	}
+	MStep m;
+	auto poses = settle(m, f, 3);  // scan 30's pairs failed and nothing changed since
+	const auto touches = [&](const MStep& ms) {
+		return std::count_if(ms.constraints().begin(), ms.constraints().end(),
+							 [&](const auto& kc) { return kc.first.first == cut || kc.first.second == cut; });
+	};
+	ASSERT_EQ(touches(m), 0);
+	const MStepReport idle = m.run(f.scans, poses);
+	ASSERT_EQ(idle.registrations - idle.loopSearches, 0u);  // failed pairs are not retried for nothing
+	// the next E-step gives the vectors back whole under the same ids: their split points moved
+	f.scans[cut] = whole;
+	std::vector<std::vector<uint64_t>> changed(f.scans.size());
+	for (const auto& s : whole) changed[cut].push_back(s.id);
+	const MStepReport r = m.run(f.scans, poses, &changed);
+	EXPECT_GT(r.registrations - r.loopSearches, 0u);
+	EXPECT_GE(touches(m), 2 * MStepOptions{}.sequentialWindow - 1);  // its sequential pairs, both sides
+	EXPECT_LT(emtest::ate(poses, f.truth), 0.05);
+}
+
 TEST(MStep, RejectsMismatchedInput)
 {
 	MStep m;

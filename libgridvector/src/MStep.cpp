@@ -301,6 +301,21 @@ void MStep::addSequential(const Scans& scans, const Poses& poses, MStepReport& r
 		}
 }
 
+// Eq. 24-25: a scan's signature covers what its registrations depend on, its static children M_chd:
+// their ids and, since a child keeps its id when a split point moves (EStep::childId), a count of the
+// E-steps that changed one of them (changed_, compared on the exact column ranges).
+void MStep::signScans(const Scans& scans)
+{
+	childChanges_.resize(scans.size(), 0);
+	sigs_.assign(scans.size(), 1469598103934665603ULL);
+	for (size_t t = 0; t < scans.size(); ++t)
+	{
+		if (!changed_[t].empty()) ++childChanges_[t];
+		for (const auto& s : scans[t]) sigs_[t] = (sigs_[t] ^ s.id) * 1099511628211ULL;  // FNV-1a
+		sigs_[t] = (sigs_[t] ^ childChanges_[t]) * 1099511628211ULL;
+	}
+}
+
 bool MStep::retry(const EdgeKey& key, const TPose2D& rel) const
 {
 	auto f = failed_.find(key);
@@ -754,9 +769,6 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 	if (odometry_.size() != scans.size())
 		throw std::invalid_argument("MStep: odometry and scans differ in length");
 	const size_t before = constraints_.size();
-	sigs_.assign(scans.size(), 1469598103934665603ULL);
-	for (size_t t = 0; t < scans.size(); ++t)
-		for (const auto& s : scans[t]) sigs_[t] = (sigs_[t] ^ s.id) * 1099511628211ULL;  // FNV-1a
 	changed_.assign(scans.size(), {});
 	if (changedChildren)
 		for (size_t t = 0; t < scans.size() && t < changedChildren->size(); ++t)
@@ -764,6 +776,7 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 			changed_[t] = (*changedChildren)[t];
 			std::sort(changed_[t].begin(), changed_[t].end());
 		}
+	signScans(scans);
 	if (!started_)
 	{
 		chainSequential(scans, poses, rep);

@@ -187,6 +187,8 @@ class MStep
 	bool sameScans(const Constraint& c) const;
 	/** Eq. 25, Fig. 5: does a correspondence of the edge involve a vector whose children changed? */
 	bool childrenChanged(const Constraint& c) const;
+	/** sigs_ from the static children's ids and the E-steps that changed them (changed_ set first). */
+	void signScans(const Scans& scans);
 	/** Retry a failed registration? (poses moved or static vectors changed) */
 	bool retry(const EdgeKey& key, const mrpt::math::TPose2D& rel) const;
 	double overlapLength(uint32_t from, uint32_t to, const Scans& scans, const Poses& poses) const;
@@ -210,7 +212,8 @@ class MStep
 		uint64_t sigFrom = 0, sigTo = 0;
 	};
 	std::map<EdgeKey, Failure> failed_;  //!< failed registrations, retried when something changed
-	std::vector<uint64_t> sigs_;  //!< per scan: signature of its static vector ids
+	std::vector<uint64_t> sigs_;  //!< per scan: signature of its static children (signScans)
+	std::vector<uint64_t> childChanges_;  //!< per scan: E-steps that changed one of its static children
 	std::vector<std::vector<uint64_t>> changed_;  //!< per scan: sorted ids whose M_chd changed (run's argument)
 	/** Per pair: chi2 rejections since its correspondences last changed (mstep.reconsider_limit). */
 	struct Rejections

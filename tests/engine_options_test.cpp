@@ -63,6 +63,11 @@ TEST(EngineOptions, ValuesMrptWouldMisreadAreRefused)
 			  "a.ini: [GeneralConfiguration] class_verbosity = '1.5' is not an integer");
 	EXPECT_EQ(loadError("[GeneralConfiguration]\nuser_decides_about_output_dir = maybe\n"),
 			  "a.ini: [GeneralConfiguration] user_decides_about_output_dir = 'maybe' is not true or false");
+	// out of range: MRPT's engine would run with them (a negative loop-closure distance makes every edge one)
+	EXPECT_EQ(loadError("[GeneralConfiguration]\nLC_min_nodeid_diff = -5\n"),
+			  "a.ini: [GeneralConfiguration] LC_min_nodeid_diff = '-5' must be >= 1");
+	EXPECT_EQ(loadError("[GeneralConfiguration]\nclass_verbosity = 9\n"),
+			  "a.ini: [GeneralConfiguration] class_verbosity = '9' must be in 0..3");
 	// MRPT's keys this does not read stay MRPT's (the section is shared)
 	EXPECT_EQ(loadError("[GeneralConfiguration]\nsave_3DScene_fname = x.3DScene\nground_truth_file_format = rgbd_TUM\n"), "");
 }

@@ -166,6 +166,26 @@ std::string loadError(const std::string& text)
 }
 }  // namespace
 
+TEST(graphslam_options, out_of_range_values_are_errors_naming_file_section_key_value_and_why)
+{
+	const std::vector<std::pair<std::string, std::string>> nodeBad = {
+		{"[NodeRegistrationDeciderParameters]\nregistration_max_distance = -1\n",
+		 "a.ini: [NodeRegistrationDeciderParameters] registration_max_distance = '-1' must be > 0"},
+		{"[NodeRegistrationDeciderParameters]\nclass_verbosity = 7\n",
+		 "a.ini: [NodeRegistrationDeciderParameters] class_verbosity = '7' must be in 0..3"},
+		{"[GridVectorNRD]\nmax_correction_angle_deg = 400\n",
+		 "a.ini: [GridVectorNRD] max_correction_angle_deg = '400' must be in (0, 180]"}};
+	for (const auto& [text, expected] : nodeBad) EXPECT_EQ(loadError<NodeDeciderOptions>(text), expected);
+	const std::vector<std::pair<std::string, std::string>> edgeBad = {
+		{"[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 0\n",
+		 "a.ini: [EdgeRegistrationDeciderParameters] LC_min_nodeid_diff = '0' must be >= 1"},
+		{"[GridVectorERD]\nmin_matched_share = 1.5\n", "a.ini: [GridVectorERD] min_matched_share = '1.5' must be in (0, 1]"},
+		{"[GridVectorERD]\npass_gap = 0\n", "a.ini: [GridVectorERD] pass_gap = '0' must be >= 1"},
+		{"[GridVectorERD]\nsequential_window = -2\n", "a.ini: [GridVectorERD] sequential_window = '-2' must be >= 0"},
+		{"[GridVectorERD]\nsearch_angle_deg = 90\n", "a.ini: [GridVectorERD] search_angle_deg = '90' must be in [0, 90)"}};
+	for (const auto& [text, expected] : edgeBad) EXPECT_EQ(loadError<EdgeDeciderOptions>(text), expected);
+}
+
 TEST(graphslam_options, values_are_read_whole_not_by_their_first_digits)
 {
 	// MRPT's read_double / read_int / read_bool made these 0, 1 and false without a word

@@ -72,6 +72,21 @@ std::string loadError(const std::string& iniText, const std::string& source = "m
 	return "";
 }
 
+/** What loading `iniText` under `prefix` from `source` throws (any exception), "" if nothing. */
+std::string loadFailure(const std::string& iniText, const std::string& prefix = "gridvector",
+						const std::string& source = "my.ini")
+{
+	try
+	{
+		GridVectorConfig().loadFromConfigFile(mrpt::config::CConfigFileMemory(iniText), prefix, source);
+	}
+	catch (const std::exception& e)
+	{
+		return e.what();
+	}
+	return "";
+}
+
 std::string fileLoadError(const std::string& iniText)
 {
 	const std::string path = testing::TempDir() + "gv_layout_test.ini";
@@ -137,12 +152,61 @@ TEST(GridVectorConfig, NonFiniteValueSetFromCodeIsRejected)
 	}
 	catch (const std::invalid_argument& e)
 	{
-		EXPECT_NE(std::string(e.what()).find("map.hit_band"), std::string::npos) << e.what();
+		EXPECT_EQ(std::string(e.what()), "[gridvector_map] hit_band = 'inf' must be finite");
 	}
 	GridVectorConfig d;
 	d.doors.leafChainGap = std::nan("");
 	EXPECT_THROW(d.validate(), std::invalid_argument);
 	EXPECT_NO_THROW(GridVectorConfig().validate());
+}
+
+// Every key has a range; a value outside it is refused at load time, one line naming the file,
+// section, key, value and why: negative counts, zero windows, shares outside [0,1], a minimum
+// above its maximum (a representative set, one per kind and group).
+TEST(GridVectorConfig, OutOfRangeValuesAreErrorsNamingFileSectionKeyValueAndWhy)
+{
+	const std::vector<std::pair<std::string, std::string>> bad = {
+		{"[gridvector_estep]\nmin_visits = -1\n", "my.ini: [gridvector_estep] min_visits = '-1' must be >= 0"},
+		{"[gridvector_estep]\nhysteresis = 1.5\n", "my.ini: [gridvector_estep] hysteresis = '1.5' must be in [0, 1]"},
+		{"[gridvector_estep]\nfinal_static_threshold = 1.2\n",
+		 "my.ini: [gridvector_estep] final_static_threshold = '1.2' must be in [0, 1]"},
+		{"[gridvector_extraction]\nmin_range = -0.5\n", "my.ini: [gridvector_extraction] min_range = '-0.5' must be >= 0"},
+		{"[gridvector_extraction]\nbreak_angle_deg = 0\n",
+		 "my.ini: [gridvector_extraction] break_angle_deg = '0' must be in (0, 90)"},
+		{"[gridvector_extraction]\nmax_point_gap = 0\n", "my.ini: [gridvector_extraction] max_point_gap = '0' must be > 0"},
+		{"[gridvector_grid]\nprior_occupy = 2\n", "my.ini: [gridvector_grid] prior_occupy = '2' must be <= prior_visit (1)"},
+		{"[gridvector_map]\nmax_rho_diff = -0.1\n", "my.ini: [gridvector_map] max_rho_diff = '-0.1' must be >= 0"},
+		{"[gridvector_map]\nmax_direction_diff_deg = 200\n",
+		 "my.ini: [gridvector_map] max_direction_diff_deg = '200' must be in [0, 180]"},
+		{"[gridvector_matcher]\ngate_rho_final = 1\n",
+		 "my.ini: [gridvector_matcher] gate_rho_final = '1' must be <= gate_rho_initial (0.6)"},
+		{"[gridvector_matcher]\ndegenerate_ratio = 2\n", "my.ini: [gridvector_matcher] degenerate_ratio = '2' must be in [0, 1]"},
+		{"[gridvector_matcher]\nmax_rms = 0\n", "my.ini: [gridvector_matcher] max_rms = '0' must be > 0"},
+		{"[gridvector_posegraph]\nodometry_sigma_xy_min = 0\n",
+		 "my.ini: [gridvector_posegraph] odometry_sigma_xy_min = '0' must be > 0"},
+		{"[gridvector_posegraph]\nreject_chi2 = -3\n", "my.ini: [gridvector_posegraph] reject_chi2 = '-3' must be > 0"},
+		{"[gridvector_mstep]\noverlap_run_gap = 0\n", "my.ini: [gridvector_mstep] overlap_run_gap = '0' must be >= 1"},
+		{"[gridvector_mstep]\nreconsider_limit = -1\n", "my.ini: [gridvector_mstep] reconsider_limit = '-1' must be >= 0"},
+		{"[gridvector_mstep]\noverlap_min_share = 1.25\n",
+		 "my.ini: [gridvector_mstep] overlap_min_share = '1.25' must be in [0, 1]"},
+		{"[gridvector_mstep]\nrecheck_gate_factor = 0.5\n",
+		 "my.ini: [gridvector_mstep] recheck_gate_factor = '0.5' must be >= 1"},
+		{"[gridvector_mstep]\nloop_search_hypotheses = 0\n",
+		 "my.ini: [gridvector_mstep] loop_search_hypotheses = '0' must be >= 1"},
+		{"[gridvector_doors]\nmax_door_length = 0.5\n",
+		 "my.ini: [gridvector_doors] max_door_length = '0.5' must be >= min_door_length (0.6)"},
+		{"[gridvector_doors]\nmin_open_deg = 120\n", "my.ini: [gridvector_doors] min_open_deg = '120' must be in [0, 90]"},
+		{"[gridvector_occupancy]\nmargin = -1\n", "my.ini: [gridvector_occupancy] margin = '-1' must be >= 0"}};
+	for (const auto& [text, expected] : bad) EXPECT_EQ(loadFailure(text), expected);
+	mrpt::config::CConfigFileMemory ini(bad[0].first);
+	EXPECT_THROW(GridVectorConfig().loadFromConfigFile(ini), std::invalid_argument);
+	// a map's sections carry its own prefix
+	EXPECT_EQ(loadFailure("[m_00_estep]\nmin_visits = -2\n", "m_00", "map.ini"),
+			  "map.ini: [m_00_estep] min_visits = '-2' must be >= 0");
+	// the edges of the ranges are valid
+	EXPECT_EQ(loadFailure("[gridvector_estep]\nmin_visits = 0\nhysteresis = 1\n[gridvector_matcher]\ngate_rho_final = 0.6\n"
+						  "[gridvector_doors]\nmax_door_length = 0.6\n[gridvector_mstep]\nrecheck_gate_factor = 1\n"),
+			  "");
 }
 
 TEST(GridVectorConfig, DumpRoundTripsThroughIni)

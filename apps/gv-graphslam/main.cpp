@@ -290,7 +290,7 @@ GridVectorConfig validateGridVectorSections(const mrpt::config::CConfigFileBase&
 	}
 	catch (const std::invalid_argument& e)
 	{
-		throw std::runtime_error(s.ini + ": " + e.what());
+		throw std::runtime_error(e.what());  // names the file
 	}
 	return c;
 }

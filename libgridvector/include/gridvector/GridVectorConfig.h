@@ -446,8 +446,9 @@ struct GridVectorConfig
 	void dumpAsIni(std::ostream& out, const std::string& prefix = "gridvector") const;
 	/** Markdown table of every parameter (section, key, default, meaning). */
 	static std::string parameterTableMarkdown(const std::string& prefix = "gridvector");
-	/** Throws std::invalid_argument if a value is out of its valid range. */
-	void validate() const;
+	/** Throws std::invalid_argument "[<prefix>_group] key = 'value' must be ..." for the first value out of its
+	 * valid range (a negative count, a zero window, a share outside [0,1], a minimum above its maximum). */
+	void validate(const std::string& prefix = "gridvector") const;
 
 	// --- by-name access (the .gvmap config record, report.json, profiles) ---
 	/** Every key as "group.key" with its value (ints and bools as 0/1), in visit() order. */

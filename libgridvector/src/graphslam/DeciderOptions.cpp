@@ -38,11 +38,13 @@ void NodeDeciderOptions::load(const mrpt::config::CConfigFileBase& cfg, const st
 {
 	loadBoth(*this, cfg, source);
 	const std::string s = sharedSection, own = ownSection;
-	require(registrationMaxDistance > 0, source, s, "registration_max_distance must be > 0");
-	require(registrationMaxAngleDeg > 0, source, s, "registration_max_angle must be > 0");
-	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity must be in 0..3");
-	require(maxCorrectionDistance > 0, source, own, "max_correction_distance must be > 0");
-	require(maxCorrectionAngleDeg > 0, source, own, "max_correction_angle_deg must be > 0");
+	require(registrationMaxDistance > 0, source, s, "registration_max_distance", registrationMaxDistance, "must be > 0");
+	require(registrationMaxAngleDeg > 0 && registrationMaxAngleDeg <= 180, source, s, "registration_max_angle",
+			registrationMaxAngleDeg, "must be in (0, 180]");
+	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity", classVerbosity, "must be in 0..3");
+	require(maxCorrectionDistance > 0, source, own, "max_correction_distance", maxCorrectionDistance, "must be > 0");
+	require(maxCorrectionAngleDeg > 0 && maxCorrectionAngleDeg <= 180, source, own, "max_correction_angle_deg",
+			maxCorrectionAngleDeg, "must be in (0, 180]");
 }
 
 void NodeDeciderOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string&)
@@ -57,17 +59,20 @@ void EdgeDeciderOptions::load(const mrpt::config::CConfigFileBase& cfg, const st
 {
 	loadBoth(*this, cfg, source);
 	const std::string s = sharedSection, own = ownSection;
-	require(lcMinNodeIdDiff >= 1, source, s, "LC_min_nodeid_diff must be >= 1");
-	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity must be in 0..3");
-	require(maxDistance > 0, source, own, "max_distance must be > 0");
-	require(sequentialWindow >= 0, source, own, "sequential_window must be >= 0");
-	require(passGap >= 1, source, own, "pass_gap must be >= 1");
-	require(maxLoopCandidates >= 0, source, own, "max_loop_candidates must be >= 0");
-	require(minMatchedShare > 0 && minMatchedShare <= 1, source, own, "min_matched_share must be in (0, 1]");
-	require(maxCorrectionDistance > 0, source, own, "max_correction_distance must be > 0");
-	require(maxCorrectionAngleDeg > 0, source, own, "max_correction_angle_deg must be > 0");
-	require(searchOffset >= 0, source, own, "search_offset must be >= 0");
-	require(searchAngleDeg >= 0 && searchAngleDeg < 90, source, own, "search_angle_deg must be in [0, 90)");
+	require(lcMinNodeIdDiff >= 1, source, s, "LC_min_nodeid_diff", lcMinNodeIdDiff, "must be >= 1");
+	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity", classVerbosity, "must be in 0..3");
+	require(maxDistance > 0, source, own, "max_distance", maxDistance, "must be > 0");
+	require(sequentialWindow >= 0, source, own, "sequential_window", sequentialWindow, "must be >= 0");
+	require(passGap >= 1, source, own, "pass_gap", passGap, "must be >= 1");
+	require(maxLoopCandidates >= 0, source, own, "max_loop_candidates", maxLoopCandidates, "must be >= 0");
+	require(minMatchedShare > 0 && minMatchedShare <= 1, source, own, "min_matched_share", minMatchedShare,
+			"must be in (0, 1]");
+	require(maxCorrectionDistance > 0, source, own, "max_correction_distance", maxCorrectionDistance, "must be > 0");
+	require(maxCorrectionAngleDeg > 0 && maxCorrectionAngleDeg <= 180, source, own, "max_correction_angle_deg",
+			maxCorrectionAngleDeg, "must be in (0, 180]");
+	require(searchOffset >= 0, source, own, "search_offset", searchOffset, "must be >= 0");
+	require(searchAngleDeg >= 0 && searchAngleDeg < 90, source, own, "search_angle_deg", searchAngleDeg,
+			"must be in [0, 90)");
 }
 
 void EdgeDeciderOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string&)

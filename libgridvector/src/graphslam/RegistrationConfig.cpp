@@ -15,7 +15,7 @@ GridVectorConfig loadRegistrationConfig(const mrpt::config::CConfigFileBase& cfg
 	}
 	catch (const std::invalid_argument& e)
 	{
-		throw std::runtime_error(sourceName + ": " + e.what());
+		throw std::runtime_error(e.what());  // names the source
 	}
 	return out;
 }

@@ -9,6 +9,7 @@
 #include <cctype>
 #include <ostream>
 #include <set>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -82,10 +83,15 @@ void markdownRows(std::ostream& out, const std::string& section, Visit&& visit)
 	});
 }
 
-/** Throws "source: [section] what" unless ok. */
-inline void require(bool ok, const std::string& source, const std::string& section, const std::string& what)
+/** Throws "source: [section] key = 'value' why" unless ok. */
+template <class T>
+void require(bool ok, const std::string& source, const std::string& section, const char* key, const T& value,
+			 const std::string& why)
 {
-	if (!ok) throw std::runtime_error(source + ": [" + section + "] " + what);
+	if (ok) return;
+	std::ostringstream v;
+	detail::printValue(v, value);
+	throw std::runtime_error(source + ": [" + section + "] " + key + " = '" + v.str() + "' " + why);
 }
 
 }  // namespace gridvector::graphslam

@@ -101,7 +101,7 @@ TEST(graphslam_options, reads_shared_and_own_sections)
 	EXPECT_DOUBLE_EQ(n.maxCorrectionDistance, 0.8);
 	EXPECT_FALSE(n.useOdometry);
 	EdgeDeciderOptions e;
-	e.load(ini("[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 12\n"
+	e.load(ini("[GeneralConfiguration]\nLC_min_nodeid_diff = 12\n"
 			   "[GridVectorERD]\nmax_distance = 4.5\nsequential_window = 5\npass_gap = 7\n"
 			   "search_offset = 0\n"),
 		   "t.ini");
@@ -116,9 +116,35 @@ TEST(graphslam_options, shared_sections_tolerate_other_deciders_keys)
 {
 	EdgeDeciderOptions e;
 	EXPECT_NO_THROW(e.load(ini("[EdgeRegistrationDeciderParameters]\nICP_goodness_thresh = 0.7\n"
-							   "ICP_max_distance = 2\nLC_min_nodeid_diff = 20\n"),
+							   "ICP_max_distance = 2\nclass_verbosity = 2\n"),
 						   "t.ini"));
-	EXPECT_EQ(e.lcMinNodeIdDiff, 20);
+	EXPECT_EQ(e.classVerbosity, 2);
+}
+
+// MRPT 2.5's edge deciders (CICPCriteriaERD, CLoopCloserERD) and CLevMarqGSO read LC_min_nodeid_diff
+// from [GeneralConfiguration] only; CGridVectorERD reads it there too, so swapping the edge decider
+// does not change which edges are loop closures. A different value in the deciders' section (MRPT's
+// odometry_2DRangeScans.ini has 30 there, 50 in [GeneralConfiguration]) is reported, not used.
+TEST(graphslam_options, lc_min_nodeid_diff_is_read_where_mrpts_deciders_read_it)
+{
+	EdgeDeciderOptions e;
+	e.load(ini("[GeneralConfiguration]\nLC_min_nodeid_diff = 50\n"
+			   "[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 30\n"),
+		   "t.ini");
+	EXPECT_EQ(e.lcMinNodeIdDiff, 50);
+	EXPECT_EQ(e.ignoredKeyNote,
+			  "t.ini: [EdgeRegistrationDeciderParameters] LC_min_nodeid_diff = 30 is not used: MRPT's edge deciders, "
+			  "CLevMarqGSO and CGridVectorERD read it from [GeneralConfiguration] (50)");
+	EdgeDeciderOptions alone;  // only in the deciders' section: MRPT's default 30 holds
+	alone.load(ini("[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 12\n"), "t.ini");
+	EXPECT_EQ(alone.lcMinNodeIdDiff, 30);
+	EXPECT_NE(alone.ignoredKeyNote.find("= 12 is not used"), std::string::npos) << alone.ignoredKeyNote;
+	EdgeDeciderOptions same;  // the same value in both: nothing to report
+	same.load(ini("[GeneralConfiguration]\nLC_min_nodeid_diff = 20\n"
+				  "[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 20\n"),
+			  "t.ini");
+	EXPECT_EQ(same.lcMinNodeIdDiff, 20);
+	EXPECT_EQ(same.ignoredKeyNote, "");
 }
 
 TEST(graphslam_options, unknown_own_key_names_file_section_and_key)
@@ -177,8 +203,8 @@ TEST(graphslam_options, out_of_range_values_are_errors_naming_file_section_key_v
 		 "a.ini: [GridVectorNRD] max_correction_angle_deg = '400' must be in (0, 180]"}};
 	for (const auto& [text, expected] : nodeBad) EXPECT_EQ(loadError<NodeDeciderOptions>(text), expected);
 	const std::vector<std::pair<std::string, std::string>> edgeBad = {
-		{"[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 0\n",
-		 "a.ini: [EdgeRegistrationDeciderParameters] LC_min_nodeid_diff = '0' must be >= 1"},
+		{"[GeneralConfiguration]\nLC_min_nodeid_diff = 0\n",
+		 "a.ini: [GeneralConfiguration] LC_min_nodeid_diff = '0' must be >= 1"},
 		{"[GridVectorERD]\nmin_matched_share = 1.5\n", "a.ini: [GridVectorERD] min_matched_share = '1.5' must be in (0, 1]"},
 		{"[GridVectorERD]\npass_gap = 0\n", "a.ini: [GridVectorERD] pass_gap = '0' must be >= 1"},
 		{"[GridVectorERD]\nsequential_window = -2\n", "a.ini: [GridVectorERD] sequential_window = '-2' must be >= 0"},
@@ -206,7 +232,7 @@ TEST(graphslam_options, values_are_read_whole_not_by_their_first_digits)
 TEST(graphslam_options, values_end_as_in_mrpts_graphslam_files)
 {
 	EdgeDeciderOptions e;
-	e.load(ini("[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 12;\nclass_verbosity = 0 // debug\n"
+	e.load(ini("[GeneralConfiguration]\nLC_min_nodeid_diff = 12;\n[EdgeRegistrationDeciderParameters]\nclass_verbosity = 0 // debug\n"
 			   "[GridVectorERD]\nmax_distance = 4.5;\nsearch_offset = 0.25 ; m\nmatch_previous_node = true # x\n"
 			   "pass_gap = 7; once a pass\n"),
 		   "t.ini");
@@ -234,7 +260,7 @@ TEST(graphslam_options, every_graphslam_ini_mrpt_and_we_ship_loads_with_mrpts_va
 		EXPECT_EQ(n.registrationMaxDistance, c.read_double(ns, "registration_max_distance", nDefault.registrationMaxDistance)) << path;
 		EXPECT_EQ(n.registrationMaxAngleDeg, c.read_double(ns, "registration_max_angle", nDefault.registrationMaxAngleDeg)) << path;
 		EXPECT_EQ(n.classVerbosity, c.read_int(ns, "class_verbosity", nDefault.classVerbosity)) << path;
-		EXPECT_EQ(e.lcMinNodeIdDiff, c.read_int(es, "LC_min_nodeid_diff", eDefault.lcMinNodeIdDiff)) << path;
+		EXPECT_EQ(e.lcMinNodeIdDiff, c.read_int("GeneralConfiguration", "LC_min_nodeid_diff", eDefault.lcMinNodeIdDiff)) << path;
 		EXPECT_EQ(e.classVerbosity, c.read_int(es, "class_verbosity", eDefault.classVerbosity)) << path;
 	}
 }

@@ -33,6 +33,7 @@ void CGridVectorERD::loadParams(const std::string& source_fname)
 void CGridVectorERD::loadOptions(const mrpt::config::CConfigFileBase& cfg, const std::string& sourceName)
 {
 	params_.load(cfg, sourceName);
+	if (!params_.ignoredKeyNote.empty()) MRPT_LOG_WARN(params_.ignoredKeyNote);
 	cfg_ = loadRegistrationConfig(cfg, sourceName);
 	extractor_ = VectorExtractor(cfg_.extraction, cfg_.grid);
 	matcher_ = VectorMatcher(cfg_.matcher);

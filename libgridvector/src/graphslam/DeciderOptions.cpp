@@ -2,6 +2,7 @@
 #include <gridvector/graphslam/IniKeys.h>
 
 #include <sstream>
+#include <type_traits>
 
 namespace gridvector::graphslam
 {
@@ -18,6 +19,8 @@ template <class Opts>
 void dumpBoth(const Opts& opts, std::ostream& out)
 {
 	Opts o = opts;
+	if constexpr (std::is_same_v<Opts, EdgeDeciderOptions>)
+		dumpSection(out, Opts::engineSection, [&](auto&& v) { o.visitEngine(v); });
 	dumpSection(out, Opts::sharedSection, [&](auto&& v) { o.visitShared(v); });
 	dumpSection(out, Opts::ownSection, [&](auto&& v) { o.visitOwn(v); });
 }
@@ -28,9 +31,25 @@ std::string tableOf()
 	Opts o;
 	std::ostringstream out;
 	out << "| section | key | default | meaning |\n|---|---|---|---|\n";
+	if constexpr (std::is_same_v<Opts, EdgeDeciderOptions>)
+		markdownRows(out, Opts::engineSection, [&](auto&& v) { o.visitEngine(v); });
 	markdownRows(out, Opts::sharedSection, [&](auto&& v) { o.visitShared(v); });
 	markdownRows(out, Opts::ownSection, [&](auto&& v) { o.visitOwn(v); });
 	return out.str();
+}
+
+// LC_min_nodeid_diff where no MRPT component reads it: MRPT's own files hold one there
+// (odometry_2DRangeScans.ini: 30 there, 50 in [GeneralConfiguration]), so a note, not an error.
+std::string ignoredLcNote(const mrpt::config::CConfigFileBase& cfg, const std::string& source, int used)
+{
+	const char* key = "LC_min_nodeid_diff";
+	if (!cfg.keyExists(EdgeDeciderOptions::sharedSection, key)) return {};
+	int there = used;
+	detail::readKey(cfg, EdgeDeciderOptions::sharedSection, key, there, source);
+	if (there == used) return {};
+	return source + ": [" + EdgeDeciderOptions::sharedSection + "] " + key + " = " + std::to_string(there) +
+		   " is not used: MRPT's edge deciders, CLevMarqGSO and CGridVectorERD read it from [" +
+		   EdgeDeciderOptions::engineSection + "] (" + std::to_string(used) + ")";
 }
 }  // namespace
 
@@ -57,9 +76,11 @@ std::string NodeDeciderOptions::markdownTable() { return tableOf<NodeDeciderOpti
 
 void EdgeDeciderOptions::load(const mrpt::config::CConfigFileBase& cfg, const std::string& source)
 {
+	readSection(cfg, engineSection, false, source, [&](auto&& v) { visitEngine(v); });
 	loadBoth(*this, cfg, source);
+	ignoredKeyNote = ignoredLcNote(cfg, source, lcMinNodeIdDiff);
 	const std::string s = sharedSection, own = ownSection;
-	require(lcMinNodeIdDiff >= 1, source, s, "LC_min_nodeid_diff", lcMinNodeIdDiff, "must be >= 1");
+	require(lcMinNodeIdDiff >= 1, source, engineSection, "LC_min_nodeid_diff", lcMinNodeIdDiff, "must be >= 1");
 	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity", classVerbosity, "must be in 0..3");
 	require(maxDistance > 0, source, own, "max_distance", maxDistance, "must be > 0");
 	require(sequentialWindow >= 0, source, own, "sequential_window", sequentialWindow, "must be >= 0");

@@ -54,15 +54,22 @@ struct NodeDeciderOptions : public mrpt::config::CLoadableOptions
 };
 
 /** CGridVectorERD options: `[EdgeRegistrationDeciderParameters]` (shared
- * with MRPT's edge deciders, tolerant) and `[GridVectorERD]` (strict). */
+ * with MRPT's edge deciders, tolerant) and `[GridVectorERD]` (strict); `LC_min_nodeid_diff`
+ * from `[GeneralConfiguration]`, where MRPT 2.5's edge deciders (CICPCriteriaERD,
+ * CLoopCloserERD) and CLevMarqGSO read it, so all of them count the same edges as loop closures. */
 struct EdgeDeciderOptions : public mrpt::config::CLoadableOptions
 {
 	static constexpr const char* sharedSection = "EdgeRegistrationDeciderParameters";
 	static constexpr const char* ownSection = "GridVectorERD";
+	static constexpr const char* engineSection = "GeneralConfiguration";
 
-	// [EdgeRegistrationDeciderParameters]
+	// [GeneralConfiguration]
 	int lcMinNodeIdDiff = 30;
+	// [EdgeRegistrationDeciderParameters]
 	int classVerbosity = 1;
+	/** After load(): a note when [EdgeRegistrationDeciderParameters] holds an LC_min_nodeid_diff
+	 * other than the one read (no MRPT component reads it there); empty otherwise. */
+	std::string ignoredKeyNote;
 
 	// [GridVectorERD]
 	double maxDistance = 3.0;  //!< [m]
@@ -77,9 +84,13 @@ struct EdgeDeciderOptions : public mrpt::config::CLoadableOptions
 	double searchAngleDeg = 0.0;  //!< [deg]
 
 	template <class V>
+	void visitEngine(V&& v)
+	{
+		v("LC_min_nodeid_diff", lcMinNodeIdDiff, "An edge between nodes whose IDs differ by more than this counts as a loop closure (read here, as MRPT's edge deciders and CLevMarqGSO read it; a different value in [EdgeRegistrationDeciderParameters] is reported and not used)");
+	}
+	template <class V>
 	void visitShared(V&& v)
 	{
-		v("LC_min_nodeid_diff", lcMinNodeIdDiff, "An edge between nodes whose IDs differ by more than this counts as a loop closure");
 		v("class_verbosity", classVerbosity, "Logger level: 0 debug, 1 info, 2 warn, 3 error");
 	}
 	template <class V>

@@ -135,7 +135,10 @@ void iterationJson(std::ostream& o, const EmIteration& it)
 	  << ", \"changed_vectors\": " << it.changedVectors << ", \"m_seconds\": " << it.mSeconds
 	  << ", \"registration_seconds\": " << m.registrationSeconds
 	  << ", \"optimisation_seconds\": " << m.optimisation.seconds << ", \"e_seconds\": " << it.eSeconds
-	  << ", \"wipe_seconds\": " << it.wipeSeconds << ", \"classify_seconds\": " << it.classifySeconds << "}";
+	  << ", \"wipe_seconds\": " << it.wipeSeconds << ", \"classify_seconds\": " << it.classifySeconds
+	  << ", \"doors\": " << it.doors.doors << ", \"doors_found\": " << it.doors.found
+	  << ", \"door_vectors_excluded\": " << it.doors.excluded << ", \"door_vectors_cut\": " << it.doors.cut
+	  << ", \"door_seconds\": " << it.doors.seconds << "}";
 }
 }  // namespace
 

@@ -42,10 +42,10 @@ void printIteration(const EmIteration& it)
 	std::fprintf(stderr,
 				 "iteration %d: %5.1f%% constraints changed; %zu edges (%zu sequential, %zu overlap, %zu loop), "
 				 "%zu registrations, %zu rejected; %zu static / %zu dynamic vectors (%zu changed); "
-				 "M %.2f s, E %.2f s\n",
+				 "%zu doors (%zu vectors kept out, %zu cut); M %.2f s, E %.2f s\n",
 				 it.index, 100 * it.changedShare, m.active, m.sequential, m.overlap, m.loop, m.registrations,
 				 m.optimisation.rejected + m.unverified, it.staticVectors, it.dynamicVectors, it.changedVectors,
-				 it.mSeconds, it.eSeconds);
+				 it.doors.doors, it.doors.excluded, it.doors.cut, it.mSeconds, it.eSeconds);
 }
 
 // Debugging aid: GV_EM_DEBUG_DIR=dir writes dir/traj_<iteration>.txt after each iteration.

@@ -1,4 +1,5 @@
 #include <gridvector/DoorDetector.h>
+#include <gridvector/DoorExclusion.h>
 #include <gridvector/EmSlam.h>
 #include <gridvector/SE2.h>
 
@@ -159,6 +160,7 @@ void keepLastSplit(EmIteration& it, const EmIteration& last)
 {
 	it.staticVectors = last.staticVectors, it.dynamicVectors = last.dynamicVectors;
 	it.staticLength = last.staticLength, it.dynamicLength = last.dynamicLength;
+	it.doors = last.doors;
 }
 
 // Sec. 4.1: the E-step (Eq. 14-15) on the map of the trajectory (Eq. 4 unmerged, Eq. 8), its
@@ -197,16 +199,15 @@ void finalMap(EmResult& res, const EStep& estep, const std::vector<TPose2D>& ePo
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	rebase(res.perScan, ePoses, res.poses);
-	res.perScan = estep.finalSplit(res.perScan);  // Eq. 14 on the converged map
-	std::vector<GridVector> st, dy;
-	for (const auto& v : res.perScan) (v.state == VectorState::Dynamic ? dy : st).push_back(v);
-	res.staticMap = estep.cutUnobserved(GlobalMap::mergeAll(st, cfg), st);
-	res.dynamicMap = estep.cutUnobserved(GlobalMap::mergeAll(dy, cfg), dy);
+	SplitMap m = SplitMap::of(res.perScan, estep, cfg);  // Eq. 14 on the converged map, Eq. 4 per state
+	res.perScan = std::move(m.perScan);
+	res.staticMap = std::move(m.staticMap);
+	res.dynamicMap = std::move(m.dynamicMap);
 	res.finalMergeSeconds = since(t0);
-	for (auto* m : {&res.staticMap, &res.dynamicMap})
-		for (auto v : m->vectors)
+	for (auto* r : {&res.staticMap, &res.dynamicMap})
+		for (auto v : r->vectors)
 		{
-			v.state = m == &res.staticMap ? VectorState::Static : VectorState::Dynamic;
+			v.state = r == &res.staticMap ? VectorState::Static : VectorState::Dynamic;
 			v.id = res.finalVectors.size() + 1;  // unique across both maps
 			res.finalVectors.push_back(std::move(v));
 		}
@@ -247,6 +248,7 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 	MStep mstep(cfg_);
 	mstep.setOdometry(odometry);
 	const EStep estep(cfg_.estep, cfg_.grid);
+	DoorExclusion doorExclusion(cfg_, estep);  // Sec. 5.3 (doors.during_em)
 	auto segs = initialSegments(scans);
 	mstep.setAllVectors(segs);  // the loop search's fallback (mstep.loop_search_all_vectors)
 	EStepResult prevE;
@@ -286,7 +288,13 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		ePoses = res.poses;
 		if (progress) progress("E-step", k, 0.0);
 		EStepResult e = expectation(estep, scans, res.poses, cfg_, k > 1 ? &prevE : nullptr, it, t0, changedIds);
-		segs = staticSegments(e.children, res.poses);
+		if (cfg_.doors.duringEm)
+		{
+			if (progress) progress("doors", k, 0.0);
+			segs = staticSegments(doorExclusion.apply(e.children, changedIds, it.doors), res.poses);
+		}
+		else
+			segs = staticSegments(e.children, res.poses);
 		it.eSeconds = since(t0);
 		res.perScan = e.children;
 		prevE = std::move(e);

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <gridvector/DoorDetector.h>
+#include <gridvector/DoorExclusion.h>
 #include <gridvector/EStep.h>
 #include <gridvector/GlobalMap.h>
 #include <gridvector/GridVectorConfig.h>
@@ -28,6 +29,9 @@ struct EmIteration
 	double wipeSeconds = 0;  //!< of eSeconds: the map of the trajectory, Eq. 4 unmerged + Eq. 8 (GlobalMap::buildPerScan)
 	double classifySeconds = 0;  //!< of eSeconds: Eq. 14-15 on that map (EStep::run)
 	bool eSkipped = false;  //!< no pose moved enough since the last E-step: its result stands
+	/** Sec. 5.3 (doors.during_em): doors on this E-step's map, kept out of the next M-step
+	 * (of eSeconds: their seconds); all zero with the key off. */
+	DoorExclusionFigures doors;
 };
 
 struct EmResult

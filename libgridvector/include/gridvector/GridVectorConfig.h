@@ -382,6 +382,7 @@ struct DoorOptions
 	double minOpenDeg = 30.0;  //!< a door has a state at least this far from its wall's line [deg]
 	bool closedLeafHiddenEnds = false;  //!< a closed leaf's ends hidden in the walls are matched as intervals
 	bool closedLeafToLatch = false;  //!< a closed leaf seen in part may reach the collinear wall ahead
+	bool duringEm = false;  //!< Sec. 5.3: doors detected after each E-step, their states kept out of the M-step
 
 	template <class V>
 	void visit(V&& v)
@@ -399,6 +400,7 @@ struct DoorOptions
 		v("min_open_deg", minOpenDeg, "Beyond the paper (Fig. 10's leaf turns from its wall): a door has at least one state this far or farther from its wall's line (a leaf seen open); doors whose every state lies closer to the wall's line are a wall seen dynamic in kinked pieces (real logs, doc/benchmarks.md) [deg]; 0: off");
 		v("max_tee_offset", maxTeeOffset, "A door candidate's end this close to the interior of a static vector longer than max_door_length makes a T corner (a wall merged across the doorway) [m]; 0: end corners only");
 		v("closed_leaf_hidden_ends", closedLeafHiddenEnds, "Beyond the paper (Fig. 10 compares corners at one vertex and whole leaves): a dynamic closed state along its wall's line that overlaps the wall's end has its hinge anywhere from its end inside the wall to the wall's end, and one that runs into the latch-side wall (a static vector on the wall's line starting between its ends) its tip anywhere from that wall's start to its end; corners are compared over those intervals, the door's hinge placed on the closed state's line nearest the other corners' vertices and its length taken nearest their longest leaf; and a new hinge whose states all lie within min_open_deg of its wall's line gives its leaves back at once (the wider matches make such hinges, which took a true door's closed state); false: the wall's end and, reaching into the wall by more than max_corner_gap, its own end inside the wall are its vertices (two corners), its whole length from there");
+		v("during_em", duringEm, "Sec. 5.3 (\"the dynamic doors can be detected gradually in the EM procedure and excluded from data associations\"): after each E-step the doors are detected on its map (split and merged as the final map is), accumulated over the iterations (a door stays until a later one is found at its hinge), and every static child that is a door state is kept out of the next M-step's registrations: whole where it went into a door's leaf, its stretch along a door state where a wall runs across one; such a child counts as changed for Eq. 25. doors.txt stays the detection on the final map; false: doors only on the final map, the M-step registers every static child");
 		v("closed_leaf_to_latch", closedLeafToLatch, "Beyond the paper (Fig. 10 compares whole leaves): a dynamic closed state along its wall's line that ends short of the next collinear static vector ahead (the latch-side wall) is a leaf seen in part, so its length is matched as anything from its own up to the distance to that wall (at most max_door_length); false: its own length");
 	}
 };

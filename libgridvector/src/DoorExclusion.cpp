@@ -121,6 +121,7 @@ std::vector<GridVector> DoorExclusion::apply(const std::vector<GridVector>& chil
 											 std::vector<std::vector<uint64_t>>& changedIds, DoorExclusionFigures& fig)
 {
 	const auto t0 = std::chrono::steady_clock::now();
+	fig = {};
 	const SplitMap map = SplitMap::of(children, estep_, cfg_);
 	const std::vector<Door> found = detector_.detect(map.vectors);
 	accumulate(found);

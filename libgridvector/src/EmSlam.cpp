@@ -160,7 +160,8 @@ void keepLastSplit(EmIteration& it, const EmIteration& last)
 {
 	it.staticVectors = last.staticVectors, it.dynamicVectors = last.dynamicVectors;
 	it.staticLength = last.staticLength, it.dynamicLength = last.dynamicLength;
-	it.doors = last.doors;
+	it.doors = last.doors;  // Sec. 5.3: the doors and exclusion of that E-step stand
+	it.doors.seconds = 0;
 }
 
 // Sec. 4.1: the E-step (Eq. 14-15) on the map of the trajectory (Eq. 4 unmerged, Eq. 8), its

@@ -24,6 +24,12 @@ for it in r["iterations"]:
     assert 0 <= it["wipe_seconds"] and 0 <= it["classify_seconds"]
     assert it["wipe_seconds"] + it["classify_seconds"] <= it["e_seconds"] + 1e-6
 assert r["iterations"][0]["wipe_seconds"] > 0
+# Sec. 5.3 (doors.during_em): per iteration the doors known and the static children kept out
+for it in r["iterations"]:
+    for k in ("doors", "doors_found", "door_vectors_excluded", "door_vectors_cut"):
+        assert isinstance(it[k], int) and it[k] >= 0, k
+    assert 0 <= it["door_seconds"] <= it["e_seconds"] + 1e-6
+    assert it["doors_found"] <= it["doors"]
 s = r["seconds"]
 assert 0 <= s["final_merge"] and 0 <= s["doors"] and s["final_merge"] + s["doors"] <= s["final_map"] + 1e-6
 PY

@@ -14,19 +14,6 @@ double since(std::chrono::steady_clock::time_point t0)
 	return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// The column ranges of `child` the pieces cover (Eq. 25's comparison of what was kept).
-std::vector<std::pair<int, int>> columnsOf(const GridVector& child, const std::vector<GridVector>& pieces)
-{
-	std::vector<std::pair<int, int>> out;
-	const auto d = child.direction();
-	for (const GridVector& p : pieces)
-	{
-		const double u = (p.start().x - child.start().x) * d.x + (p.start().y - child.start().y) * d.y;
-		const int first = int(std::lround(u / child.resolution()));
-		out.emplace_back(first, first + p.cols());
-	}
-	return out;
-}
 }  // namespace
 
 // The map Sec. 5.4 looks at: Eq. 14 at the final threshold, Eq. 4 per state, unobserved stretches cut.
@@ -100,13 +87,11 @@ std::vector<uint64_t> DoorExclusion::leafChildren(const SplitMap& map, const std
 }
 
 // The static pieces of a child the M-step may register: none of a leaf, the rest of a wall.
-std::vector<GridVector> DoorExclusion::keptPieces(const GridVector& child, bool leaf) const
+std::vector<GridVector> DoorExclusion::keptPieces(const GridVector& child, const Decision& d) const
 {
-	if (leaf) return {};
-	const auto spans = detector_.stateSpans(doors_, child);
-	if (spans.empty()) return {child};
+	if (d.leaf) return {};
 	std::vector<GridVector> kept;
-	for (GridVector& p : estep_.splitSpans(child, spans))
+	for (GridVector& p : estep_.splitSpans(child, d.spans))
 		if (p.state == VectorState::Static)
 		{
 			p.id = kept.empty() ? child.id : pieceId(child.id, kept.size());
@@ -115,8 +100,9 @@ std::vector<GridVector> DoorExclusion::keptPieces(const GridVector& child, bool 
 	return kept;
 }
 
-// Sec. 5.3: doors detected on the E-step's map and excluded from the M-step's data association;
-// Eq. 25: a child whose kept stretch changed counts as a changed child.
+// Sec. 5.3: doors detected on the E-step's map and excluded from the M-step's data association.
+// "Gradually": a child once found to be a door state stays out (as it was cut then), so the
+// exclusion only grows and EM can converge; Eq. 25: a child newly kept out counts as changed.
 std::vector<GridVector> DoorExclusion::apply(const std::vector<GridVector>& children,
 											 std::vector<std::vector<uint64_t>>& changedIds, DoorExclusionFigures& fig)
 {
@@ -126,7 +112,6 @@ std::vector<GridVector> DoorExclusion::apply(const std::vector<GridVector>& chil
 	const std::vector<Door> found = detector_.detect(map.vectors);
 	accumulate(found);
 	const auto leaves = leafChildren(map, found);
-	std::map<uint64_t, std::vector<std::pair<int, int>>> kept;
 	std::vector<GridVector> out;
 	out.reserve(children.size());
 	for (const GridVector& c : children)
@@ -136,20 +121,24 @@ std::vector<GridVector> DoorExclusion::apply(const std::vector<GridVector>& chil
 			out.push_back(c);
 			continue;
 		}
-		auto pieces = keptPieces(c, std::binary_search(leaves.begin(), leaves.end(), c.id));
-		const bool whole = pieces.size() == 1 && pieces[0].cols() == c.cols();
-		if (!whole)
+		auto known = decided_.find(c.id);
+		if (known == decided_.end())
 		{
-			kept[c.id] = columnsOf(c, pieces);
-			++(pieces.empty() ? fig.excluded : fig.cut);
+			Decision d{std::binary_search(leaves.begin(), leaves.end(), c.id), {}};
+			if (!d.leaf) d.spans = detector_.stateSpans(doors_, c);
+			if (!d.leaf && d.spans.empty())
+			{
+				out.push_back(c);
+				continue;
+			}
+			known = decided_.emplace(c.id, std::move(d)).first;
+			if (c.scanIndex >= 0 && size_t(c.scanIndex) < changedIds.size())
+				changedIds[size_t(c.scanIndex)].push_back(c.id);
 		}
-		const auto last = lastKept_.find(c.id);
-		const bool changed = whole ? last != lastKept_.end() : last == lastKept_.end() || last->second != kept[c.id];
-		if (changed && c.scanIndex >= 0 && size_t(c.scanIndex) < changedIds.size())
-			changedIds[size_t(c.scanIndex)].push_back(c.id);
+		auto pieces = keptPieces(c, known->second);
+		++(pieces.empty() ? fig.excluded : fig.cut);
 		for (auto& p : pieces) out.push_back(std::move(p));
 	}
-	lastKept_ = std::move(kept);
 	fig.found = found.size();
 	fig.doors = doors_.size();
 	fig.seconds = since(t0);

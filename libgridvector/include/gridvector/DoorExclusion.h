@@ -51,8 +51,9 @@ class DoorExclusion
 
 	/** Detects doors on the map of `children` (global, the E-step's output) and
 	 * returns the static children the M-step may register (door states removed or
-	 * cut, the rest unchanged). Eq. 25: per scan, the ids of the children whose
-	 * exclusion differs from the last call's are appended to `changedIds`. */
+	 * cut, the rest unchanged). A child found to be a door state stays out as it was
+	 * decided then ("gradually": the exclusion only grows). Eq. 25: per scan, the ids
+	 * of the children newly kept out are appended to `changedIds`. */
 	std::vector<GridVector> apply(const std::vector<GridVector>& children,
 								  std::vector<std::vector<uint64_t>>& changedIds, DoorExclusionFigures& fig);
 
@@ -67,14 +68,20 @@ class DoorExclusion
    private:
 	void accumulate(const std::vector<Door>& found);
 	std::vector<uint64_t> leafChildren(const SplitMap& map, const std::vector<Door>& found) const;
-	std::vector<GridVector> keptPieces(const GridVector& child, bool leaf) const;
+	/** What was decided for a child the first time it was found to be a door state. */
+	struct Decision
+	{
+		bool leaf = false;  //!< it went whole into a door's leaf: out whole
+		std::vector<std::pair<double, double>> spans;  //!< else: the stretches along door states [m from its start]
+	};
+	std::vector<GridVector> keptPieces(const GridVector& child, const Decision& d) const;
 
 	const GridVectorConfig& cfg_;
 	const EStep& estep_;
 	DoorDetector detector_;
 	std::vector<Door> doors_;
-	/** Per child id kept out in part or whole at the last call: the column ranges kept. */
-	std::map<uint64_t, std::vector<std::pair<int, int>>> lastKept_;
+	/** Per id of a child found to be a door state (at any call so far): what is kept out. */
+	std::map<uint64_t, Decision> decided_;
 };
 
 }  // namespace gridvector

@@ -2,10 +2,17 @@
 // M-step's static children, accumulated over the iterations, Eq. 25's changed children.
 #include <gridvector/DoorExclusion.h>
 #include <gridvector/EmSlam.h>
+#include <gridvector/VectorExtractor.h>
+#include <gridvector/io/LogReader.h>
+#include <gridvector/sim/Simulator.h>
+#include <gridvector/sim/TruthFiles.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <filesystem>
+
+#include <unistd.h>
 
 using namespace gridvector;
 using mrpt::math::TPoint2D;
@@ -129,4 +136,75 @@ TEST(DoorExclusion, PieceIdsKeepTheChildInTheLowBits)
 	EXPECT_THROW(DoorExclusion::pieceId(c, 0), std::overflow_error);
 	EXPECT_THROW(DoorExclusion::pieceId(c, 256), std::overflow_error);
 	EXPECT_THROW(DoorExclusion::pieceId(uint64_t(1) << 60, 1), std::overflow_error);
+}
+
+namespace
+{
+// gv-sim's long corridor (swinging doors, people), 400 scans, as gv-em-slam reads and extracts it.
+void simulatedCorridor(std::vector<LocalScan>& scans, std::vector<TPose2D>& odo, const GridVectorConfig& cfg)
+{
+	sim::SimOptions o;
+	o.world = "long-corridor";
+	o.seed = 2;
+	o.scans = 400;
+	const auto dir = std::filesystem::temp_directory_path() / ("door_exclusion_test_" + std::to_string(::getpid()));
+	sim::writeSimulation(sim::simulate(o), dir.string());
+	io::ReadOptions ro;
+	ro.quiet = true;
+	const io::LogData log = io::readLog((dir / "sim.log").string(), ro);
+	std::filesystem::remove_all(dir);
+	const VectorExtractor ex(cfg.extraction, cfg.grid);
+	for (size_t t = 0; t < log.scans.size(); ++t)
+	{
+		scans.push_back(ex.extract(*log.scans[t].scan));
+		scans.back().scanIndex = int64_t(t);
+		scans.back().timestamp = log.scans[t].timestamp;
+		odo.push_back(log.scans[t].odometry);
+	}
+}
+
+// Per EM iteration, the static segments the M-step registered.
+std::vector<size_t> registered(const GridVectorConfig& cfg, const std::vector<LocalScan>& scans,
+							   const std::vector<TPose2D>& odo, EmResult& res)
+{
+	std::vector<size_t> out;
+	EmSlam em(cfg);
+	em.setMStepObserver([&](int, const MStep&, const std::vector<std::vector<MatchSegment>>& statics, const std::vector<size_t>&) {
+		size_t n = 0;
+		for (const auto& s : statics) n += s.size();
+		out.push_back(n);
+	});
+	res = em.run(scans, odo);
+	return out;
+}
+}  // namespace
+
+// Sec. 5.3: with doors.during_em the M-step after the first E-step registers the static children
+// less the door states found on that E-step's map; without it, every static child.
+TEST(DoorExclusion, TheMStepNoLongerRegistersDoorStates)
+{
+	GridVectorConfig cfg = EmSlam::defaultConfig();
+	std::vector<LocalScan> scans;
+	std::vector<TPose2D> odo;
+	simulatedCorridor(scans, odo, cfg);
+	EmResult off, on;
+	const auto nOff = registered(cfg, scans, odo, off);
+	cfg.doors.duringEm = true;
+	const auto nOn = registered(cfg, scans, odo, on);
+	ASSERT_GE(nOff.size(), 2u);
+	ASSERT_GE(nOn.size(), 2u);
+	EXPECT_EQ(nOff[0], nOn[0]);  // M-step 1: every vector, before any E-step
+	const EmIteration& first = on.iterations[0];
+	EXPECT_EQ(nOff[1], off.iterations[0].staticVectors);
+	EXPECT_EQ(off.iterations[0].doors.doors, 0u);  // the key off: nothing detected during EM
+	ASSERT_GT(first.doors.found, 0u);
+	EXPECT_EQ(first.doors.doors, first.doors.found);
+	EXPECT_GT(first.doors.excluded, 0u);
+	// M-step 2 registers the static children of E-step 1 but the door leaves (out whole) and with
+	// each wall cut at a door state as one or more pieces
+	EXPECT_LE(nOn[1], first.staticVectors - first.doors.excluded + first.doors.cut);
+	EXPECT_GE(nOn[1], first.staticVectors - first.doors.excluded - first.doors.cut);
+	EXPECT_LT(nOn[1], first.staticVectors);
+	EXPECT_TRUE(on.converged);
+	for (const auto& it : on.iterations) EXPECT_GE(it.doors.doors, first.doors.doors);  // accumulated
 }

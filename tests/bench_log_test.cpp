@@ -104,6 +104,31 @@ TEST(BenchmarkLog, MalformedInputIsAnError)
 	fs::remove(in);
 }
 
+TEST(BenchmarkLog, WrongBeamCountIsAnErrorNotAShiftedPose)
+{
+	// "FLASER 2" over 3 ranges: mkbench.py would take the third range as x, x as y, y as theta
+	const std::string in = tmp("beams.log");
+	io::writeFileAtomically(in, [](std::ostream& os) {
+		os << "FLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 1 h 1\nFLASER 2 1.0 2.0 3.0 0.5 0.25 0 0.5 0.25 0 1.2 h 1.2\n";
+	});
+	try
+	{
+		sim::makeBenchmarkLog(in, tmp("beams_out"));
+		ADD_FAILURE() << "accepted";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), in + ":2: FLASER: 2 beams announced: expected 13 fields, found 14");
+	}
+	EXPECT_FALSE(fs::exists(tmp("beams_out") + ".log"));
+	EXPECT_FALSE(fs::exists(tmp("beams_out") + ".ref.txt"));
+	// the single-timestamp layout the log readers accept is accepted here too
+	io::writeFileAtomically(in, [](std::ostream& os) { os << "FLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 1\n"; });
+	EXPECT_EQ(sim::makeBenchmarkLog(in, tmp("beams_out")).scans, 1u);
+	for (const char* f : {".log", ".ref.txt"}) fs::remove(tmp("beams_out") + f);
+	fs::remove(in);
+}
+
 TEST(OdometryNoise, DriftAloneTurnsByTheDistanceTravelled)
 {
 	sim::Random rng(1);

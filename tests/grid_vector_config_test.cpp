@@ -130,6 +130,10 @@ TEST(GridVectorConfig, FileWithKeysOutsideSectionsOrABrokenHeaderIsAnError)
 	EXPECT_EQ(fileLoadError("[gridvector_grid\nresolution = 0.05\n"),
 			  "gv_layout_test.ini:1: section header without ']'");
 	EXPECT_EQ(fileLoadError("# comment\n\n  [gridvector_grid] ; c\n\tresolution = 0.05\n"), "");
+	// a binary file's bytes are quoted as \xHH, at most 40 of them (they reached the terminal raw)
+	EXPECT_EQ(fileLoadError("\x01\xff\x1b[2Jab = 1 and a line longer than forty bytes\n"),
+			  "gv_layout_test.ini:1: '\\x01\\xff\\x1b[2Jab = 1 and a line longer than fort...' is outside any "
+			  "[section]");
 }
 
 TEST(GridVectorConfig, OutOfRangeValueIsRejected)

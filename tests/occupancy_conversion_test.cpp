@@ -164,3 +164,31 @@ TEST(OccupancyConversion, EmptyMapIsAllUnknown)
 	EXPECT_GT(g.getSizeX(), 0u);
 	EXPECT_EQ(g.getCell(0, 0), 0.5f);
 }
+
+TEST(OccupancyConversion, RasterTooLargeForItsExtentIsAnErrorNotAnAllocationFailure)
+{
+	// gv-em-slam with [gridvector_occupancy] resolution = 0.00001 wrote trajectory.txt, the vectors and
+	// map.gvmap, then failed as "std::bad_alloc" (margin = 1e9: an OpenCV assertion), leaving those behind
+	const std::vector<GridVector> m{wallWithCounts()};
+	OccupancyConversionOptions opt;
+	opt.resolution = 1e-5;
+	try
+	{
+		OccupancyConversion::toOccupancyGrid(m, opt);
+		ADD_FAILURE() << "no error";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()),
+				  "occupancy grid of 3 x 1.3 m at resolution 1e-05 m: 3.9e+10 cells, more than 268435456 (raise "
+				  "[gridvector_occupancy] resolution, or check the vectors' extent)");
+	}
+	opt.resolution = 0.1;
+	opt.margin = 1e9;
+	EXPECT_THROW(OccupancyConversion::toOccupancyGrid(m, opt), std::runtime_error);
+	EXPECT_THROW(OccupancyConversion::rasterise(m, opt), std::runtime_error);
+	// the sample points count too: 20 x 20 cells with 10^4 x 10^4 samples each
+	EXPECT_THROW(OccupancyConversion::rasterise(m, 0, 0, 0.1, 20, 20, 10000), std::runtime_error);
+	opt.margin = 0.5;
+	EXPECT_NO_THROW(OccupancyConversion::toOccupancyGrid(m, opt));
+}

@@ -302,6 +302,7 @@ int main(int argc, char** argv)
 			if (args.has("config")) cfg.loadFromFile(args.get("config"));
 			const long maxScans = args.getInt("max-scans", 0, 0, 100000000);
 			const double band = args.getDouble("band", 0.2);
+			if (band <= 0) args.fail("--band must be > 0 (metres), got " + args.get("band"));  // -1 compared no cell
 			gRepeat = int(args.getInt("repeat", 1, 1, 100));
 			gSamples = int(args.getInt("samples", cfg.occupancy.samplesPerAxis, 0, 16));
 			gMaxPooling = cfg.occupancy.maxPooling;

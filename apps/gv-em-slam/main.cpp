@@ -153,8 +153,9 @@ int run(const io::ArgParser& args)
 	progress.done();
 	fig.emSeconds = since(t1);
 
-	// outputs
+	// outputs: everything that can fail on the results (the occupancy grid's size) before the first file
 	t1 = Clock::now();
+	const auto grid = OccupancyConversion::toOccupancyGrid(res.finalVectors, cfg.occupancy, cfg.grid);
 	outDir.create();
 	io::Trajectory traj;
 	for (size_t t = 0; t < res.poses.size(); ++t) traj.emplace_back(log.scans[t].timestamp, res.poses[t]);
@@ -166,7 +167,6 @@ int run(const io::ArgParser& args)
 	app::writeDoors(dir + "doors.txt", doors);
 	app::writeDoorStates(dir + "door_states.txt", doors);
 	app::writeGvmap(dir + "map.gvmap", cfg, res.finalVectors);
-	const auto grid = OccupancyConversion::toOccupancyGrid(res.finalVectors, cfg.occupancy, cfg.grid);
 	MapExport::writePng(grid, dir + "occupancy.png");
 	MapExport::writeRosMap(grid, dir + "occupancy.pgm", dir + "occupancy.yaml");
 	fig.memory = MemoryAccounting::account(res.finalVectors, 0.1);

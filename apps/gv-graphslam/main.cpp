@@ -8,11 +8,13 @@
 #include <gridvector/graphslam/DeciderOptions.h>
 #include <gridvector/graphslam/DeciderRegistry.h>
 #include <gridvector/graphslam/EngineOptions.h>
+#include <gridvector/graphslam/GroundTruthIndex.h>
 #include <gridvector/graphslam/IniKeys.h>
 #include <gridvector/graphslam/RunRecorder.h>
 #include <gridvector/io/ArgParser.h>
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/FileBytes.h>
+#include <gridvector/io/IniLayout.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/containers/yaml.h>
@@ -129,38 +131,9 @@ void requireFile(const std::string& path, const char* what)
 	io::checkReadableFile(path);  // a directory passed MRPT's fileExists and failed in the engine as "unknown error"
 }
 
-/** MRPT 2.5's CGraphSlamEngine::readGTFile checks the line layout only in debug builds and
- * indexes past the tokens of a short line (a segfault): every line must be 't x y theta',
- * numbers separated by single-space-delimited tokens, as it reads them. */
-void requireGroundTruth(const std::string& path)
-{
-	requireFile(path, "ground-truth file");
-	std::ifstream in(path);
-	if (!in) throw std::runtime_error(path + ": cannot read ground-truth file");
-	std::string line;
-	for (size_t n = 1; std::getline(in, line); ++n)
-	{
-		if (!line.empty() && line.back() == '\r') line.pop_back();
-		std::vector<std::string> tokens;
-		std::istringstream fields(line);
-		for (std::string t; std::getline(fields, t, ' ');)
-			if (!t.empty()) tokens.push_back(t);
-		bool numbers = tokens.size() == 4;
-		for (const auto& t : tokens)
-		{
-			char* end = nullptr;
-			std::strtod(t.c_str(), &end);
-			numbers = numbers && end && *end == '\0';
-		}
-		if (!numbers)
-			throw std::runtime_error(path + ":" + std::to_string(n) +
-									 ": ground-truth lines must be 't x y theta' (4 numbers separated by spaces)");
-	}
-}
-
 /** Feeds every rawlog entry to the engine; returns the number of entries. */
 size_t feed(const std::string& rawlog, mrpt::graphslam::CGraphSlamEngine<graph_t>& engine,
-			RunRecorder& rec)
+			RunRecorder& rec, std::optional<GroundTruthIndex>& gt)
 {
 	mrpt::io::CFileGZInputStream in;
 	if (!in.open(rawlog)) throw std::runtime_error(rawlog + ": cannot open");
@@ -190,7 +163,9 @@ size_t feed(const std::string& rawlog, mrpt::graphslam::CGraphSlamEngine<graph_t
 		if (!more) break;
 		if (!action && !sf && !obs) continue;
 		if (!obs && (!action || !sf)) continue;  // the engine needs both halves of a pair
+		if (gt) gt->beforeStep(rawlog, entry);
 		engine._execGraphSlamStep(action, sf, obs, entry);
+		if (gt) gt->afterStep(obs != nullptr, entry);
 		rec.record(action, sf, obs, engine.getGraph().nodeCount());
 		++steps;
 	}
@@ -300,9 +275,19 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 {
 	const StdoutToDevNull quiet(s.quiet);  // declared first: the engine and deciders are destroyed inside it
 	requireFile(s.ini, "config file");
+	{
+		const std::vector<char> text = io::readFileBytes(s.ini);  // MRPT's reader skips what it cannot parse
+		io::requireIniLayout(std::string(text.begin(), text.end()), s.ini);
+	}
 	requireFile(s.rawlog, "rawlog");
-	if (!s.groundTruth.empty()) requireGroundTruth(s.groundTruth);
+	std::optional<GroundTruthIndex> gt;
+	if (!s.groundTruth.empty())
+	{
+		requireFile(s.groundTruth, "ground-truth file");
+		gt.emplace(s.groundTruth, checkGroundTruthFile(s.groundTruth));
+	}
 	mrpt::config::CConfigFile ini(s.ini);
+	if (gt) requireNavSimulGroundTruth(ini, s.ini);
 	EngineOptions gc;
 	gc.load(ini, s.ini);  // before the engine reads its keys loosely
 	EdgeDeciderOptions lc;  // the summary's loop-closure threshold, read as CGridVectorERD reads it
@@ -332,7 +317,7 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 
 	RunRecorder rec;
 	const auto t0 = std::chrono::steady_clock::now();
-	const size_t steps = feed(s.rawlog, engine, rec);
+	const size_t steps = feed(s.rawlog, engine, rec, gt);
 	const double slamSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	writeEngineOutputs(engine, gc, outDir.create());
 

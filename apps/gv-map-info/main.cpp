@@ -6,6 +6,7 @@
 #include <gridvector/ErrorText.h>
 #include <gridvector/io/ArgParser.h>
 #include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/FileBytes.h>
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/maps/CSimpleMap.h>
@@ -22,6 +23,7 @@ template <class T>
 void readObject(const std::string& path, T& obj)
 {
 	if (!mrpt::system::fileExists(path)) throw std::runtime_error(path + ": no such file");
+	gridvector::io::checkReadableFile(path);  // a directory opened and failed in MRPT as "unknown error"
 	mrpt::io::CFileGZInputStream f;
 	if (!f.open(path)) throw std::runtime_error(path + ": cannot open");
 	try

@@ -3,6 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
 
 namespace gridvector
 {
@@ -150,13 +153,14 @@ OccupancyRaster OccupancyConversion::rasterise(const std::vector<GridVector>& ve
 	OccupancyRaster R;
 	R.xMin = xMin, R.yMin = yMin, R.resolution = res;
 	R.nx = std::max(0, nx), R.ny = std::max(0, ny);
-	R.occ.assign(size_t(R.nx) * R.ny, 0.f);
-	R.visit.assign(size_t(R.nx) * R.ny, 0.f);
 	// automatic: one point per vector cell along each axis, so at the vectors'
 	// own resolution every output cell is Eq. 6 at its centre
 	int s = std::max(1, samplesPerAxis);
 	if (samplesPerAxis <= 0)
 		for (const GridVector& g : vectors) s = std::max(s, int(std::ceil(res / g.resolution() - 1e-6)));
+	requireRasterSize(R.nx * res, R.ny * res, res, s);
+	R.occ.assign(size_t(R.nx) * R.ny, 0.f);
+	R.visit.assign(size_t(R.nx) * R.ny, 0.f);
 	SampleRaster S(R, s);
 	for (const GridVector& g : vectors) addVector(g, S);
 	pool(S, s, maxPooling, priorRatio(grid), R);
@@ -168,11 +172,26 @@ OccupancyRaster OccupancyConversion::rasterise(const std::vector<GridVector>& ve
 {
 	double x0, y0, x1, y1;
 	if (!bounds(vectors, x0, y0, x1, y1)) return rasterise(vectors, 0, 0, opt.resolution, 0, 0, 0, true, grid);
+	requireRasterSize(x1 - x0 + 2 * opt.margin, y1 - y0 + 2 * opt.margin, opt.resolution);  // before int(cells)
 	x0 = std::floor((x0 - opt.margin) / opt.resolution) * opt.resolution;
 	y0 = std::floor((y0 - opt.margin) / opt.resolution) * opt.resolution;
 	const int nx = int(std::ceil((x1 + opt.margin - x0) / opt.resolution));
 	const int ny = int(std::ceil((y1 + opt.margin - y0) / opt.resolution));
 	return rasterise(vectors, x0, y0, opt.resolution, nx, ny, opt.samplesPerAxis, opt.maxPooling, grid);
+}
+
+void OccupancyConversion::requireRasterSize(double width, double height, double res, int samplesPerAxis)
+{
+	const double cells = std::ceil(width / res) * std::ceil(height / res) * samplesPerAxis * samplesPerAxis;
+	if (cells <= kMaxCells) return;  // also false for NaN
+	char msg[320];
+	std::snprintf(msg, sizeof msg,
+				  "occupancy grid of %.4g x %.4g m at resolution %g m%s: %.3g cells, more than %.0f (raise "
+				  "[gridvector_occupancy] resolution, or check the vectors' extent)",
+				  width, height, res,
+				  samplesPerAxis > 1 ? (" with " + std::to_string(samplesPerAxis) + "^2 samples per cell").c_str() : "",
+				  cells, kMaxCells);
+	throw std::runtime_error(msg);
 }
 
 void OccupancyConversion::fill(const OccupancyRaster& R, mrpt::maps::COccupancyGridMap2D& grid)
@@ -199,6 +218,7 @@ mrpt::maps::COccupancyGridMap2D OccupancyConversion::toOccupancyGrid(
 	mrpt::maps::COccupancyGridMap2D grid;
 	double x0, y0, x1, y1;
 	if (!bounds(vectors, x0, y0, x1, y1)) x0 = y0 = -opt.margin, x1 = y1 = opt.margin;
+	requireRasterSize(x1 - x0 + 2 * opt.margin, y1 - y0 + 2 * opt.margin, opt.resolution);  // before MRPT allocates
 	grid.setSize(x0 - opt.margin, x1 + opt.margin, y0 - opt.margin, y1 + opt.margin, opt.resolution, 0.5f);
 	fill(vectors, grid, opt.samplesPerAxis, opt.maxPooling, gridOptions);  // in the grid's own (snapped) geometry
 	return grid;

@@ -177,6 +177,51 @@ expect 1 "garbage.txt:1: ground-truth lines must be 't x y theta'" g9/trajectory
 # .gvmap files
 expect 1 "trunc.gvmap: not a valid mrpt::maps::CGridVectorMap file" m10.gvmap -- "$B/gv-map-info" trunc.gvmap --save m10.gvmap
 expect 1 "garbage.gvmap: not a valid mrpt::maps::CGridVectorMap file" - -- "$B/gv-map-info" garbage.gvmap
+# session 10 audit (doc/benchmarks-history.md "Session 10: sanitizers and bad input")
+# graphslam ground truth: MRPT's engine indexes it without bounds checks (empty file: a segfault)
+: > gt0.txt; head -5 traj.txt > gt5.txt
+expect 1 "gt0.txt: no ground-truth poses" g10/trajectory.txt -- "$B/gv-graphslam" --2d -i "$INI" -r room.rawlog -g gt0.txt --disable-visuals --output-dir g10 --quiet
+expect 1 "gt5.txt: 5 ground-truth poses, the engine reads pose 6 at entry 11 of room.rawlog (one pose per scan)" g10/trajectory.txt -- "$B/gv-graphslam" --2d -i "$INI" -r room.rawlog -g gt5.txt --disable-visuals --output-dir g10 --quiet
+sed 's/^\[GeneralConfiguration\]/[GeneralConfiguration]\nground_truth_file_format = foo/' "$INI" > gtfmt.ini
+expect 1 "gtfmt.ini: [GeneralConfiguration] ground_truth_file_format = 'foo': MRPT 2.5's graphslam engine reads ground truth (-g) as NavSimul only" g10/trajectory.txt -- "$B/gv-graphslam" --2d -i gtfmt.ini -r room.rawlog -g traj.txt --disable-visuals --output-dir g10 --quiet
+# a graphslam .ini that is not one (MRPT's reader skipped every line: the run used defaults)
+head -c 3000 /dev/zero | tr '\0' '\001' > binary.ini
+expect 1 "binary.ini:1: '\\x01\\x01" g10/trajectory.txt -- "$B/gv-graphslam" --2d -i binary.ini -r room.rawlog --disable-visuals --output-dir g10 --quiet
+expect 1 "binary.ini:1: '\\x01\\x01" - -- "$B/gv-config" --check binary.ini
+# gv-bench-log: a wrong beam count shifted the pose (mkbench.py reads it after the announced ranges)
+sed '5s/^FLASER 181/FLASER 180/' room.log > fewer.log
+expect 1 "fewer.log:5: FLASER: 180 beams announced: expected 191 fields, found 192" b10.log -- "$B/gv-bench-log" fewer.log b10 --quiet
+# a .gvmap argument that is a directory ("unknown error" before)
+expect 1 "gv-map-info: dir.rawlog: cannot read (it is a directory)" - -- "$B/gv-map-info" dir.rawlog
+# an occupancy grid too large for memory: found before the first output file, not as std::bad_alloc after four
+printf '[gridvector_occupancy]\nresolution = 0.00001\n' > tinyocc.ini
+expect 1 "occupancy grid of" e10/report.json -- "$B/gv-em-slam" --input room.log --out e10 --config tinyocc.ini --quiet
+expect 1 "occupancy grid of" o10/map.gvmap -- "$B/gv-map" --input room.log --poses log --out o10 --config tinyocc.ini --quiet
+# more of the matrix, already right: plain log cut mid-line, NaN range, binary garbage, empty gzip,
+# a rawlog cut mid-object, a .gvmap of a future version, bad --max-iterations, an --out that is a file
+head -c $(( $(stat -c %s room.log) / 2 + 17 )) room.log > midline.log
+expect 1 "midline.log:11: FLASER: 181 ranges announced, line has only 2 more fields" e10/report.json -- "$B/gv-em-slam" --input midline.log --out e10 --quiet
+sed '5s/^\(FLASER 181 [^ ]* [^ ]* \)[^ ]*/\1nan/' room.log > nan.log
+expect 1 "nan.log:5: FLASER range 2 is 'nan' (not a finite number)" t10.rawlog -- "$B/gv-carmen2rawlog" nan.log t10.rawlog --quiet
+python3 -c "import random; r = random.Random(7); open('garbage.log', 'wb').write(bytes(r.randrange(256) for _ in range(5000)))"
+expect 1 "garbage.log:1: unrecognised line starting with '\\xa5M\\xca" o10/map.gvmap -- "$B/gv-map" --input garbage.log --poses log --out o10 --quiet
+: | gzip -c > empty.log.gz
+expect 1 "empty.log.gz: no laser scans" e10/report.json -- "$B/gv-em-slam" --input empty.log.gz --out e10 --quiet
+"$B/gv-carmen2rawlog" room.log plain.rawlog --quiet --no-compress
+head -c $(( $(stat -c %s plain.rawlog) / 2 + 17 )) plain.rawlog > midobj.rawlog
+expect 1 "midobj.rawlog: entry 21: truncated or corrupt rawlog" e10/report.json -- "$B/gv-em-slam" --input midobj.rawlog --out e10 --quiet
+python3 -c "
+import gzip
+raw = bytearray(gzip.decompress(open('ok/map.gvmap', 'rb').read()))
+i = raw.find(b'CGridVectorMap') + len(b'CGridVectorMap'); raw[i] = 99
+open('future.gvmap', 'wb').write(gzip.compress(bytes(raw)))"
+expect 1 "future.gvmap: not a valid mrpt::maps::CGridVectorMap file (Cannot parse object: unknown serialization version number: '99')" m10.gvmap -- "$B/gv-map-info" future.gvmap --save m10.gvmap
+expect 2 "--max-iterations must be in 1..1000, got -1" e10/report.json -- "$B/gv-em-slam" --input room.log --out e10 --quiet --max-iterations -1
+expect 2 "--max-iterations needs an integer, got 'abc'" e10/report.json -- "$B/gv-em-slam" --input room.log --out e10 --quiet --max-iterations abc
+expect 1 "room.log: cannot write" - -- "$B/gv-em-slam" --input room.log --out room.log --quiet
+expect 1 "room.log: cannot write" - -- "$B/gv-map" --input room.log --poses log --out room.log --quiet
+expect 2 "--input and --out are required" - -- "$B/gv-em-slam"
+expect 2 "gv-bench-map: --band must be > 0 (metres), got -1" - -- "$B/gv-bench-map" room.log --band -1
 # the tools converted to ArgParser: bad usage is one line and 2, --help is 0
 for tool in gv-map gv-em-slam gv-sim gv-eval gv-carmen2rawlog gv-bench-log gv-bench-map gv-bench-wipe gv-graphslam; do
   "$B/$tool" --help | head -1 | grep -q "^usage: $tool $tool" && fail "$tool --help: the usage line repeats the tool's name"

@@ -71,6 +71,12 @@ class OccupancyConversion
 	static void fill(const std::vector<GridVector>& vectors, mrpt::maps::COccupancyGridMap2D& grid,
 					 int samplesPerAxis = 0, bool maxPooling = true, const GridOptions& gridOptions = {});
 	static void fill(const OccupancyRaster& raster, mrpt::maps::COccupancyGridMap2D& grid);
+	/** Most cells (sample points included) a raster may have: 2^28, a few GB of floats. */
+	static constexpr double kMaxCells = 268435456.0;
+	/** Throws "occupancy grid of W x H m at resolution R m: N cells ..." when a raster of that extent
+	 * with samplesPerAxis^2 sample points per cell would exceed kMaxCells (a resolution far below
+	 * the map's scale, or vectors far apart), instead of failing in an allocation. */
+	static void requireRasterSize(double width, double height, double res, int samplesPerAxis = 1);
 	/** Bounding box of all vectors' grid bands: {xmin, ymin, xmax, ymax}; false if none. */
 	static bool bounds(const std::vector<GridVector>& vectors, double& xmin, double& ymin, double& xmax,
 					   double& ymax);

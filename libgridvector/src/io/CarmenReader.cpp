@@ -185,7 +185,7 @@ void CarmenParser::onFlaser(const Tokens& t, bool rear)
 	const CarmenLaserParams& lp = rear ? params_.rear() : params_.front();
 	// a wrong beam count shifts every field: say so, not "range 181 is -1.6" (the pose's x read as a range)
 	const size_t trailer = 2 + n + 6;
-	if (t.size() >= 2 + n && t.size() != trailer + 3 && t.size() != trailer + 1)
+	if (t.size() >= 2 + n && !flaserFieldCountMatches(n, t.size()))
 		parseError(pos_, what + ": " + std::to_string(n) + " beams announced: expected " + std::to_string(trailer + 3) +
 							 " fields, found " + std::to_string(t.size()));
 	ScanMessage m;
@@ -322,6 +322,12 @@ std::string CarmenParser::summary() const
 	return s;
 }
 }  // namespace
+
+bool flaserFieldCountMatches(size_t beams, size_t fields)
+{
+	const size_t trailer = 2 + beams + 6;  // name, count, ranges, laser pose, odometry pose
+	return fields == trailer + 3 || fields == trailer + 1;
+}
 
 LogData parseCarmenLog(const std::vector<char>& text, const std::string& source, const ReadOptions& opt)
 {

@@ -1,4 +1,5 @@
 #include <gridvector/io/IniLayout.h>
+#include <gridvector/io/TextParsing.h>
 
 #include <sstream>
 #include <stdexcept>
@@ -21,7 +22,8 @@ void requireIniLayout(const std::string& text, const std::string& path)
 			inSection = true;
 		}
 		else if (!inSection)
-			throw std::runtime_error(where + "'" + line.substr(b, 40) + "' is outside any [section]");
+			throw std::runtime_error(where + "'" + printableToken(std::string_view(line).substr(b)) +
+									 "' is outside any [section]");  // a binary file's bytes as \xHH
 	}
 }
 }  // namespace gridvector::io

@@ -28,6 +28,11 @@ constexpr double kSickErrorCodeRange = 81.83;
  * - Other message types (NEFF, SYNC, TRUEPOS, ...) are counted in the summary. */
 LogData readCarmenLog(const std::string& path, const ReadOptions& opt = {});
 
+/** Whether a FLASER/RLASER line announcing `beams` ranges has `fields` fields (its name included):
+ * the ranges, the laser pose, the odometry pose, then 'ipc_timestamp ipc_hostname logger_timestamp'
+ * or a single timestamp. A wrong beam count shifts every later field, so any other count is an error. */
+bool flaserFieldCountMatches(size_t beams, size_t fields);
+
 /** The same for CARMEN text in memory; source names it in messages. */
 LogData parseCarmenLog(const std::vector<char>& text, const std::string& source, const ReadOptions& opt = {});
 

@@ -17,4 +17,8 @@ cmake --build "$BUILD" -j 2
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=0:strict_string_checks=1:detect_stack_use_after_return=1:check_initialization_order=1"
 export LSAN_OPTIONS="suppressions=$ROOT/share/sanitizers/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1:suppressions=$ROOT/share/sanitizers/ubsan.supp"
+# MRPT's uninstrumented icp-slam loads the instrumented libgridvector.so (icp_slam_plugin.sh): the
+# runtimes go first; the installed-package consumer (install_consumer.sh) is compiled with the flags.
+export GV_SANITIZER_PRELOAD="$(g++ -print-file-name=libasan.so):$(g++ -print-file-name=libubsan.so)"
+export CXXFLAGS="$F" LDFLAGS="$F"
 cd "$BUILD" && ctest --output-on-failure -j 2 "$@"

@@ -8,7 +8,8 @@ command -v icp-slam >/dev/null || { echo "icp-slam not installed (mrpt-apps)"; e
 [ -f "$RAWLOG" ] || { echo "$RAWLOG missing (mrpt-common)"; exit 1; }
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 cd "$work"
-LD_PRELOAD="$GV_LIB" icp-slam "$INI" "$RAWLOG" > icp.log 2>&1 || { tail -20 icp.log; exit 1; }
+# GV_SANITIZER_PRELOAD (share/scripts/sanitize.sh): the ASan/UBSan runtimes, which must come first
+LD_PRELOAD="${GV_SANITIZER_PRELOAD:+$GV_SANITIZER_PRELOAD:}$GV_LIB" icp-slam "$INI" "$RAWLOG" > icp.log 2>&1 || { tail -20 icp.log; exit 1; }
 vec=$(ls LOG_ICP-SLAM-GV/*CGridVectorMap*_vectors.txt)
 rows=$(grep -vc '^#' "$vec")
 echo "icp-slam wrote $rows grid vectors to $(basename "$vec")"

@@ -39,3 +39,11 @@ TEST(ErrorText, ControlBytesOfACorruptFileDoNotReachTheTerminal)
 	EXPECT_EQ(gridvector::oneLineError(std::string("class 'a\x1b[2J\x01z' is not registered")),
 			  "class 'a?[2J?z' is not registered");
 }
+
+TEST(ErrorText, StrayHighBytesOfACorruptFileAreReplacedButUtf8NamesKept)
+{
+	// gv-map-info on binary garbage: MRPT quotes the "class name" it read, high bytes raw
+	EXPECT_EQ(gridvector::oneLineError(std::string("class '\xa5M\xca\x18%0' for file 'caf\xc3\xa9.gvmap'")),
+			  "class '?M??%0' for file 'caf\xc3\xa9.gvmap'");
+	EXPECT_EQ(gridvector::oneLineError(std::string("cut \xe2\x82")), "cut ??");  // a truncated sequence
+}

@@ -200,6 +200,7 @@ void mstepEdgeRanges(const MStepOptions& m, const Ranges& r)
 	r.atLeast("moved_gate_share", m.movedGateShare, 0.0);
 	r.atLeast("searched_near_distance", m.searchedNearDistance, 0.0);
 	r.degrees("searched_near_deg", m.searchedNearDeg);
+	r.within("register_min_incidence_deg", m.registerMinIncidenceDeg, 0.0, 90.0);  // an incidence is at most 90 deg
 	r.above("consistency_info_xy", m.consistencyInfoXY, 0.0);
 	r.above("consistency_info_phi", m.consistencyInfoPhi, 0.0);
 	r.atLeast("consistency_chain_var_xy", m.consistencyChainVarXY, 0.0);

@@ -1,4 +1,5 @@
 #include <gridvector/MStep.h>
+#include <gridvector/Incidence.h>
 #include <gridvector/SE2.h>
 
 #include <Eigen/Cholesky>
@@ -103,12 +104,20 @@ void MStep::setOdometry(std::vector<TPose2D> odometry)
 		path_[t] = path_[t - 1] + se2::distance(odometry_[t - 1], odometry_[t]);
 }
 
+// mstep.register_min_incidence_deg: a vector seen along its line can lie elsewhere than where a scan facing it puts
+// it, so registrations between viewpoints (overlap, loop) leave such vectors out; a sequential pair sees them alike.
+const MStep::Scans& MStep::registered(EdgeKind kind, const Scans& scans) const
+{
+	return cfg_.mstep.registerMinIncidenceDeg > 0 && kind != EdgeKind::Sequential ? facing_ : scans;
+}
+
 // Sec. 4.2: one constraint <j, i> of Eq. 21 by vector matching (Sohn & Kim 2008) of the two scans' static vectors.
 bool MStep::registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans& scans,
 						 const TPose2D& guess, Constraint& out, MStepReport& rep) const
 {
 	++rep.registrations;
-	const MatchResult r = matcher_.match(scans[from], scans[to], guess);
+	const Scans& v = registered(kind, scans);
+	const MatchResult r = matcher_.match(v[from], v[to], guess);
 	bool ok = r.ok();
 	if (ok && kind != EdgeKind::Sequential) ok = r.matchedShare >= cfg_.mstep.overlapMinShare;
 	if (!ok)
@@ -147,7 +156,8 @@ double MStep::overlapLength(uint32_t from, uint32_t to, const Scans& scans, cons
 	g.psi = cfg_.matcher.gatePsiInitialDeg * M_PI / 180;
 	g.rho = cfg_.matcher.gateRhoInitial;
 	g.minOverlap = cfg_.matcher.minOverlap;
-	return matcher_.correspondences(scans[from], scans[to], se2::relative(poses[from], poses[to]),
+	const Scans& v = registered(EdgeKind::Overlap, scans);
+	return matcher_.correspondences(v[from], v[to], se2::relative(poses[from], poses[to]),
 									g, nullptr);
 }
 
@@ -156,12 +166,12 @@ double MStep::overlapLength(uint32_t from, uint32_t to, const Scans& scans, cons
 bool MStep::correspondencesChanged(const Constraint& c, const Scans& scans, const Poses& poses) const
 {
 	const TPose2D rel = se2::relative(poses[c.from], poses[c.to]);
+	const Scans& v = registered(c.kind, scans);
 	std::vector<VectorPair> wide, tight;
-	matcher_.correspondences(scans[c.from], scans[c.to], rel,
-							 matcher_.finalGates(cfg_.mstep.recheckGateFactor), &wide);
+	matcher_.correspondences(v[c.from], v[c.to], rel, matcher_.finalGates(cfg_.mstep.recheckGateFactor), &wide);
 	if (!std::includes(wide.begin(), wide.end(), c.correspondences.begin(), c.correspondences.end()))
 		return true;
-	matcher_.correspondences(scans[c.from], scans[c.to], rel, matcher_.finalGates(), &tight);
+	matcher_.correspondences(v[c.from], v[c.to], rel, matcher_.finalGates(), &tight);
 	return !std::includes(c.correspondences.begin(), c.correspondences.end(), tight.begin(),
 						  tight.end());
 }
@@ -547,7 +557,7 @@ std::vector<EdgeKey> MStep::searchLoops(const Scans& scans, const Poses& poses, 
 			// the best registration against the pass's candidates (the most matched length)
 			uint32_t from = p.nearest;
 			const auto candidates = loopCandidates(p.nearest, p.members);
-			MatchResult best = bestLoop(scans, i, candidates, poses, from, rep);
+			MatchResult best = bestLoop(registered(EdgeKind::Loop, scans), i, candidates, poses, from, rep);
 			if (!best.ok() && cfg_.mstep.loopSearchAllVectors && all_.size() == scans.size() &&
 				(relabelled(i, scans) ||
 				 std::any_of(candidates.begin(), candidates.end(), [&](uint32_t j) { return relabelled(j, scans); })))
@@ -769,6 +779,7 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 	if (odometry_.size() != scans.size())
 		throw std::invalid_argument("MStep: odometry and scans differ in length");
 	const size_t before = constraints_.size();
+	if (cfg_.mstep.registerMinIncidenceDeg > 0) facing_ = facingVectors(scans, cfg_.mstep.registerMinIncidenceDeg);
 	changed_.assign(scans.size(), {});
 	if (changedChildren)
 		for (size_t t = 0; t < scans.size() && t < changedChildren->size(); ++t)

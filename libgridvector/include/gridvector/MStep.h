@@ -97,6 +97,10 @@ class MStep
 	using Scans = std::vector<std::vector<MatchSegment>>;
 	using Poses = std::vector<mrpt::math::TPose2D>;
 
+	/** The static vectors registrations of this kind use: all, or for overlap and loop edges those some beam saw
+	 * steeper than mstep.register_min_incidence_deg. */
+	const Scans& registered(EdgeKind kind, const Scans& scans) const;
+
 	void chainSequential(const Scans& scans, Poses& poses, MStepReport& rep);
 	/** Registers sequential pair (j, i) of the first M-step from `chained`, else (mstep.sequential_odometry_guess)
 	 * from the odometry between j and i. */
@@ -198,6 +202,7 @@ class MStep
 	bool movedSince(const mrpt::math::TPose2D& before, const mrpt::math::TPose2D& now) const;
 
 	GridVectorConfig cfg_;
+	Scans facing_;  //!< this M-step's static vectors seen steeper than mstep.register_min_incidence_deg
 	VectorMatcher matcher_;
 	LoopSearch loops_;
 	Scans all_;  //!< every vector of each scan (setAllVectors), empty if not set

@@ -205,13 +205,8 @@ void finalMap(EmResult& res, const EStep& estep, const std::vector<TPose2D>& ePo
 	res.staticMap = std::move(m.staticMap);
 	res.dynamicMap = std::move(m.dynamicMap);
 	res.finalMergeSeconds = since(t0);
-	for (auto* r : {&res.staticMap, &res.dynamicMap})
-		for (auto v : r->vectors)
-		{
-			v.state = r == &res.staticMap ? VectorState::Static : VectorState::Dynamic;
-			v.id = res.finalVectors.size() + 1;  // unique across both maps
-			res.finalVectors.push_back(std::move(v));
-		}
+	res.finalVectors = std::move(m.vectors);  // static then dynamic, their states set
+	for (size_t k = 0; k < res.finalVectors.size(); ++k) res.finalVectors[k].id = k + 1;  // unique across both maps
 }
 
 // Sec. 5.4: doors in the final map; a leaf state Eq. 6 kept static is a door state, so dynamic,

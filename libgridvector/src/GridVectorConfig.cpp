@@ -1,6 +1,7 @@
 #include <gridvector/GridVectorConfig.h>
 #include <gridvector/io/IniLayout.h>
 #include <gridvector/io/IniValue.h>
+#include <gridvector/io/TextParsing.h>
 
 #include <mrpt/config/CConfigFileMemory.h>
 
@@ -9,7 +10,6 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <charconv>
 #include <set>
 #include <sstream>
 #include <stdexcept>
@@ -131,14 +131,6 @@ std::string GridVectorConfig::parameterTableMarkdown(const std::string& prefix)
 
 namespace
 {
-// The shortest text that reads back as the same double.
-std::string shortest(double v)
-{
-	char buf[32];
-	const auto r = std::to_chars(buf, buf + sizeof buf, v);
-	return std::string(buf, r.ptr);
-}
-
 template <class T>
 bool assignNamed(T& field, double value, const std::string& name)
 {
@@ -199,7 +191,7 @@ std::string GridVectorConfig::toJson() const
 		g.visit([&](const char* key, auto& field, const char*) {
 			out << sep << "\"" << key << "\": ";
 			if constexpr (std::is_same_v<std::decay_t<decltype(field)>, bool>) out << (field ? "true" : "false");
-			else if (std::isfinite(double(field))) out << shortest(double(field));
+			else if (std::isfinite(double(field))) out << io::shortestText(double(field));
 			else out << "null";  // JSON has no inf/nan
 			sep = ", ";
 		});

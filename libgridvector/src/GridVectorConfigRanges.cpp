@@ -1,7 +1,7 @@
 // GridVectorConfig::validate: the valid range of every key, checked where a configuration is loaded.
 #include <gridvector/GridVectorConfig.h>
+#include <gridvector/io/TextParsing.h>
 
-#include <charconv>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -15,12 +15,7 @@ template <class T>
 std::string valueText(T v)
 {
 	if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
-	else if constexpr (std::is_floating_point_v<T>)
-	{
-		char buf[32];
-		const auto r = std::to_chars(buf, buf + sizeof buf, v);
-		return std::string(buf, r.ptr);
-	}
+	else if constexpr (std::is_floating_point_v<T>) return io::shortestText(v);
 	else return std::to_string(v);
 }
 

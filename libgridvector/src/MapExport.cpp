@@ -1,12 +1,12 @@
 #include <gridvector/MapExport.h>
 #include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/TextParsing.h>
 
 #include <mrpt/opengl/COpenGLScene.h>
 #include <mrpt/opengl/CSetOfLines.h>
 #include <mrpt/opengl/CSetOfObjects.h>
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,15 +17,6 @@ namespace gridvector
 {
 namespace
 {
-// MRPT keeps the grid's geometry in float: its shortest decimal that reads back to the same float
-// ("0.1", not the 0.100000001 of printing it at double precision), for map_server YAML.
-std::string shortestFloat(float v)
-{
-	char buf[32];
-	const auto r = std::to_chars(buf, buf + sizeof buf, v);
-	return std::string(buf, r.ptr);
-}
-
 /** Writers that pick their format from the extension get a temporary name
  * ending like the target; renamed over it when done. */
 std::string tempLike(const std::string& path)
@@ -113,8 +104,8 @@ void MapExport::writeRosMap(const mrpt::maps::COccupancyGridMap2D& grid, const s
 	io::writeFileAtomically(yamlPath, [&](std::ostream& y) {
 		y.precision(9);
 		y << "image: " << std::filesystem::path(pgmPath).filename().string() << "\n"
-		  << "resolution: " << shortestFloat(grid.getResolution()) << "\n"
-		  << "origin: [" << shortestFloat(grid.getXMin()) << ", " << shortestFloat(grid.getYMin()) << ", 0.0]\n"
+		  << "resolution: " << io::shortestText(grid.getResolution()) << "\n"
+		  << "origin: [" << io::shortestText(grid.getXMin()) << ", " << io::shortestText(grid.getYMin()) << ", 0.0]\n"
 		  << "negate: 0\n"
 		  << "occupied_thresh: 0.65\n"
 		  << "free_thresh: 0.196\n"

@@ -13,6 +13,20 @@ void parseError(const TextPos& pos, const std::string& msg)
 	throw std::runtime_error(pos.str() + ": " + msg);
 }
 
+namespace
+{
+template <class T>
+std::string shortestOf(T v)
+{
+	char buf[32];
+	const auto r = std::to_chars(buf, buf + sizeof buf, v);
+	return std::string(buf, r.ptr);
+}
+}  // namespace
+
+std::string shortestText(double v) { return shortestOf(v); }
+std::string shortestText(float v) { return shortestOf(v); }
+
 std::string printableToken(std::string_view tok)
 {
 	constexpr size_t kMax = 40;

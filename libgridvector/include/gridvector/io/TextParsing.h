@@ -24,6 +24,10 @@ struct TextPos
  * (a binary file's "token" can be any length and hold terminal control sequences). */
 std::string printableToken(std::string_view tok);
 
+/** The shortest decimal text that reads back as the same value ("0.1", not 0.100000001). */
+std::string shortestText(double v);
+std::string shortestText(float v);
+
 /** Splits at blanks (space, tab, CR). */
 std::vector<std::string_view> splitTokens(std::string_view line);
 

@@ -111,7 +111,7 @@ TEST(GridVectorConfig, MisspeltSectionIsAnErrorNamingIt)
 	// [gridvector_gird] would drop its keys silently: every [gridvector_...] section must be a group
 	EXPECT_EQ(loadError("[gridvector_gird]\nresolution = 0.05\n"),
 			  "my.ini: unknown section [gridvector_gird] (the gridvector_ sections are extraction, grid, map, estep, "
-			  "matcher, posegraph, mstep, doors, occupancy)");
+			  "matcher, posegraph, mstep, doors, occupancy, matching)");
 	// MRPT matches section names case-insensitively: so do we, and other programs' sections pass
 	EXPECT_EQ(loadError("[GridVector_Grid]\nresolution = 0.05\n[gv_sim]\nseed = 3\n[GridVectorNRD]\nuse_odometry = true\n"), "");
 	GridVectorConfig c;

@@ -65,6 +65,12 @@ inline mrpt::obs::CObservation2DRangeScan castScan(
 	return scan;
 }
 
+/** The outline of an axis-aligned box [x0,x1] x [y0,y1], seen from outside (a piece of furniture). */
+inline std::vector<Seg> box(double x0, double y0, double x1, double y1)
+{
+	return {{x0, y0, x0, y1}, {x0, y1, x1, y1}, {x1, y1, x1, y0}, {x1, y0, x0, y0}};
+}
+
 /** Axis-aligned rectangular room [x0,x1] x [y0,y1]. */
 inline std::vector<Seg> room(double x0, double y0, double x1, double y1)
 {

@@ -3,41 +3,15 @@
 //
 //   gv-map-info MAP.gvmap [--save OUT.gvmap]      (--save rewrites it in the current format version)
 //   gv-map-info --from-simplemap FILE.simplemap [--config FILE.ini] [--save OUT.gvmap]
-#include <gridvector/ErrorText.h>
 #include <gridvector/io/ArgParser.h>
 #include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/FileBytes.h>
-#include <mrpt/io/CFileGZInputStream.h>
+#include <gridvector/io/ObjectFile.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/maps/CSimpleMap.h>
-#include <mrpt/serialization/CArchive.h>
-#include <mrpt/system/filesystem.h>
 
 #include <iostream>
 #include <stdexcept>
 #include <string>
-
-namespace
-{
-template <class T>
-void readObject(const std::string& path, T& obj)
-{
-	if (!mrpt::system::fileExists(path)) throw std::runtime_error(path + ": no such file");
-	gridvector::io::checkReadableFile(path);  // a directory opened and failed in MRPT as "unknown error"
-	mrpt::io::CFileGZInputStream f;
-	if (!f.open(path)) throw std::runtime_error(path + ": cannot open");
-	try
-	{
-		auto a = mrpt::serialization::archiveFrom(f);
-		a >> obj;
-	}
-	catch (const std::exception& e)
-	{
-		throw std::runtime_error(path + ": not a valid " + obj.GetRuntimeClass()->className + " file (" +
-								 gridvector::oneLineError(e) + ")");
-	}
-}
-}  // namespace
 
 int main(int argc, char** argv)
 {
@@ -67,11 +41,11 @@ int main(int argc, char** argv)
 					map.setConfig(cfg);
 				}
 				mrpt::maps::CSimpleMap sm;
-				readObject(args.get("from-simplemap"), sm);
+				gridvector::io::readObjectFile(args.get("from-simplemap"), sm);
 				map.loadFromProbabilisticPosesAndObservations(sm);
 			}
 			else
-				readObject(args.positional()[0], map);
+				gridvector::io::readObjectFile(args.positional()[0], map);
 			std::cout << map.asString() << "\n";
 			if (args.has("save")) map.saveToFile(args.get("save"));
 			return 0;

@@ -257,6 +257,13 @@ void occupancyRanges(const OccupancyOptions& o, const std::string& prefix)
 	r.atLeast("margin", o.margin, 0.0);
 	r.within("samples_per_axis", o.samplesPerAxis, 0, 16);
 }
+
+// Beyond the paper: the map as MRPT's ICP reference.
+void matchingRanges(const MatchingOptions& m, const std::string& prefix)
+{
+	const Ranges r(prefix, "matching");
+	r.share("static_threshold", m.staticThreshold);
+}
 }  // namespace
 
 void GridVectorConfig::validate(const std::string& prefix) const
@@ -280,6 +287,7 @@ void GridVectorConfig::validate(const std::string& prefix) const
 	mstepLoopRanges(mstep, m);
 	doorRanges(doors, prefix);
 	occupancyRanges(occupancy, prefix);
+	matchingRanges(matching, prefix);
 }
 
 }  // namespace gridvector

@@ -222,8 +222,10 @@ expect 1 "room.log: cannot write" - -- "$B/gv-em-slam" --input room.log --out ro
 expect 1 "room.log: cannot write" - -- "$B/gv-map" --input room.log --poses log --out room.log --quiet
 expect 2 "--input and --out are required" - -- "$B/gv-em-slam"
 expect 2 "gv-bench-map: --band must be > 0 (metres), got -1" - -- "$B/gv-bench-map" room.log --band -1
+expect 2 "gv-bench-icp: --every must be in 2..1000000, got 1" - -- "$B/gv-bench-icp" room.log room.log --every 1
+expect 1 "gv-bench-icp: room.log: not a valid mrpt::maps::CGridVectorMap file" - -- "$B/gv-bench-icp" room.log traj.txt --map room.log
 # the tools converted to ArgParser: bad usage is one line and 2, --help is 0
-for tool in gv-map gv-em-slam gv-sim gv-eval gv-carmen2rawlog gv-bench-log gv-bench-map gv-bench-wipe gv-graphslam; do
+for tool in gv-map gv-em-slam gv-sim gv-eval gv-carmen2rawlog gv-bench-log gv-bench-map gv-bench-wipe gv-bench-icp gv-graphslam; do
   "$B/$tool" --help | head -1 | grep -q "^usage: $tool $tool" && fail "$tool --help: the usage line repeats the tool's name"
   "$B/$tool" --help | grep -q "^usage: $tool " || fail "$tool --help"
 done

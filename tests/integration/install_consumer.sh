@@ -17,3 +17,5 @@ sm="$GV_MRPT_DATASETS/localization_demo.simplemap.gz"
 "$GV_BIN/gv-map-info" --from-simplemap "$sm" --save "$work/demo.gvmap"
 LD_LIBRARY_PATH="$work/prefix/lib" "$work/consumer/gv-consumer" "$work/demo.gvmap" | tee "$work/out.txt"
 grep -q "^CGridVectorMap: [1-9][0-9]* grid vectors" "$work/out.txt"
+# ... and localises the scan it inserted against the map with MRPT's ICP (CICP on the grid-vector map)
+grep -q "^ICP: pose \[" "$work/out.txt"

@@ -407,6 +407,19 @@ struct DoorOptions
 	}
 };
 
+/** Beyond the paper: CGridVectorMap as the reference map of MRPT's ICP
+ * (determineMatching2D and friends; see StaticFootPoints). */
+struct MatchingOptions
+{
+	double staticThreshold = 0.50;  //!< a column takes part when its Fig. 4 profile is at least this
+
+	template <class V>
+	void visit(V&& v)
+	{
+		v("static_threshold", staticThreshold, "Beyond the paper (CGridVectorMap::determineMatching2D, MRPT's ICP against the map): a scan point corresponds to the nearest point of the vectors' stretches whose columns the E-step's occupancy profile (Fig. 4, estep.use_peak_row / min_visits / free_weight) puts at or above this, on vectors not classified dynamic (Eq. 14); 0.5 is estep.static_threshold's default (Eq. 14's split); 0: every column of every vector not classified dynamic");
+	}
+};
+
 /** All parameters of gridvector. Sections in an .ini file are named
  * `<prefix>_<group>`: e.g. [gridvector_extraction], [gridvector_grid]. */
 struct GridVectorConfig
@@ -420,6 +433,7 @@ struct GridVectorConfig
 	MStepOptions mstep;
 	DoorOptions doors;
 	OccupancyOptions occupancy;
+	MatchingOptions matching;
 
 	template <class V>
 	void visitGroups(V&& v)
@@ -433,6 +447,7 @@ struct GridVectorConfig
 		v("mstep", mstep);
 		v("doors", doors);
 		v("occupancy", occupancy);
+		v("matching", matching);
 	}
 
 	/** Reads every `<prefix>_<group>` section present. Throws std::runtime_error

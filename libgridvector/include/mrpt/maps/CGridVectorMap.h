@@ -78,6 +78,31 @@ class CGridVectorMap : public CMetricMap
 	/** Vectors as line segments coloured by p_static (blue static .. red dynamic). */
 	void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;
 
+	// --- CMetricMap matching: the map as the reference ("this", m1) of mrpt::slam::CICP (icpClassic) ---
+	/** Each point of `otherMap` (a CPointsMap; std::invalid_argument otherwise), moved by
+	 * otherMapPose, is paired with the nearest point of the map's static stretches
+	 * (gridvector::StaticFootPoints: columns whose Fig. 4 profile is at least
+	 * matching.static_threshold, on vectors not classified dynamic) closer than
+	 * params.maxDistForCorrespondence + params.maxAngularDistForCorrespondence x its distance to
+	 * params.angularDistPivotPoint. Pairs: `global` = that point on the vector's line (z = the
+	 * point's z), globalIdx = the vector's index in vectors(); `local` = the point in the other
+	 * map's own frame, localIdx its index; errorSquareAfterTransformation = the squared distance.
+	 * onlyKeepTheClosest = false: one pair per vector within the gate. onlyUniqueRobust: one pair
+	 * per (vector, grid column), the closest. Points offset, offset + decimation, ... are used.
+	 * extraResults: sumSqrDist = the sum over the points with a correspondence of the closest
+	 * squared distance (as COccupancyGridMap2D and the header's contract; CPointsMap gives the
+	 * mean); correspondencesRatio = those points / the points used. */
+	void determineMatching2D(const mrpt::maps::CMetricMap* otherMap, const mrpt::poses::CPose2D& otherMapPose,
+							 mrpt::tfest::TMatchingPairList& correspondences, const TMatchingParams& params,
+							 TMatchingExtraResults& extraResults) const override;
+	/** The share of the other map's points (a CPointsMap), moved by the 3D pose and projected on
+	 * the plane, within params.maxDistForCorr of a static stretch. */
+	float compute3DMatchingRatio(const mrpt::maps::CMetricMap* otherMap, const mrpt::poses::CPose3D& otherMapPose,
+								 const TMatchingRatioParams& params) const override;
+	/** Squared distance from (x0, y0) to the nearest point of a static stretch, no gate
+	 * (float max if the map has none). */
+	float squareDistanceToClosestCorrespondence(float x0, float y0) const override;
+
 	MAP_DEFINITION_START(CGridVectorMap)
 	gridvector::GridVectorConfig config;  //!< all mapping parameters
 	TLikelihoodOptions likelihoodOpts;

@@ -1,0 +1,376 @@
+// CGridVectorMap as the reference map of MRPT's ICP: determineMatching2D's pairs,
+// gate, decimation and ratios on a known map; CICP aligning scans against a map
+// built from other scans; dynamic vectors (a door state, a person) left out.
+#include <gridvector/GridVector.h>
+#include <gridvector/SE2.h>
+#include <gtest/gtest.h>
+#include <mrpt/maps/CGridVectorMap.h>
+#include <mrpt/maps/CSimplePointsMap.h>
+#include <mrpt/poses/CPose2D.h>
+#include <mrpt/poses/CPose3D.h>
+#include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/slam/CICP.h>
+
+#include <cmath>
+#include <random>
+
+#include "test_scans.h"
+
+using gridvector::GridOptions;
+using gridvector::GridVector;
+using mrpt::maps::CGridVectorMap;
+using mrpt::maps::CSimplePointsMap;
+using mrpt::maps::TMatchingExtraResults;
+using mrpt::maps::TMatchingParams;
+using mrpt::math::TPoint2D;
+using mrpt::math::TPose2D;
+using mrpt::poses::CPose2D;
+using mrpt::tfest::TMatchingPairList;
+
+namespace
+{
+/** A map holding exactly these vectors (prior grids: every column reads static). */
+CGridVectorMap mapOf(const std::vector<GridVector>& vs, const gridvector::GridVectorConfig& cfg = {})
+{
+	CGridVectorMap m(cfg);
+	m.globalMap().setVectors(vs);
+	return m;
+}
+
+GridVector wall(double x1, double y1, double x2, double y2) { return GridVector({x1, y1}, {x2, y2}, GridOptions{}); }
+
+/** Columns [c0, c1) of v seen through `times` times after one hit: profile 1 / (1 + times). */
+void seenThrough(GridVector& v, int c0, int c1, int times)
+{
+	for (int c = c0; c < c1; ++c)
+		for (int r = 0; r < v.rows(); ++r) v.cell(r, c).n_occupy = 1, v.cell(r, c).n_visit = float(1 + times);
+}
+
+CSimplePointsMap pointsOf(const std::vector<TPoint2D>& ps)
+{
+	CSimplePointsMap m;
+	for (const auto& p : ps) m.insertPoint(float(p.x), float(p.y), 0);
+	return m;
+}
+
+/** Local coordinates of world point w seen from pose x. */
+TPoint2D localOf(const TPose2D& x, const TPoint2D& w)
+{
+	const double c = std::cos(x.phi), s = std::sin(x.phi), dx = w.x - x.x, dy = w.y - x.y;
+	return {c * dx + s * dy, -s * dx + c * dy};
+}
+
+TMatchingParams gate(double d)
+{
+	TMatchingParams p;
+	p.maxDistForCorrespondence = float(d);
+	p.maxAngularDistForCorrespondence = 0;
+	return p;
+}
+}  // namespace
+
+TEST(GridVectorMapMatching, PairsAreTheExactFootPointsOnTheVectorWithinTheGate)
+{
+	const CGridVectorMap map = mapOf({wall(0, 0, 4, 0)});
+	const TPose2D pose(1, 0.5, M_PI / 2);
+	// world points: above the wall, beyond its end (1 m), before its start (0.36 m), 0.45 m above it
+	const std::vector<TPoint2D> world{{2, 0.1}, {5, 0}, {-0.3, 0.2}, {3, 0.45}};
+	std::vector<TPoint2D> local;
+	for (const auto& w : world) local.push_back(localOf(pose, w));
+	const CSimplePointsMap pts = pointsOf(local);
+	TMatchingPairList pairs;
+	TMatchingExtraResults extra;
+	map.determineMatching2D(&pts, CPose2D(pose), pairs, gate(0.5), extra);
+	ASSERT_EQ(pairs.size(), 3u);
+	const TPoint2D feet[] = {{2, 0}, {0, 0}, {3, 0}};
+	const size_t idx[] = {0, 2, 3};
+	for (size_t k = 0; k < 3; ++k)
+	{
+		EXPECT_EQ(pairs[k].globalIdx, 0u);
+		EXPECT_EQ(pairs[k].localIdx, idx[k]);
+		EXPECT_NEAR(pairs[k].global.x, feet[k].x, 1e-5);
+		EXPECT_NEAR(pairs[k].global.y, feet[k].y, 1e-5);
+		EXPECT_NEAR(pairs[k].local.x, local[idx[k]].x, 1e-5);  // the other map's own frame
+		EXPECT_NEAR(pairs[k].local.y, local[idx[k]].y, 1e-5);
+		const double d2 = std::pow(world[idx[k]].x - feet[k].x, 2) + std::pow(world[idx[k]].y - feet[k].y, 2);
+		EXPECT_NEAR(pairs[k].errorSquareAfterTransformation, d2, 1e-5);
+	}
+	EXPECT_FLOAT_EQ(extra.correspondencesRatio, 0.75f);
+	EXPECT_NEAR(extra.sumSqrDist, 0.01 + 0.13 + 0.2025, 1e-5);
+}
+
+TEST(GridVectorMapMatching, GateGrowsWithTheDistanceFromThePivot)
+{
+	const CGridVectorMap map = mapOf({wall(0, 0, 4, 0)});
+	const CSimplePointsMap pts = pointsOf({{5, 0}});  // 1 m beyond the wall's end
+	TMatchingPairList pairs;
+	TMatchingExtraResults extra;
+	TMatchingParams p = gate(0.5);
+	p.maxAngularDistForCorrespondence = 0.1f;
+	p.angularDistPivotPoint = {4.5, 0, 0};  // 0.5 m away: gate 0.55
+	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra);
+	EXPECT_TRUE(pairs.empty());
+	p.angularDistPivotPoint = {-5, 0, 0};  // 10 m away: gate 1.5
+	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra);
+	ASSERT_EQ(pairs.size(), 1u);
+	EXPECT_NEAR(pairs[0].global.x, 4, 1e-5);
+	EXPECT_FLOAT_EQ(extra.correspondencesRatio, 1.f);
+}
+
+TEST(GridVectorMapMatching, DecimationAndOffsetPickThePointsUsed)
+{
+	const CGridVectorMap map = mapOf({wall(0, 0, 4, 0)});
+	// points 0..5 along the wall at 0.1 m, except 3 and 5, 2 m away
+	const CSimplePointsMap pts = pointsOf({{0.5, 0.1}, {1, 0.1}, {1.5, 0.1}, {2, 2}, {2.5, 0.1}, {3, 2}});
+	TMatchingPairList pairs;
+	TMatchingExtraResults extra;
+	TMatchingParams p = gate(0.5);
+	p.decimation_other_map_points = 2;
+	p.offset_other_map_points = 1;  // points 1, 3, 5
+	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra);
+	ASSERT_EQ(pairs.size(), 1u);
+	EXPECT_EQ(pairs[0].localIdx, 1u);
+	EXPECT_FLOAT_EQ(extra.correspondencesRatio, 1.f / 3.f);
+	p.offset_other_map_points = 0;  // points 0, 2, 4
+	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra);
+	ASSERT_EQ(pairs.size(), 3u);
+	EXPECT_EQ(pairs[2].localIdx, 4u);
+	EXPECT_FLOAT_EQ(extra.correspondencesRatio, 1.f);
+	p.offset_other_map_points = 2;
+	EXPECT_THROW(map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra), std::invalid_argument);
+}
+
+TEST(GridVectorMapMatching, AllCorrespondencesOrTheClosestOrOnePerMapPlace)
+{
+	// two parallel walls 0.3 m apart; a point between them, 0.1 m from the lower one
+	const CGridVectorMap map = mapOf({wall(0, 0, 4, 0), wall(4, 0.3, 0, 0.3)});
+	const CSimplePointsMap pts = pointsOf({{2, 0.1}, {2.01, 0.12}});
+	TMatchingPairList pairs;
+	TMatchingExtraResults extra;
+	TMatchingParams p = gate(0.5);
+	p.onlyKeepTheClosest = false;
+	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra);
+	EXPECT_EQ(pairs.size(), 4u);  // each point to both walls
+	EXPECT_NEAR(extra.sumSqrDist, 0.01 + 0.0144, 1e-5);  // the closest per point
+	p.onlyKeepTheClosest = true;
+	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra);
+	ASSERT_EQ(pairs.size(), 2u);
+	EXPECT_EQ(pairs[0].globalIdx, 0u);
+	EXPECT_EQ(pairs[1].globalIdx, 0u);
+	p.onlyUniqueRobust = true;  // both feet in column 20 of the lower wall: the closer point stays
+	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra);
+	ASSERT_EQ(pairs.size(), 1u);
+	EXPECT_EQ(pairs[0].localIdx, 0u);
+	EXPECT_FLOAT_EQ(extra.correspondencesRatio, 1.f);
+}
+
+TEST(GridVectorMapMatching, DynamicVectorsAndSeenThroughColumnsGiveNoCorrespondence)
+{
+	GridVector door = wall(0, 1, 1, 1);
+	door.state = gridvector::VectorState::Dynamic;  // Eq. 14: c = 0
+	GridVector w = wall(0, 0, 4, 0);
+	seenThrough(w, 0, 10, 9);  // its first metre reads 0.1
+	const CGridVectorMap map = mapOf({w, door});
+	const CSimplePointsMap pts = pointsOf({{0.5, 1.05}, {0.5, 0.1}, {2, 0.1}});
+	TMatchingPairList pairs;
+	TMatchingExtraResults extra;
+	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, gate(1.5), extra);
+	ASSERT_EQ(pairs.size(), 3u);
+	for (const auto& m : pairs) EXPECT_EQ(m.globalIdx, 0u);  // never the door
+	EXPECT_NEAR(pairs[1].global.x, 1.0, 1e-5);  // the static stretch starts at 1 m
+	EXPECT_NEAR(pairs[2].global.x, 2.0, 1e-5);
+	// with static_threshold 0 the seen-through stretch takes part (the dynamic vector still not)
+	gridvector::GridVectorConfig all;
+	all.matching.staticThreshold = 0;
+	const CGridVectorMap mapAll = mapOf({w, door}, all);
+	mapAll.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, gate(1.5), extra);
+	ASSERT_EQ(pairs.size(), 3u);
+	EXPECT_NEAR(pairs[1].global.x, 0.5, 1e-5);
+}
+
+TEST(GridVectorMapMatching, NearestDistanceAndMatchingRatio)
+{
+	const CGridVectorMap map = mapOf({wall(0, 0, 4, 0)});
+	EXPECT_NEAR(map.squareDistanceToClosestCorrespondence(2, 10), 100, 1e-3);  // beyond every index query box
+	EXPECT_NEAR(map.squareDistanceToClosestCorrespondence(7, 4), 25, 1e-3);
+	EXPECT_NEAR(map.squareDistanceToClosestCorrespondence(1, -0.2f), 0.04, 1e-6);
+	const CSimplePointsMap pts = pointsOf({{1, 0.05}, {2, 0.3}, {3, -0.02}, {9, 0}});
+	mrpt::maps::TMatchingRatioParams rp;
+	rp.maxDistForCorr = 0.1f;
+	EXPECT_FLOAT_EQ(map.compute3DMatchingRatio(&pts, mrpt::poses::CPose3D(), rp), 0.5f);
+	EXPECT_FLOAT_EQ(map.compute3DMatchingRatio(&pts, mrpt::poses::CPose3D(0, -0.3, 0, 0, 0, 0), rp), 0.25f);
+	EXPECT_EQ(mapOf({}).squareDistanceToClosestCorrespondence(0, 0), std::numeric_limits<float>::max());
+}
+
+TEST(GridVectorMapMatching, OtherMapMustBeAPointsMap)
+{
+	const CGridVectorMap map = mapOf({wall(0, 0, 4, 0)});
+	TMatchingPairList pairs;
+	TMatchingExtraResults extra;
+	EXPECT_THROW(map.determineMatching2D(&map, CPose2D(), pairs, gate(0.5), extra), std::invalid_argument);
+	EXPECT_THROW(map.compute3DMatchingRatio(&map, mrpt::poses::CPose3D(), {}), std::invalid_argument);
+}
+
+// ---------------------------------------------------------------------------------------------
+// CICP against a map built from simulated scans.
+
+namespace
+{
+using gvtest::Seg;
+
+/** A corridor (y 0..2, x 0..10) with a door gap at x 4..5 in its south wall into a room
+ * (x 2.5..7, y -4..0), a pillar in the corridor's east end and a recess in its north wall. */
+std::vector<Seg> corridorWorld()
+{
+	std::vector<Seg> w{{0, 0, 4, 0},		{5, 0, 10, 0},	  {10, 0, 10, 2},	{10, 2, 6.5, 2},   {6.5, 2, 6.5, 2.6},
+					   {6.5, 2.6, 5.5, 2.6}, {5.5, 2.6, 5.5, 2}, {5.5, 2, 0, 2},	{0, 2, 0, 0},	   {2.5, 0, 2.5, -4},
+					   {2.5, -4, 7, -4},	 {7, -4, 7, 0}};
+	const auto pillar = gvtest::box(8.5, 0.8, 8.9, 1.2);
+	w.insert(w.end(), pillar.begin(), pillar.end());
+	return w;
+}
+const Seg kDoorClosed{4, 0, 5, 0};
+/** A trolley (0.8 x 0.4 m) parked in the corridor. A standing person, a disc of the simulator's
+ * 0.2-0.28 m radius, makes no grid vector at all (the arc's pieces under the split threshold stay
+ * shorter than extraction.min_length), so the thing left standing here is a box. */
+const std::vector<Seg> kTrolley = gvtest::box(5.6, 1.3, 6.4, 1.7);
+
+/** A 270-degree scan at pose x, 1 cm range noise. */
+mrpt::obs::CObservation2DRangeScan scanOf(const TPose2D& x, const std::vector<Seg>& walls, const std::vector<gvtest::Disc>& discs,
+										  unsigned seed)
+{
+	auto scan = gvtest::castScan(x, walls, discs, 541, 1.5 * M_PI, 30.0);
+	std::mt19937 rng(seed);
+	std::normal_distribution<float> n(0.f, 0.01f);
+	for (size_t i = 0; i < scan.getScanSize(); ++i)
+		if (scan.getScanRangeValidity(i)) scan.setScanRange(i, scan.getScanRange(i) + n(rng));
+	return scan;
+}
+
+/** The map from scans along the corridor (x 1..9 at y 0.8): the door closed and the trolley
+ * there in the first 3 scans, the door open and the trolley gone in the other 9. */
+CGridVectorMap corridorMap(const gridvector::GridVectorConfig& cfg = {})
+{
+	CGridVectorMap map(cfg);
+	for (int k = 0; k < 12; ++k)
+	{
+		const TPose2D x(1.0 + 8.0 * k / 11, 0.8 + 0.1 * std::sin(k), 0.15 * std::cos(1.3 * k));
+		auto walls = corridorWorld();
+		if (k < 3)
+		{
+			walls.push_back(kDoorClosed);
+			walls.insert(walls.end(), kTrolley.begin(), kTrolley.end());
+		}
+		else
+			walls.push_back({4, 0, 4, -0.9});  // the leaf swung into the room
+		map.insertObservation(scanOf(x, walls, {}, 100 + k), mrpt::poses::CPose3D(CPose2D(x)));
+	}
+	return map;
+}
+
+CSimplePointsMap scanPoints(const mrpt::obs::CObservation2DRangeScan& scan)
+{
+	CSimplePointsMap pts;
+	pts.insertionOptions.minDistBetweenLaserPoints = 0;
+	pts.loadFromRangeScan(scan);
+	return pts;
+}
+
+/** CICP from `guess` to the pose of the scan's points against the map. */
+TPose2D icpAlign(const CGridVectorMap& map, const CSimplePointsMap& pts, const TPose2D& guess,
+				 mrpt::slam::TICPAlgorithm algo)
+{
+	mrpt::slam::CICP icp;
+	icp.options.ICP_algorithm = algo;
+	icp.options.maxIterations = 100;
+	icp.options.thresholdDist = 0.75f;
+	icp.options.thresholdAng = float(0.15 * M_PI / 180);
+	icp.options.ALFA = 0.5f;
+	icp.options.smallestThresholdDist = 0.05f;
+	icp.options.corresponding_points_decimation = 1;
+	mrpt::slam::CICP::TReturnInfo info;
+	const auto pdf = icp.Align(&map, &pts, CPose2D(guess), info);
+	return pdf->getMeanVal().asTPose();
+}
+
+double angleErr(double a, double b) { return std::abs(std::remainder(a - b, 2 * M_PI)); }
+}  // namespace
+
+TEST(GridVectorMapMatching, IcpClassicRecoversTheScanPoseFromA30cm5degGuess)
+{
+	const CGridVectorMap map = corridorMap();
+	// poses between the mapping poses, the scene as the later scans saw it (door open, nobody)
+	auto walls = corridorWorld();
+	walls.push_back({4, 0, 4, -0.9});
+	const TPose2D truths[] = {{2.3, 1.1, 0.3}, {4.6, 0.7, -0.2}, {7.2, 1.2, 0.1}, {8.0, 0.6, 2.8}};
+	const TPose2D offsets[] = {{0.3, 0, 5 * M_PI / 180}, {0, -0.3, -5 * M_PI / 180}, {-0.21, 0.21, 5 * M_PI / 180},
+							   {0.21, 0.21, -5 * M_PI / 180}};
+	for (size_t k = 0; k < 4; ++k)
+	{
+		const CSimplePointsMap pts = scanPoints(scanOf(truths[k], walls, {}, 7 + k));
+		const TPose2D guess = gridvector::se2::compose(truths[k], offsets[k]);
+		const TPose2D est = icpAlign(map, pts, guess, mrpt::slam::icpClassic);
+		// 1 cm range noise on ~500 points and walls fitted from 12 such scans: a few mm; the
+		// tolerance is ICP's last correspondence gate's tenth (smallestThresholdDist 5 cm)
+		EXPECT_LT(std::hypot(est.x - truths[k].x, est.y - truths[k].y), 0.01) << "pose " << k << " est " << est.asString();
+		EXPECT_LT(angleErr(est.phi, truths[k].phi), 0.2 * M_PI / 180) << "pose " << k << " est " << est.asString();
+	}
+}
+
+TEST(GridVectorMapMatching, IcpLevenbergMarquardtNeedsAPointsMapAsReferenceInMrpt25)
+{
+	// MRPT 2.5's CICP::ICP_Method_LM asserts that m1 derives from CPointsMap (it calls
+	// CPointsMap::squareDistanceToClosestCorrespondence through the points map's kd-tree): the
+	// grid-vector map can be the reference of icpClassic only (doc/mrpt-integration.md).
+	const CGridVectorMap map = corridorMap();
+	const CSimplePointsMap pts = scanPoints(scanOf({2.3, 1.1, 0.3}, corridorWorld(), {}, 3));
+	EXPECT_ANY_THROW(icpAlign(map, pts, {2.3, 1.1, 0.3}, mrpt::slam::icpLevenbergMarquardt));
+}
+
+TEST(GridVectorMapMatching, DoorStateAndTrolleySeenOnlyEarlyGetNoCorrespondences)
+{
+	const CGridVectorMap map = corridorMap();
+	gridvector::GridVectorConfig allCfg;
+	allCfg.matching.staticThreshold = 0;
+	const CGridVectorMap mapAll = corridorMap(allCfg);
+	// a scan that sees the early scene again: the door closed, the trolley back at its place
+	auto walls = corridorWorld();
+	walls.push_back(kDoorClosed);
+	walls.insert(walls.end(), kTrolley.begin(), kTrolley.end());
+	const TPose2D truth(3.0, 1.0, -0.3);
+	const CSimplePointsMap pts = scanPoints(scanOf(truth, walls, {}, 42));
+	auto onDoor = [](const mrpt::tfest::TMatchingPair& m) {
+		return m.global.x > 4.1 && m.global.x < 4.9 && std::abs(m.global.y) < 0.1;
+	};
+	auto onTrolley = [](const mrpt::tfest::TMatchingPair& m) {
+		return m.global.x > 5.5 && m.global.x < 6.5 && m.global.y > 1.2 && m.global.y < 1.8;
+	};
+	auto count = [&](const CGridVectorMap& m, auto&& on) {
+		TMatchingPairList pairs;
+		TMatchingExtraResults extra;
+		m.determineMatching2D(&pts, CPose2D(truth), pairs, gate(0.3), extra);
+		size_t n = 0;
+		for (const auto& pr : pairs) n += on(pr);
+		return n;
+	};
+	// with every column, the door's closed state and the trolley are in the map and take points
+	EXPECT_GT(count(mapAll, onDoor), 10u);
+	EXPECT_GT(count(mapAll, onTrolley), 10u);
+	EXPECT_EQ(count(map, onDoor), 0u);
+	EXPECT_EQ(count(map, onTrolley), 0u);
+	// ICP from a 0.3 m / 5 deg guess in the scene as it is now: the door half open (45 deg), the
+	// trolley back but 0.3 m further east. On the static stretches the pose comes out as in the
+	// static scene (< 1 cm, 0.2 deg); with every column the trolley's old faces pull the scan
+	// towards where it stood (4.5 cm, 0.28 deg)
+	auto now = corridorWorld();
+	now.push_back({4, 0, 4.64, -0.64});
+	const auto moved = gvtest::box(5.9, 1.3, 6.7, 1.7);
+	now.insert(now.end(), moved.begin(), moved.end());
+	const CSimplePointsMap ptsNow = scanPoints(scanOf(truth, now, {}, 42));
+	const TPose2D guess = gridvector::se2::compose(truth, TPose2D(0.3, 0, 5 * M_PI / 180));
+	const TPose2D est = icpAlign(map, ptsNow, guess, mrpt::slam::icpClassic);
+	const TPose2D estAll = icpAlign(mapAll, ptsNow, guess, mrpt::slam::icpClassic);
+	EXPECT_LT(std::hypot(est.x - truth.x, est.y - truth.y), 0.01) << est.asString();
+	EXPECT_LT(angleErr(est.phi, truth.phi), 0.2 * M_PI / 180) << est.asString();
+	EXPECT_GT(std::hypot(estAll.x - truth.x, estAll.y - truth.y), 0.03) << estAll.asString();
+}

@@ -51,7 +51,8 @@ int main(int argc, char** argv)
 
 	// ICP against the map (its static vectors): the scan as a points map, aligned from a guess
 	// 10 cm / 2 deg off. The grid-vector map is the reference (m1); icpClassic only (MRPT 2.5's
-	// icpLevenbergMarquardt needs a CPointsMap there).
+	// icpLevenbergMarquardt needs a CPointsMap there). One wall fixes x and the heading, not the
+	// position along it.
 	mrpt::maps::CSimplePointsMap points;
 	points.loadFromRangeScan(scan);
 	mrpt::slam::CICP icp;

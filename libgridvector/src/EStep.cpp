@@ -119,6 +119,7 @@ std::vector<GridVector> EStep::split(const GridVector& parent,
 	return out;
 }
 
+// Fig. 4 and Eq. 14: the profile (with hysteresis), its pieces, one child per piece.
 std::vector<GridVector> EStep::pieceVectors(const GridVector& parent, const std::vector<ProfilePiece>& previous,
 											std::vector<ProfilePiece>* piecesOut) const
 {

@@ -92,6 +92,7 @@ std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<
 	return out;
 }
 
+// Beyond the paper (Sec. 4 runs over every scan): the scans EM works on.
 std::vector<size_t> EmSlam::keyframes(const std::vector<TPose2D>& odometry, const MStepOptions& o)
 {
 	std::vector<size_t> k;
@@ -132,6 +133,7 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 	return res;
 }
 
+// Beyond the paper: a scan between two keyframes from the odometry of both, blended by time.
 std::vector<TPose2D> EmSlam::expand(const std::vector<TPose2D>& kp, const std::vector<size_t>& key,
 									const std::vector<TPose2D>& odometry)
 {

@@ -72,6 +72,7 @@ std::vector<LoopSearch::Corner> LoopSearch::corners(const std::vector<MatchSegme
 	return out;
 }
 
+// Beyond the paper (Sec. 5.1: "loop detection" is not specified): corner pairs inside the window.
 std::vector<TPose2D> LoopSearch::hypotheses(const std::vector<MatchSegment>& a,
 											const std::vector<MatchSegment>& b, const TPose2D& prior,
 											const LoopWindow& w) const
@@ -146,6 +147,7 @@ bool LoopSearch::ambiguous(const MatchResult& best, const std::vector<MatchResul
 	return false;
 }
 
+// Beyond the paper: the hypotheses refined by the matcher (Sec. 4.2), kept if unambiguous and non-degenerate.
 MatchResult LoopSearch::search(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b,
 							   const TPose2D& prior, const LoopWindow& w) const
 {

@@ -150,6 +150,7 @@ Constraint MStep::constraintOf(const EdgeKey& key, EdgeKind kind, const MatchRes
 	return c;
 }
 
+// Sec. 4.3: how far two scans' ranges "cover each other": their static vectors' corresponding length at the estimate.
 double MStep::overlapLength(uint32_t from, uint32_t to, const Scans& scans, const Poses& poses) const
 {
 	MatchGates g;
@@ -447,6 +448,7 @@ bool MStep::searchedNear(uint32_t i, uint32_t jlo, uint32_t jhi, const Poses& po
 	return false;
 }
 
+// Beyond the paper (Sec. 5.1: no loop detection): the loop-search window from the odometry model along the path.
 LoopWindow MStep::windowOf(uint32_t from, uint32_t to) const
 {
 	const auto& o = cfg_.posegraph;
@@ -686,6 +688,7 @@ Matrix3d MStep::graphInformation(const Constraint& c) const
 	return cfg_.mstep.informationInEdgeFrame ? PoseGraph::errorFrameInformation(c.information, c.z) : c.information;
 }
 
+// Eq. 20-22: the odometry edges (u^t) and the active registrations of static vectors, Eq. 22 minimised.
 std::vector<EdgeKey> MStep::optimise(Poses& poses, MStepReport& rep, bool count)
 {
 	graph_.setNodes(poses);
@@ -771,6 +774,7 @@ bool MStep::reregisterMoved(const Scans& scans, Poses& poses, const std::vector<
 	return true;
 }
 
+// Sec. 4.2-4.3: one M-step: the changed constraints of Eq. 24 (re-)registered, Eq. 22 re-optimised if any; Fig. 11's share.
 MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::vector<uint64_t>>* changedChildren)
 {
 	const auto t0 = std::chrono::steady_clock::now();

@@ -58,6 +58,7 @@ Matrix3d PoseGraph::errorFrameInformation(const Matrix3d& information, const TPo
 	return D.transpose() * information * D;
 }
 
+// Eq. 20-21: Sigma^-1 of an odometry (u_t) edge from the motion model (posegraph.odometry_sigma_*).
 Matrix3d PoseGraph::odometryInformation(const TPose2D& d, const PoseGraphOptions& o)
 {
 	const double dist = std::hypot(d.x, d.y);
@@ -138,6 +139,7 @@ void PoseGraph::updateShares()
 	for (size_t k = 0; k < edges_.size(); ++k) edges_[k].share = w[k];
 }
 
+// Eq. 22 (robust kernel and chi2 rejection beyond the paper) by the built-in LM or MRPT's, in place of Eq. 23.
 OptimizeStats PoseGraph::optimize()
 {
 	const auto t0 = std::chrono::steady_clock::now();

@@ -208,6 +208,7 @@ double VectorMatcher::rotateAboutMatchedCentre(TPose2D& T) const
 	return dphi;
 }
 
+// Sec. 3.2's criteria at a fixed pose: an edge's M_cor (Eq. 25) and Sec. 4.3's overlap test.
 double VectorMatcher::correspondences(const std::vector<MatchSegment>& a,
 									  const std::vector<MatchSegment>& b, const TPose2D& pose,
 									  const MatchGates& gates, std::vector<VectorPair>* out) const

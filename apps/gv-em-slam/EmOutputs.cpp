@@ -1,5 +1,6 @@
 #include "EmOutputs.h"
 
+#include <gridvector/Version.h>
 #include <gridvector/io/AtomicFile.h>
 
 #include <mrpt/maps/CGridVectorMap.h>
@@ -150,7 +151,9 @@ void writeReport(const std::string& path, const RunFigures& run, const EmResult&
 		double ls = 0, ld = 0;
 		for (const auto& v : res.finalVectors)
 			(v.state == VectorState::Dynamic ? nd : ns)++, (v.state == VectorState::Dynamic ? ld : ls) += v.length();
-		o << "{\n  \"input\": " << jsonString(run.input) << ",\n  \"config\": " << run.configJson << ",\n  \"scans\": " << run.scans
+		o << "{\n  \"version\": {\"gridvector\": " << jsonString(version()) << ", \"git\": " << jsonString(gitDescription())
+		  << ", \"mrpt\": " << jsonString(mrptVersion()) << "},\n  \"input\": " << jsonString(run.input)
+		  << ",\n  \"init\": " << (run.init.empty() ? "null" : jsonString(run.init)) << ",\n  \"config\": " << run.configJson << ",\n  \"scans\": " << run.scans
 		  << ",\n  \"local_vectors\": " << run.localVectors << ",\n  \"keyframes\": " << res.keyframes
 		  << ",\n  \"iterations_run\": " << res.iterations.size()
 		  << ",\n  \"converged\": " << (res.converged ? "true" : "false") << ",\n  \"iterations\": [\n";

@@ -28,6 +28,7 @@ void writeGvmap(const std::string& path, const GridVectorConfig& cfg, const std:
 struct RunFigures
 {
 	std::string input;
+	std::string init;  //!< --init's trajectory file; empty: raw odometry
 	size_t scans = 0, localVectors = 0;
 	double readSeconds = 0, extractSeconds = 0, emSeconds = 0, outputSeconds = 0, totalSeconds = 0;
 	size_t doors = 0;

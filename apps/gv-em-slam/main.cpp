@@ -104,6 +104,7 @@ int run(const io::ArgParser& args)
 
 	app::RunFigures fig;
 	fig.input = input;
+	fig.init = args.get("init");
 	fig.configJson = cfg.toJson();
 	io::ReadOptions ro;
 	ro.quiet = quiet;

@@ -19,6 +19,9 @@ python3 - "$tmp/out/report.json" <<'PY' || { echo "report.json: phase timings mi
 import json, sys
 r = json.load(open(sys.argv[1]))
 assert r["input"].endswith('sim\tlog "1"\\a.log'), r["input"]
+# what made the run: the versions (as --version) and the initial trajectory (none: odometry)
+assert r["init"] is None, r["init"]
+assert set(r["version"]) == {"gridvector", "git", "mrpt"} and all(r["version"].values()), r["version"]
 assert r["keyframes"] > 0
 for it in r["iterations"]:
     assert 0 <= it["wipe_seconds"] and 0 <= it["classify_seconds"]

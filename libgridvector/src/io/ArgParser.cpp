@@ -1,4 +1,5 @@
 #include <gridvector/ErrorText.h>
+#include <gridvector/Version.h>
 #include <gridvector/io/ArgParser.h>
 
 #include <cctype>
@@ -14,6 +15,7 @@ ArgParser::ArgParser(std::string program, std::string synopsis)
 	: program_(std::move(program)), synopsis_(std::move(synopsis))
 {
 	flag("help", "show this help and exit");
+	flag("version", "print the version (gridvector, git, MRPT) and exit");
 }
 
 void ArgParser::option(const std::string& name, const std::string& valueName, const std::string& help)
@@ -63,7 +65,7 @@ bool ArgParser::parse(int argc, const char* const* argv)
 			fail("option --" + name + " takes no value");
 		values_[name] = value;
 	}
-	return !has("help");
+	return !has("help") && !has("version");
 }
 
 std::string ArgParser::usage() const
@@ -125,7 +127,7 @@ int runTool(ArgParser& args, int argc, const char* const* argv, const std::funct
 	{
 		if (!args.parse(argc, argv))
 		{
-			out << args.usage();
+			out << (args.has("help") ? args.usage() : versionLine(args.program()) + "\n");
 			return 0;
 		}
 		return body();

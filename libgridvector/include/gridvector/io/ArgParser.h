@@ -27,9 +27,10 @@ class ArgParser
 	/** --name without a value. */
 	void flag(const std::string& name, const std::string& help);
 
-	/** Throws UsageError; returns false if --help was given (usage() says what to print). */
+	/** Throws UsageError; returns false if --help or --version was given (nothing to run). */
 	bool parse(int argc, const char* const* argv);
 	std::string usage() const;
+	const std::string& program() const { return program_; }
 
 	bool has(const std::string& name) const { return values_.count(name) > 0; }
 	std::string get(const std::string& name, const std::string& def = "") const;
@@ -65,7 +66,7 @@ struct ToolErrorStyle
 };
 
 /** A tool's main(): args.parse(argc, argv), then body().
- *  --help: args.usage() on out, 0. Otherwise body()'s return value, except:
+ *  --help: args.usage() on out, 0; --version: versionLine(program) on out, 0. Otherwise body()'s return value, except:
  *  a UsageError: its message on err, 2; any other exception: style.prefix + its message on err, 1. */
 int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body,
 			const ToolErrorStyle& style, std::ostream& out, std::ostream& err);

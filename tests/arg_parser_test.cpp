@@ -22,8 +22,7 @@ struct ToolRun
 };
 
 /** runTool on "tool ARGS..." with a --n option, capturing stdout and stderr. */
-ToolRun runTool(const std::vector<std::string>& args, const std::function<int(const io::ArgParser&)>& body,
-			const io::ToolErrorStyle& style = {})
+ToolRun runTool(const std::vector<std::string>& args, const std::function<int(const io::ArgParser&)>& body)
 {
 	io::ArgParser parser("tool", "[--n N] [ARG]");
 	parser.option("n", "N", "a number");
@@ -37,7 +36,7 @@ ToolRun runTool(const std::vector<std::string>& args, const std::function<int(co
 			r.bodyRan = true;
 			return body(parser);
 		},
-		style, out, err);
+		out, err);
 	r.out = out.str();
 	r.err = err.str();
 	return r;
@@ -100,10 +99,8 @@ TEST(RunTool, UsageErrorIsOneLineAndStatusTwo)
 	EXPECT_EQ(r.status, 2);
 	EXPECT_EQ(r.err, "tool: unknown option --peeple (see --help)\n");
 	EXPECT_EQ(r.out, "");
-	// from the body, also with an error prefix (that is for other errors only)
-	io::ToolErrorStyle style;
-	style.prefix = "tool: ";
-	r = runTool({"--n", "x"}, [](const io::ArgParser& a) { return int(a.getInt("n", 0, 0, 9)); }, style);
+	// from the body: the program named once
+	r = runTool({"--n", "x"}, [](const io::ArgParser& a) { return int(a.getInt("n", 0, 0, 9)); });
 	EXPECT_TRUE(r.bodyRan);
 	EXPECT_EQ(r.status, 2);
 	EXPECT_EQ(r.err, "tool: --n needs an integer, got 'x' (see --help)\n");
@@ -115,33 +112,25 @@ TEST(RunTool, UsageErrorIsOneLineAndStatusTwo)
 TEST(RunTool, OtherErrorIsOneLineAndStatusOne)
 {
 	const auto fails = [](const io::ArgParser&) -> int { throw std::runtime_error("in.log:3: no scan"); };
+	// every tool's convention: "PROG: FILE: problem"
 	ToolRun r = runTool({}, fails);
 	EXPECT_EQ(r.status, 1);
-	EXPECT_EQ(r.err, "in.log:3: no scan\n");
-	EXPECT_EQ(r.out, "");
-
-	io::ToolErrorStyle style;
-	style.prefix = "tool: ";
-	r = runTool({}, fails, style);
-	EXPECT_EQ(r.status, 1);
 	EXPECT_EQ(r.err, "tool: in.log:3: no scan\n");
+	EXPECT_EQ(r.out, "");
+	// a message that already names the program names it once
+	r = runTool({}, [](const io::ArgParser&) -> int { throw std::runtime_error("tool: in.log: empty"); });
+	EXPECT_EQ(r.err, "tool: in.log: empty\n");
 
-	// an MRPT exception: what() as it is, or its message alone (oneLine)
+	// an MRPT exception: its message alone, without the backtrace
 	const auto mrpt = [](const io::ArgParser&) -> int { throw std::runtime_error(kMrptError); };
 	r = runTool({}, mrpt);
-	EXPECT_EQ(r.status, 1);
-	EXPECT_EQ(r.err, std::string(kMrptError) + "\n");
-	style.oneLine = true;
-	r = runTool({}, mrpt, style);
 	EXPECT_EQ(r.status, 1);
 	EXPECT_EQ(r.err, "tool: bad.rawlog: entry 3: unreadable\n");
 }
 
 TEST(RunTool, OneLineUsageErrors)
 {
-	io::ToolErrorStyle style;
-	style.oneLineUsage = true;
-	const ToolRun r = runTool({"a\n\nb", "c"}, [](const io::ArgParser& a) { return a.requirePositional(0, 0), 0; }, style);
+	const ToolRun r = runTool({"a\n\nb", "c"}, [](const io::ArgParser& a) { return a.requirePositional(0, 0), 0; });
 	EXPECT_EQ(r.status, 2);
 	EXPECT_EQ(r.err, "tool: unexpected argument 'a b' (see --help)\n");
 }
@@ -150,7 +139,7 @@ TEST(RunTool, NeverACrash)
 {
 	ToolRun r = runTool({}, [](const io::ArgParser&) -> int { throw 42; });
 	EXPECT_EQ(r.status, 1);
-	EXPECT_EQ(r.err, "unknown error\n");
+	EXPECT_EQ(r.err, "tool: unknown error\n");
 	r = runTool({}, [](const io::ArgParser&) -> int { throw std::bad_alloc(); });
 	EXPECT_EQ(r.status, 1);
 	EXPECT_EQ(r.err.find('\n'), r.err.size() - 1) << r.err;

@@ -84,6 +84,9 @@ TEST(GroundTruthIndex, ObservationOnlyRawlogReadsOnePosePerTwoEntries)
 	EXPECT_EQ(run(20, 20), 20u);  // one pose per scan is enough
 	EXPECT_EQ(errorOf([&] { run(19, 20); }),
 			  "gt.txt: 19 ground-truth poses, the engine reads pose 20 at entry 39 of r.rawlog (one pose per scan)");
+	// one pose: "1 ground-truth pose", not "1 ground-truth poses"
+	EXPECT_EQ(errorOf([&] { run(1, 20); }),
+			  "gt.txt: 1 ground-truth pose, the engine reads pose 2 at entry 3 of r.rawlog (one pose per scan)");
 }
 
 TEST(GroundTruthIndex, ActionObservationRawlogReadsOnePosePerStep)

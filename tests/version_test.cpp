@@ -30,7 +30,7 @@ TEST(RunTool, VersionPrintsOneLineOnStdoutAndReturnsZero)
 	std::ostringstream out, err;
 	bool ran = false;
 	const int status = io::runTool(
-		args, 2, argv, [&] { return ran = true, 3; }, {}, out, err);
+		args, 2, argv, [&] { return ran = true, 3; }, out, err);
 	EXPECT_EQ(status, 0);
 	EXPECT_FALSE(ran);
 	EXPECT_EQ(out.str(), versionLine("gv-x") + "\n");
@@ -43,6 +43,6 @@ TEST(RunTool, HelpWinsOverVersion)
 	io::ArgParser args("gv-x", "[ARG]");
 	const char* argv[] = {"gv-x", "--version", "--help"};
 	std::ostringstream out, err;
-	EXPECT_EQ(io::runTool(args, 3, argv, [] { return 3; }, {}, out, err), 0);
+	EXPECT_EQ(io::runTool(args, 3, argv, [] { return 3; }, out, err), 0);
 	EXPECT_EQ(out.str(), args.usage());
 }

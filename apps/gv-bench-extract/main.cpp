@@ -93,8 +93,5 @@ int main(int argc, char** argv)
 	io::ArgParser args("gv-bench-extract", "LOG [--repeat N] [--config FILE.ini]");
 	args.option("repeat", "N", "passes over the log for each timing (default 5)");
 	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_extraction], [gridvector_grid])");
-	io::ToolErrorStyle style;
-	style.prefix = "gv-bench-extract: ";
-	style.oneLine = true;
-	return io::runTool(args, argc, argv, [&] { return run(args); }, style);
+	return io::runTool(args, argc, argv, [&] { return run(args); });
 }

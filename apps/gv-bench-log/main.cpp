@@ -1,6 +1,7 @@
 // gv-bench-log: make a SLAM benchmark (OUT.log + OUT.ref.txt) from a corrected
 // CARMEN log, as ../shared/bench/mkbench.py does, without Python.
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/sim/BenchmarkLog.h>
 
 #include <iostream>
@@ -28,7 +29,7 @@ int main(int argc, char** argv)
 		if (o.dt <= 0) args.fail("--dt must be > 0");
 		const auto s = sim::makeBenchmarkLog(args.positional()[0], args.positional()[1], o);
 		if (!args.has("quiet"))
-			std::cout << "gv-bench-log: " << s.scans << " scans from " << args.positional()[0] << " (seed " << o.seed
+			std::cout << "gv-bench-log: " << io::counted(s.scans, "scan") << " from " << args.positional()[0] << " (seed " << o.seed
 					  << ") -> " << s.logPath << ", " << s.refPath << "\n";
 		return 0;
 	});

@@ -292,8 +292,6 @@ int main(int argc, char** argv)
 	args.option("band", "M", "compare cells within M metres of a vector (default 0.2)");
 	args.option("repeat", "R", "sequential insertion R times, each scan's fastest time kept (default 1)");
 	args.option("samples", "N", "Eq. 6 sub-samples per axis of a grid cell (default: automatic)");
-	io::ToolErrorStyle style;
-	style.prefix = "gv-bench-map: ";
 	return io::runTool(
 		args, argc, argv,
 		[&] {
@@ -310,6 +308,5 @@ int main(int argc, char** argv)
 			std::printf("| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/n_v static | n_g/cells | agree seq | agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
 			for (const auto& log : args.positional()) benchLog(log, cfg, maxScans, band);
 			return 0;
-		},
-		style);
+		});
 }

@@ -137,8 +137,5 @@ int main(int argc, char** argv)
 	io::ArgParser args("gv-bench-wipe", "LOG TRAJ [--repeat N] [--config FILE.ini]");
 	args.option("repeat", "N", "timings of each path, alternated; the best is reported (default 3)");
 	args.option("config", "FILE.ini", "parameters over gv-em-slam's defaults");
-	io::ToolErrorStyle style;
-	style.prefix = "gv-bench-wipe: ";
-	style.oneLine = true;
-	return io::runTool(args, argc, argv, [&] { return run(args); }, style);
+	return io::runTool(args, argc, argv, [&] { return run(args); });
 }

@@ -1,6 +1,7 @@
 // gv-carmen2rawlog: CARMEN log -> MRPT rawlog with correct timestamps, aperture
 // and max range (a replacement for MRPT 2.5's carmen2rawlog).
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/LogReader.h>
 #include <gridvector/io/RawlogWriter.h>
@@ -70,9 +71,9 @@ int main(int argc, char** argv)
 			size_t odo = 0;
 			for (const auto& s : log.scans) odo += s.hasOdometry;
 			std::cout << log.summary << rangeNote << "\n"
-					  << "wrote " << args.positional()[1] << ": " << log.scans.size() << " scans, "
-					  << (format == "sf" ? std::to_string(log.scans.size()) + " robot-movement actions"
-										 : std::to_string(odo) + " odometry observations")
+					  << "wrote " << args.positional()[1] << ": " << gridvector::io::counted(log.scans.size(), "scan") << ", "
+					  << (format == "sf" ? gridvector::io::counted(log.scans.size(), "robot-movement action")
+										 : gridvector::io::counted(odo, "odometry observation"))
 					  << " (" << (format == "sf" ? "actions+sensory-frames" : "observation-only") << " format"
 					  << (wo.compress ? ", gzip" : "") << ")\n";
 		}

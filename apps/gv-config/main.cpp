@@ -21,9 +21,6 @@ int main(int argc, char** argv)
 	args.flag("json", "print every key and value as JSON");
 	args.option("check", "FILE.ini", "load and validate FILE.ini (unknown keys and bad values are errors)");
 	args.option("profile", "NAME", "library (default: GridVectorConfig{}) or em-slam (gv-em-slam's defaults)");
-	io::ToolErrorStyle style;
-	style.prefix = "gv-config: ";
-	style.oneLine = true;
 	return io::runTool(
 		args, argc, argv,
 		[&] {
@@ -52,6 +49,5 @@ int main(int argc, char** argv)
 				std::cout << args.get("check") << ": OK\n";
 			}
 			return 0;
-		},
-		style);
+		});
 }

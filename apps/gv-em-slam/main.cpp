@@ -18,6 +18,7 @@
 #include <gridvector/OccupancyConversion.h>
 #include <gridvector/VectorExtractor.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/Progress.h>
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/LogReader.h>
@@ -179,10 +180,10 @@ int run(const io::ArgParser& args)
 		size_t nd = 0;
 		for (const auto& v : res.finalVectors) nd += v.state == VectorState::Dynamic;
 		std::fprintf(stderr,
-					 "%s after %zu iterations: %zu static + %zu dynamic vectors, %zu doors; %.2f s "
+					 "%s after %s: %zu static + %zu dynamic vectors, %s; %.2f s "
 					 "(read %.2f, extract %.2f, EM %.2f, final map %.2f, outputs %.2f)\n",
-					 res.converged ? "converged" : "stopped", res.iterations.size(), res.finalVectors.size() - nd, nd,
-					 doors.size(), fig.totalSeconds, fig.readSeconds, fig.extractSeconds, fig.emSeconds,
+					 res.converged ? "converged" : "stopped", io::counted(res.iterations.size(), "iteration").c_str(),
+					 res.finalVectors.size() - nd, nd, io::counted(doors.size(), "door").c_str(), fig.totalSeconds, fig.readSeconds, fig.extractSeconds, fig.emSeconds,
 					 res.finalMapSeconds, fig.outputSeconds);
 		std::fprintf(stderr, "%s", MemoryAccounting::summary(fig.memory).c_str());
 		std::fprintf(stderr,
@@ -203,14 +204,11 @@ int main(int argc, char** argv)
 	args.option("init", "TRAJ", "start from this 't x y theta' trajectory (e.g. gv-graphslam's) instead of raw odometry");
 	args.option("max-iterations", "N", "EM iterations at most (overrides [gridvector_mstep] max_iterations)");
 	args.flag("quiet", "no progress or summary output");
-	io::ToolErrorStyle style;
-	style.oneLine = true;
 	return io::runTool(
 		args, argc, argv,
 		[&] {
 			if (!args.has("input") || !args.has("out")) args.fail("--input and --out are required");
 			args.requirePositional(0, 0);
 			return run(args);  // a bad option value found there (--max-iterations 0) is bad usage: status 2
-		},
-		style);
+		});
 }

@@ -12,6 +12,7 @@
 #include <gridvector/graphslam/IniKeys.h>
 #include <gridvector/graphslam/RunRecorder.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/IniLayout.h>
@@ -338,12 +339,12 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 
 	char summary[1024];
 	std::snprintf(summary, sizeof summary,
-				"gv-graphslam: %s + %s + %s: %zu entries, %zu scans, %zu nodes, %zu edges (%zu loop "
-				"closures), %zu map vectors; SLAM %.2f s -> %s/\n",
-				s.nodeReg.c_str(), s.edgeReg.c_str(), s.optimizer.c_str(), steps, rec.scanCount(),
-				graph.nodeCount(), graph.edgeCount(),
-				loopClosures(graph, lc.lcMinNodeIdDiff),
-				map.vectors().size(), slamSeconds, dir.c_str());
+				"gv-graphslam: %s + %s + %s: %s, %s, %s, %s (%s), %s; SLAM %.2f s -> %s/\n",
+				s.nodeReg.c_str(), s.edgeReg.c_str(), s.optimizer.c_str(), io::counted(steps, "entry", "entries").c_str(),
+				io::counted(rec.scanCount(), "scan").c_str(), io::counted(graph.nodeCount(), "node").c_str(),
+				io::counted(graph.edgeCount(), "edge").c_str(),
+				io::counted(loopClosures(graph, lc.lcMinNodeIdDiff), "loop closure").c_str(),
+				io::counted(map.vectors().size(), "map vector").c_str(), slamSeconds, dir.c_str());
 	return summary;
 }
 }  // namespace
@@ -355,9 +356,6 @@ int main(int argc, char** argv)
 	const auto argvLong = longOptions(argc, argv);
 	std::vector<const char*> cargv;
 	for (const auto& a : argvLong) cargv.push_back(a.c_str());
-	io::ToolErrorStyle style;
-	style.prefix = "gv-graphslam: ";
-	style.oneLine = true;
 	return io::runTool(
 		args, int(cargv.size()), cargv.data(),
 		[&] {
@@ -366,6 +364,5 @@ int main(int argc, char** argv)
 			const std::string summary = run(settingsFrom(args, reg), reg);
 			std::fputs(summary.c_str(), stdout);
 			return 0;
-		},
-		style);
+		});
 }

@@ -20,9 +20,6 @@ int main(int argc, char** argv)
 	args.option("from-simplemap", "FILE", "build the map from an MRPT .simplemap (poses + observations)");
 	args.option("config", "FILE.ini", "gridvector parameters for --from-simplemap ([gridvector_*] sections)");
 	args.option("save", "OUT.gvmap", "write the map (in the current .gvmap format version), atomically");
-	gridvector::io::ToolErrorStyle style;
-	style.prefix = "gv-map-info: ";
-	style.oneLine = true;
 	return gridvector::io::runTool(
 		args, argc, argv,
 		[&] {
@@ -49,6 +46,5 @@ int main(int argc, char** argv)
 			std::cout << map.asString() << "\n";
 			if (args.has("save")) map.saveToFile(args.get("save"));
 			return 0;
-		},
-		style);
+		});
 }

@@ -12,6 +12,7 @@
 #include <gridvector/MemoryAccounting.h>
 #include <gridvector/OccupancyConversion.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/Progress.h>
 #include <gridvector/io/LogReader.h>
@@ -96,8 +97,9 @@ int run(const io::ArgParser& args)
 	MemoryAccounting::writeJson(mem, dir + "memory.json");
 	if (!quiet)
 	{
-		std::printf("%s: %zu of %zu scans mapped in %.2f s (%.0f scans/s), %zu grid vectors\n", input.c_str(), used,
-					log.scans.size(), secs, used / std::max(secs, 1e-9), vectors.size());
+		std::printf("%s: %zu of %s mapped in %.2f s (%.0f scans/s), %s\n", input.c_str(), used,
+					io::counted(log.scans.size(), "scan").c_str(), secs, used / std::max(secs, 1e-9),
+					io::counted(vectors.size(), "grid vector").c_str());
 		std::printf("%s", MemoryAccounting::summary(mem).c_str());
 		std::printf("wrote %s{map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, occupancy.yaml, map.3Dscene, memory.json}\n",
 					dir.c_str());
@@ -114,8 +116,6 @@ int main(int argc, char** argv)
 	args.option("out", "DIR", "output directory (created if missing)");
 	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_*] sections)");
 	args.flag("quiet", "no progress and no summary");
-	io::ToolErrorStyle style;
-	style.oneLine = style.oneLineUsage = true;
 	return io::runTool(
 		args, argc, argv,
 		[&] {
@@ -123,6 +123,5 @@ int main(int argc, char** argv)
 			for (const char* req : {"input", "poses", "out"})
 				if (!args.has(req)) args.fail(std::string("missing --") + req);
 			return run(args);
-		},
-		style);
+		});
 }

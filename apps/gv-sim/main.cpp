@@ -4,6 +4,7 @@
 
 #include <gridvector/eval/TrajectoryEval.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/IniLayout.h>
@@ -120,9 +121,10 @@ void printSummary(const sim::SimResult& r, const std::string& dir, double second
 	io::Trajectory truth, odo;
 	for (const auto& k : r.scans) truth.emplace_back(k.t, k.truth), odo.emplace_back(k.t, k.odometry);
 	char b[512];
-	std::snprintf(b, sizeof b, "gv-sim: world %s, seed %lld: %zu scans, %.1f m path, %.0f s, %zu people, %zu doors (%zu swings), %zu moved object(s)",
-				  r.world.name.c_str(), (long long)r.options.seed, s.scans, s.pathLength, s.duration, s.people,
-				  r.world.doors.size(), s.doorSwings, r.world.objects.size());
+	std::snprintf(b, sizeof b, "gv-sim: world %s, seed %lld: %s, %.1f m path, %.0f s, %s, %s (%s), %s",
+				  r.world.name.c_str(), (long long)r.options.seed, io::counted(s.scans, "scan").c_str(), s.pathLength,
+				  s.duration, io::counted(s.people, "person", "people").c_str(), io::counted(r.world.doors.size(), "door").c_str(),
+				  io::counted(s.doorSwings, "swing").c_str(), io::counted(r.world.objects.size(), "moved object").c_str());
 	std::cout << b << "\n  beams " << s.beams << ": static " << pct(double(s.staticHits), double(s.beams)) << ", dynamic "
 			  << pct(double(s.dynamicHits), double(s.beams)) << " (people " << pct(double(s.personHits), double(s.beams))
 			  << ", doors " << pct(double(s.doorHits), double(s.beams)) << ", moved object "
@@ -160,7 +162,7 @@ int main(int argc, char** argv)
 		opt.visit([&](const char* k, auto& v, const char*) {
 			const std::string flag = dashed(k);
 			if (args.has(flag) && !assign(v, args.get(flag)))
-				args.fail("--" + flag + " needs a " + typeName(v) + " value, got '" + args.get(flag) + "'");
+				args.fail("--" + flag + " needs " + kindOf(v) + ", got '" + args.get(flag) + "'");
 		});
 		try
 		{

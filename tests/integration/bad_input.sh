@@ -3,7 +3,7 @@
 # em_slam.sh, carmen2rawlog.sh, gv_graphslam.sh, gv_sim_eval.sh, icp_slam_plugin.sh):
 # truncated/corrupt gzip logs, inf/negative ranges, empty scans, unknown config keys,
 # unwritable output, missing input, garbage trajectories and .gvmap files.
-# Every case: exit 1 (2 for bad usage), one stderr line naming the file, no control
+# Every case: exit 1 (2 for bad usage), one stderr line naming the tool, then the file, no control
 # bytes, no crash, no output file, no temporary file and no new (empty) output directory left behind.
 set -euo pipefail
 W=$(mktemp -d); trap 'rm -rf "$W"' EXIT
@@ -59,6 +59,9 @@ expect() {
   [ "$rc" -eq "$status" ] || fail "exit $rc (want $status) for: $* -> $(head -c 400 err.txt)"
   [ "$(grep -c . err.txt)" -eq 1 ] || fail "not one line for: $* -> $(cat err.txt)"
   grep -qF -- "$word" err.txt || fail "'$word' not named for: $* -> $(cat err.txt)"
+  # every tool's convention (doc/io.md): "TOOL: FILE: problem", "TOOL: problem (see --help)"
+  grep -q "^$(basename "$1"): " err.txt || fail "the tool is not named first for: $* -> $(cat err.txt)"
+  [ "$status" -ne 2 ] || grep -q " (see --help)$" err.txt || fail "a usage error without '(see --help)': $*"
   ! LC_ALL=C grep -q '[[:cntrl:]]' <(tr -d '\n' < err.txt) || fail "control bytes in the message for: $*"
   [ "$output" = - ] || [ ! -e "$output" ] || fail "$output written for: $*"
   n=$((n + 1))
@@ -111,7 +114,7 @@ expect 1 "typo.ini: no [gv_sim] section" s8/sim.log -- "$B/gv-sim" --config typo
 # gv-sim's values are read as the other .ini values (io/IniValue.h), ranges as its flags'
 printf '[gv_sim]\nlaps = 4294967297\n' > simlaps.ini  # was read as 1 lap
 expect 1 "simlaps.ini: [gv_sim] laps = '4294967297' is not an integer" s8/sim.log -- "$B/gv-sim" --config simlaps.ini --out s8 --quiet
-expect 2 "--laps needs a N value, got '4294967297'" s8/sim.log -- "$B/gv-sim" --laps 4294967297 --out s8 --quiet
+expect 2 "gv-sim: --laps needs an integer, got '4294967297' (see --help)" s8/sim.log -- "$B/gv-sim" --laps 4294967297 --out s8 --quiet
 printf '[gv_sim]\nspeed = nan\n' > simnan.ini
 expect 1 "simnan.ini: [gv_sim] speed = 'nan' is not a finite number" s8/sim.log -- "$B/gv-sim" --config simnan.ini --out s8 --quiet
 printf '[gv_sim]\ndoors = of\n' > simbool.ini

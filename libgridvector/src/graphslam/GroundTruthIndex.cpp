@@ -1,4 +1,5 @@
 #include <gridvector/graphslam/GroundTruthIndex.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/TextParsing.h>
 
 #include <mrpt/system/string_utils.h>
@@ -61,7 +62,7 @@ void requireNavSimulGroundTruth(const mrpt::config::CConfigFileBase& ini, const 
 void GroundTruthIndex::beforeStep(const std::string& rawlog, size_t rawlogEntry) const
 {
 	if (index_ < poses_) return;
-	throw std::runtime_error(path_ + ": " + std::to_string(poses_) + " ground-truth poses, the engine reads pose " +
+	throw std::runtime_error(path_ + ": " + io::counted(poses_, "ground-truth pose") + ", the engine reads pose " +
 							 std::to_string(index_ + 1) + " at entry " + std::to_string(rawlogEntry) + " of " + rawlog +
 							 " (one pose per scan)");
 }

@@ -120,8 +120,18 @@ void ArgParser::requirePositional(size_t lo, size_t hi) const
 	if (positional_.size() > hi) fail("unexpected argument '" + positional_[hi] + "'");
 }
 
-int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body,
-			const ToolErrorStyle& style, std::ostream& out, std::ostream& err)
+namespace
+{
+/** "PROG: " + message, unless the message already names the program. */
+std::string withProgram(const std::string& program, const std::string& message)
+{
+	const std::string prefix = program + ": ";
+	return message.compare(0, prefix.size(), prefix) == 0 ? message : prefix + message;
+}
+}  // namespace
+
+int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body, std::ostream& out,
+			std::ostream& err)
 {
 	try
 	{
@@ -134,25 +144,24 @@ int runTool(ArgParser& args, int argc, const char* const* argv, const std::funct
 	}
 	catch (const UsageError& e)
 	{
-		err << (style.oneLineUsage ? oneLineError(e) : std::string(e.what())) << "\n";
+		err << withProgram(args.program(), oneLineError(e)) << "\n";
 		return 2;
 	}
 	catch (const std::exception& e)
 	{
-		err << style.prefix << (style.oneLine ? oneLineError(e) : std::string(e.what())) << "\n";
+		err << withProgram(args.program(), oneLineError(e)) << "\n";
 		return 1;
 	}
 	catch (...)
 	{
-		err << style.prefix << "unknown error\n";
+		err << args.program() << ": unknown error\n";
 		return 1;
 	}
 }
 
-int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body,
-			const ToolErrorStyle& style)
+int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body)
 {
-	return runTool(args, argc, argv, body, style, std::cout, std::cerr);
+	return runTool(args, argc, argv, body, std::cout, std::cerr);
 }
 
 }  // namespace gridvector::io

@@ -1,5 +1,6 @@
 #include <gridvector/io/CarmenParams.h>
 #include <gridvector/io/CarmenReader.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/OdometryTrack.h>
 #include <gridvector/io/Progress.h>
@@ -150,15 +151,15 @@ TPose2D CarmenParser::poseAt(const Tokens& t, size_t i, const std::string& what)
 
 size_t CarmenParser::count(const Tokens& t, size_t i, const std::string& what)
 {
-	if (i >= t.size()) parseError(pos_, what + ": line ends early (" + std::to_string(t.size()) + " fields)");
+	if (i >= t.size()) parseError(pos_, what + ": line ends early (" + counted(t.size(), "field") + ")");
 	return size_t(parseInt(t[i], pos_, what, 0, 100000));
 }
 
 std::vector<float> CarmenParser::ranges(const Tokens& t, size_t first, size_t n, const std::string& what)
 {
 	if (first + n > t.size())
-		parseError(pos_, what + ": " + std::to_string(n) + " ranges announced, line has only " +
-							 std::to_string(t.size() - std::min(first, t.size())) + " more fields");
+		parseError(pos_, what + ": " + counted(n, "range") + " announced, line has only " +
+							 counted(t.size() - std::min(first, t.size()), "more field") + ");
 	std::vector<float> r(n);
 	for (size_t i = 0; i < n; i++)
 	{
@@ -186,8 +187,8 @@ void CarmenParser::onFlaser(const Tokens& t, bool rear)
 	// a wrong beam count shifts every field: say so, not "range 181 is -1.6" (the pose's x read as a range)
 	const size_t trailer = 2 + n + 6;
 	if (t.size() >= 2 + n && !flaserFieldCountMatches(n, t.size()))
-		parseError(pos_, what + ": " + std::to_string(n) + " beams announced: expected " + std::to_string(trailer + 3) +
-							 " fields, found " + std::to_string(t.size()));
+		parseError(pos_, what + ": " + counted(n, "beam") + " announced: expected " + counted(trailer + 3, "field") +
+							 ", found " + std::to_string(t.size()));
 	ScanMessage m;
 	m.type = what;
 	m.ranges = ranges(t, 2, n, what);
@@ -304,7 +305,7 @@ void CarmenParser::finish()
 	for (size_t i = 1; i < out_.scans.size(); i++)
 		if (out_.scans[i].timestamp <= out_.scans[i - 1].timestamp) backwards++;
 	if (backwards)
-		out_.warnings.push_back(std::to_string(backwards) + " scan timestamps do not increase (low-precision or unsorted timestamps in the file)");
+		out_.warnings.push_back(counted(backwards, "scan timestamp") + " " + agree(backwards, "does", "do") + " not increase (low-precision or unsorted timestamps in the file)");
 	if (out_.scans.empty()) out_.warnings.push_back("no laser scans in the file");
 	pending_.clear();
 	out_.summary = summary();
@@ -312,7 +313,7 @@ void CarmenParser::finish()
 
 std::string CarmenParser::summary() const
 {
-	std::string s = out_.source + ": " + std::to_string(out_.scans.size()) + " scans (";
+	std::string s = out_.source + ": " + counted(out_.scans.size(), "scan") + " (";
 	bool first = true;
 	for (const auto& [k, n] : scans_) s += (first ? "" : ", ") + std::to_string(n) + " " + k, first = false;
 	s += ")";

@@ -1,6 +1,7 @@
 #include <gridvector/io/CarmenReader.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/LogReader.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/NoReturnRange.h>
 #include <gridvector/io/RawlogReader.h>
 
@@ -75,9 +76,10 @@ std::string describeContents(const LogContents& c)
 	if (c.format == LogContents::Format::Carmen) s = n(c.odometryRecords) + " ODOM, " + n(c.paramLines) + " PARAM";
 	else
 	{
-		s = c.sensoryFrames ? "actions+sensory-frames format (" + n(c.actionSets) + " action sets, " + n(c.sensoryFrames) + " sensory frames)"
-							: "observation-only format (" + n(c.observations) + " observations)";
-		s += c.odometryRecords ? "; odometry from " + n(c.odometryRecords) + " odometry observations"
+		s = c.sensoryFrames ? "actions+sensory-frames format (" + counted(c.actionSets, "action set") + ", " +
+								  counted(c.sensoryFrames, "sensory frame") + ")"
+							: "observation-only format (" + counted(c.observations, "observation") + ")";
+		s += c.odometryRecords ? "; odometry from " + counted(c.odometryRecords, "odometry observation")
 							   : c.movementActions ? "; odometry from robot-movement actions" : "; no odometry";
 	}
 	for (const auto& [k, count] : c.ignored) s += ", " + n(count) + " " + k + " ignored";

@@ -3,6 +3,7 @@
 #include <gridvector/io/OdometryTrack.h>
 #include <gridvector/io/Progress.h>
 #include <gridvector/io/RawlogReader.h>
+#include <gridvector/io/Counted.h>
 
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/registerAllClasses.h>
@@ -154,13 +155,13 @@ void RawlogParser::finish()
 	size_t backwards = 0;  // as the CARMEN reader: scans are used in file order, said when time disagrees
 	for (size_t i = 1; i < out_.scans.size(); i++) backwards += out_.scans[i].timestamp <= out_.scans[i - 1].timestamp;
 	if (backwards > 0 && noTimestamp_ < out_.scans.size())
-		out_.warnings.push_back(std::to_string(backwards) + " scan timestamps do not increase (unsorted or repeated timestamps in the file)");
-	if (noTimestamp_) out_.warnings.push_back(std::to_string(noTimestamp_) + " scans have no timestamp (set to 0)");
+		out_.warnings.push_back(counted(backwards, "scan timestamp") + " " + agree(backwards, "does", "do") + " not increase (unsorted or repeated timestamps in the file)");
+	if (noTimestamp_) out_.warnings.push_back(counted(noTimestamp_, "scan") + " " + agree(noTimestamp_, "has", "have") + " no timestamp (set to 0)");
 	if (out_.scans.empty()) out_.warnings.push_back("no 2D laser scans in the file");
 	out_.contents.format = LogContents::Format::Rawlog;
 	out_.contents.odometryRecords = odomObs_.size();
 	out_.contents.movementActions = hasMotion_;
-	std::string s = out_.source + ": " + std::to_string(out_.scans.size()) + " scans; " + describeContents(out_.contents);
+	std::string s = out_.source + ": " + counted(out_.scans.size(), "scan") + "; " + describeContents(out_.contents);
 	for (const auto& w : out_.warnings) s += "; warning: " + w;
 	out_.summary = s;
 }

@@ -54,24 +54,14 @@ class ArgParser
 	std::vector<std::string> positional_;
 };
 
-/** How runTool words a tool's errors (part of each tool's interface: scripts grep them). */
-struct ToolErrorStyle
-{
-	/** Before the message of an error that is not a UsageError, e.g. "gv-bench-map: ". */
-	std::string prefix;
-	/** oneLineError(e) (ErrorText.h: the message of an MRPT exception, without its backtrace) instead of e.what(). */
-	bool oneLine = false;
-	/** The same for a UsageError. */
-	bool oneLineUsage = false;
-};
-
 /** A tool's main(): args.parse(argc, argv), then body().
- *  --help: args.usage() on out, 0; --version: versionLine(program) on out, 0. Otherwise body()'s return value, except:
- *  a UsageError: its message on err, 2; any other exception: style.prefix + its message on err, 1. */
-int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body,
-			const ToolErrorStyle& style, std::ostream& out, std::ostream& err);
+ *  --help: args.usage() on out, 0; --version: versionLine(program) on out, 0. Otherwise body()'s
+ *  return value, except for an exception, reported as one line on err (every tool's convention):
+ *  a UsageError "PROG: problem (see --help)", 2; any other "PROG: FILE: problem" (MRPT's
+ *  exceptions by their message alone, without the backtrace), 1. */
+int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body, std::ostream& out,
+			std::ostream& err);
 /** The same on std::cout and std::cerr. */
-int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body,
-			const ToolErrorStyle& style = {});
+int runTool(ArgParser& args, int argc, const char* const* argv, const std::function<int()>& body);
 
 }  // namespace gridvector::io

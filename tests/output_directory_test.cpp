@@ -109,3 +109,38 @@ TEST(WritableFile, FailsAsTheAtomicWriteWouldButCreatesNothing)
 	EXPECT_FALSE(fs::exists(t / "nodir"));
 	EXPECT_EQ(std::distance(fs::directory_iterator(t.path), fs::directory_iterator{}), 2);  // file, dir: no temporary
 }
+
+TEST(OutputDirectory, APreviousRunsMarkerIsRemovedBeforeAnyOutput)
+{
+	TempDir t;
+	fs::create_directories(t / "out");
+	std::ofstream(t / "out/report.json") << "{}";
+	std::ofstream(t / "out/trajectory.txt") << "old";
+	OutputDirectory d(t / "out", "report.json");
+	EXPECT_EQ(d.markerPath(), t / "out/report.json");
+	EXPECT_TRUE(fs::exists(t / "out/report.json")) << "checking the directory removes nothing";
+	d.create();
+	EXPECT_FALSE(fs::exists(t / "out/report.json")) << "a half-rewritten set must not look complete";
+	EXPECT_TRUE(fs::exists(t / "out/trajectory.txt")) << "only the marker goes";
+	// no marker: nothing removed
+	std::ofstream(t / "out/report.json") << "{}";
+	OutputDirectory(t / "out").create();
+	EXPECT_TRUE(fs::exists(t / "out/report.json"));
+	EXPECT_EQ(OutputDirectory(t / "out").markerPath(), "");
+}
+
+TEST(OutputDirectory, AMarkerThatIsADirectoryIsAnError)
+{
+	TempDir t;
+	fs::create_directories(t / "out/report.json");
+	OutputDirectory d(t / "out", "report.json");
+	try
+	{
+		d.create();
+		FAIL() << "no error for a directory where the marker goes";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), t / "out/report.json" + ": cannot write (it is a directory)");
+	}
+}

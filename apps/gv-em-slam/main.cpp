@@ -101,7 +101,7 @@ int run(const io::ArgParser& args)
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
 	if (args.has("max-iterations")) cfg.mstep.maxIterations = int(args.getInt("max-iterations", 10, 1, 1000));
 	const std::string input = args.get("input"), dir = args.get("out") + "/";
-	io::OutputDirectory outDir(args.get("out"));  // checked now, created when there is something to write
+	io::OutputDirectory outDir(args.get("out"), "report.json");  // checked now, created when there is something to write
 
 	app::RunFigures fig;
 	fig.input = input;
@@ -174,7 +174,7 @@ int run(const io::ArgParser& args)
 	fig.memory = MemoryAccounting::account(res.finalVectors, 0.1);
 	fig.outputSeconds = since(t1);
 	fig.totalSeconds = since(t0);
-	app::writeReport(dir + "report.json", fig, res);
+	app::writeReport(outDir.markerPath(), fig, res);  // last: a directory with report.json is complete
 	if (!quiet)
 	{
 		size_t nd = 0;

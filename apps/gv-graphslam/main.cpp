@@ -295,7 +295,7 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 	readSection(ini, EdgeDeciderOptions::sharedSection, false, s.ini, [&](auto&& v) { lc.visitShared(v); });
 	const GridVectorConfig mapConfig = validateGridVectorSections(ini, s);
 	const std::string dir = s.outDir.empty() ? gc.outputDir : s.outDir;
-	io::OutputDirectory outDir(dir);  // checked now, created when the engine has results
+	io::OutputDirectory outDir(dir, "trajectory.txt");  // checked now, created when the engine has results
 
 	// the engine does not own its deciders: they must outlive it
 	std::unique_ptr<mrpt::graphslam::deciders::CNodeRegistrationDecider<graph_t>> nrd(
@@ -330,12 +330,12 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 		params["max_iterations"] = 100;
 		mrpt::graphslam::optimize_graph_spa_levmarq(graph, info, nullptr, params);
 	}
-	io::writeTrajectory(dir + "/trajectory.txt", rec.scanTrajectory(graph.nodes));
 	io::writeTrajectory(dir + "/nodes.txt", rec.nodeTrajectory(graph.nodes));
 	mrpt::maps::CGridVectorMap map;
 	map.setConfig(mapConfig);
 	rec.buildMap(graph.nodes, map);
 	writeGridVectorMap(dir, map);
+	io::writeTrajectory(outDir.markerPath(), rec.scanTrajectory(graph.nodes));  // last: with it the set is complete
 
 	char summary[1024];
 	std::snprintf(summary, sizeof summary,

@@ -58,7 +58,7 @@ int run(const io::ArgParser& args)
 	const bool quiet = args.has("quiet");
 	GridVectorConfig cfg;
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
-	io::OutputDirectory outDir(out);  // checked now, created when the map is ready
+	io::OutputDirectory outDir(out, "memory.json");  // checked now, created when the map is ready
 
 	io::ReadOptions ro;
 	ro.quiet = quiet;
@@ -94,7 +94,7 @@ int run(const io::ArgParser& args)
 	MapExport::writeRosMap(grid, dir + "occupancy.pgm", dir + "occupancy.yaml");
 	MapExport::write3DScene(vectors, grid, dir + "map.3Dscene");
 	const MemoryReport mem = MemoryAccounting::account(vectors, 0.1);
-	MemoryAccounting::writeJson(mem, dir + "memory.json");
+	MemoryAccounting::writeJson(mem, outDir.markerPath());  // last: a directory with memory.json is complete
 	if (!quiet)
 	{
 		std::printf("%s: %zu of %s mapped in %.2f s (%.0f scans/s), %s\n", input.c_str(), used,

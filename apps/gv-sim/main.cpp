@@ -174,7 +174,7 @@ int main(int argc, char** argv)
 			args.fail("--" + flag + " " + e.problem + ", got '" + args.get(flag, "?") + "'");
 		}
 		const std::string dir = args.get("out", "gv-sim-" + opt.world + "-seed" + std::to_string(opt.seed));
-		io::OutputDirectory outDir(dir);  // fail before simulating, create when writing
+		io::OutputDirectory outDir(dir, sim::SimFiles::info);  // fail before simulating, create when writing; sim_info.txt last
 		const bool quiet = args.has("quiet");
 		const auto t0 = std::chrono::steady_clock::now();
 		io::Progress progress("simulating " + opt.world, quiet);

@@ -136,13 +136,29 @@ void checkWritableFile(const std::string& path)
 	if (::access(dir.c_str(), W_OK | X_OK) != 0) fail(errnoText());
 }
 
-OutputDirectory::OutputDirectory(std::string dir) : dir_(std::move(dir)) { checkWritableDirectory(dir_); }
+OutputDirectory::OutputDirectory(std::string dir, std::string marker) : dir_(std::move(dir)), marker_(std::move(marker))
+{
+	checkWritableDirectory(dir_);
+}
 
 const std::string& OutputDirectory::create()
 {
 	for (const auto& p : missingDirectories(directoryPath(dir_))) created_.push_back(p.string());
 	ensureWritableDirectory(dir_);
+	removeStaleMarker();
 	return dir_;
+}
+
+std::string OutputDirectory::markerPath() const { return marker_.empty() ? "" : (fs::path(dir_) / marker_).string(); }
+
+void OutputDirectory::removeStaleMarker() const
+{
+	if (marker_.empty()) return;
+	const std::string path = markerPath();
+	std::error_code ec;
+	if (fs::is_directory(fs::symlink_status(path, ec)))
+		throw std::runtime_error(path + ": cannot write (it is a directory)");
+	if (!fs::remove(path, ec) && ec) throw std::runtime_error(path + ": cannot remove a previous run's file (" + ec.message() + ")");
 }
 
 OutputDirectory::~OutputDirectory()

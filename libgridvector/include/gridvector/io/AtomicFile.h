@@ -68,21 +68,30 @@ void checkWritableFile(const std::string& path);
  * The constructor checks that dir can be written (checkWritableDirectory: a run fails before its
  * work, not after); create() makes it just before the first output file. If the run fails after
  * create() (an exception before any file was committed), the destructor removes the directories
- * create() made that are still empty: a failed run leaves no new empty directory behind. */
+ * create() made that are still empty: a failed run leaves no new empty directory behind.
+ *
+ * An output set (doc/io.md, "Output sets"): `marker` (e.g. "report.json") is the file the tool
+ * writes last, once every other output is in place, so a directory with it is complete.
+ * create() removes a previous run's marker before any output is rewritten: a run that fails
+ * halfway leaves a directory without one, never a mixed set that looks complete. */
 class OutputDirectory
 {
    public:
-	explicit OutputDirectory(std::string dir);
+	explicit OutputDirectory(std::string dir, std::string marker = "");
 	~OutputDirectory();
 	OutputDirectory(const OutputDirectory&) = delete;
 	OutputDirectory& operator=(const OutputDirectory&) = delete;
 
-	/** Creates the directory (and missing parents) if needed; returns path(). */
+	/** Creates the directory (and missing parents) if needed, removes a previous marker; returns path(). */
 	const std::string& create();
 	const std::string& path() const { return dir_; }
+	/** dir/marker, the file to write last ("" without a marker). */
+	std::string markerPath() const;
 
    private:
-	std::string dir_;
+	void removeStaleMarker() const;
+
+	std::string dir_, marker_;
 	std::vector<std::string> created_;  //!< made by create(), deepest first
 };
 

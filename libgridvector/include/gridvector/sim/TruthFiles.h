@@ -23,7 +23,8 @@ struct SimFiles
 	static constexpr const char* info = "sim_info.txt";  //!< options and statistics, "key value"
 };
 
-/** Writes every file of SimFiles into dir (created if missing), each atomically.
+/** Writes every file of SimFiles into dir (created if missing), each atomically, sim_info.txt last
+ * (gv-sim's output set: a directory with it is complete).
  * Throws "path: cannot write (reason)". */
 void writeSimulation(const SimResult& r, const std::string& dir);
 

@@ -25,7 +25,7 @@ struct ToolRun
 ToolRun runTool(const std::vector<std::string>& args, const std::function<int(const io::ArgParser&)>& body)
 {
 	io::ArgParser parser("tool", "[--n N] [ARG]");
-	parser.option("n", "N", "a number");
+	parser.option("n", "N", "a number", "3");
 	std::vector<const char*> argv{"tool"};
 	for (const auto& a : args) argv.push_back(a.c_str());
 	std::ostringstream out, err;
@@ -55,7 +55,7 @@ const char* kMrptError =
 TEST(ArgParser, OptionsFlagsAndPositionals)
 {
 	io::ArgParser a("tool", "ARG");
-	a.option("n", "N", "a number");
+	a.option("n", "N", "a number", "none");
 	a.flag("quiet", "quiet");
 	const char* argv[] = {"tool", "--n=3", "x", "--quiet", "--", "--y"};
 	ASSERT_TRUE(a.parse(6, argv));
@@ -63,6 +63,29 @@ TEST(ArgParser, OptionsFlagsAndPositionals)
 	EXPECT_TRUE(a.has("quiet"));
 	EXPECT_EQ(a.positional(), (std::vector<std::string>{"x", "--y"}));
 	EXPECT_THROW(a.getInt("n", 0, 4, 10), io::UsageError);
+}
+
+TEST(ArgParser, UsageListsEveryOptionWithItsDefault)
+{
+	io::ArgParser a("tool", "ARG");
+	a.option("repeat", "N", "passes", "5");
+	a.option("input", "LOG", "the log", io::ArgParser::kRequired);
+	a.flag("quiet", "no progress");
+	const std::string u = a.usage();
+	EXPECT_NE(u.find("  --repeat N                passes (default: 5)\n"), std::string::npos) << u;
+	EXPECT_NE(u.find("  --input LOG               the log (required)\n"), std::string::npos) << u;
+	EXPECT_NE(u.find("  --quiet                   no progress\n"), std::string::npos) << u;  // a flag: off unless given
+	EXPECT_NE(u.find("  --help "), std::string::npos) << u;
+	EXPECT_NE(u.find("  --version "), std::string::npos) << u;
+	// the parser accepts exactly what it lists
+	for (const char* opt : {"--repeat=1", "--input=x", "--quiet", "--version", "--help"})
+	{
+		io::ArgParser b = a;
+		const char* argv[] = {"tool", opt};
+		EXPECT_NO_THROW(b.parse(2, argv)) << opt;
+	}
+	const char* argv[] = {"tool", "--samples=2"};
+	EXPECT_THROW(a.parse(2, argv), io::UsageError);
 }
 
 TEST(RunTool, HelpPrintsUsageOnStdoutAndReturnsZero)

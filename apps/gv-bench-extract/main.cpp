@@ -22,6 +22,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace
 {
+const int kRepeat = 5;  //!< --repeat
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 
 // RMS orthogonal residual of each fitted segment (not timed).
@@ -51,7 +52,7 @@ int run(const io::ArgParser& args)
 {
 	args.requirePositional(1, 1);
 	const std::string log = args.positional()[0];
-	const int repeat = int(args.getInt("repeat", 5, 1, 1'000'000));
+	const int repeat = int(args.getInt("repeat", kRepeat, 1, 1'000'000));
 	GridVectorConfig cfg;
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
 	const io::LogData data = io::readLog(log);
@@ -91,7 +92,8 @@ int run(const io::ArgParser& args)
 int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-bench-extract", "LOG [--repeat N] [--config FILE.ini]");
-	args.option("repeat", "N", "passes over the log for each timing (default 5)");
-	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_extraction], [gridvector_grid])");
+	args.option("repeat", "N", "passes over the log for each timing", std::to_string(kRepeat));
+	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_extraction], [gridvector_grid])",
+				"the library's defaults (gv-config --ini)");
 	return io::runTool(args, argc, argv, [&] { return run(args); });
 }

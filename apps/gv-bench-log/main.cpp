@@ -2,6 +2,7 @@
 // CARMEN log, as ../shared/bench/mkbench.py does, without Python.
 #include <gridvector/io/ArgParser.h>
 #include <gridvector/io/Counted.h>
+#include <gridvector/io/TextParsing.h>
 #include <gridvector/sim/BenchmarkLog.h>
 
 #include <iostream>
@@ -11,16 +12,17 @@ using namespace gridvector;
 int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-bench-log", "IN-corrected.log[.gz] OUT_PREFIX [options]   (writes OUT_PREFIX.log, OUT_PREFIX.ref.txt)");
-	args.option("seed", "N", "random seed (default 1)");
-	args.option("sigma-t", "X", "relative translation noise (default 0.05)");
-	args.option("sigma-r", "RAD", "rotation noise per step (default 0.02)");
-	args.option("drift-deg-per-m", "X", "systematic yaw drift (default 0.8)");
-	args.option("dt", "S", "synthetic seconds between scans (default 0.2)");
+	const sim::BenchmarkOptions defaults;  // mkbench.py's
+	args.option("seed", "N", "random seed", std::to_string(defaults.seed));
+	args.option("sigma-t", "X", "relative translation noise", io::shortestText(defaults.noise.sigmaT));
+	args.option("sigma-r", "RAD", "rotation noise per step", io::shortestText(defaults.noise.sigmaR));
+	args.option("drift-deg-per-m", "X", "systematic yaw drift", io::shortestText(defaults.noise.driftDegPerM));
+	args.option("dt", "S", "synthetic seconds between scans", io::shortestText(defaults.dt));
 	args.flag("quiet", "no summary line");
 	return io::runTool(args, argc, argv, [&] {
 		args.requirePositional(2, 2);
-		sim::BenchmarkOptions o;
-		o.seed = args.getInt("seed", 1, 0, 0x7fffffffffffffffL);
+		sim::BenchmarkOptions o = defaults;
+		o.seed = args.getInt("seed", defaults.seed, 0, 0x7fffffffffffffffL);
 		o.noise.sigmaT = args.getDouble("sigma-t", o.noise.sigmaT);
 		o.noise.sigmaR = args.getDouble("sigma-r", o.noise.sigmaR);
 		o.noise.driftDegPerM = args.getDouble("drift-deg-per-m", o.noise.driftDegPerM);

@@ -21,6 +21,7 @@
 #include <gridvector/OccupancyConversion.h>
 #include <gridvector/VectorExtractor.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/TextParsing.h>
 #include <gridvector/io/LogReader.h>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
@@ -38,6 +39,7 @@ using Clock = std::chrono::steady_clock;
 
 namespace
 {
+const double kBand = 0.2;  //!< --band [m]
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
 template <class F>
 double timed(F&& f)
@@ -287,11 +289,12 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-bench-map", "[options] LOG...");
-	args.option("config", "FILE.ini", "gridvector parameters");
-	args.option("max-scans", "N", "use at most N scans of each log");
-	args.option("band", "M", "compare cells within M metres of a vector (default 0.2)");
-	args.option("repeat", "R", "sequential insertion R times, each scan's fastest time kept (default 1)");
-	args.option("samples", "N", "Eq. 6 sub-samples per axis of a grid cell (default: automatic)");
+	args.option("config", "FILE.ini", "gridvector parameters", "the library's defaults (gv-config --ini)");
+	args.option("max-scans", "N", "use at most N scans of each log (0: all)", "0");
+	args.option("band", "M", "compare cells within M metres of a vector", io::shortestText(kBand));
+	args.option("repeat", "R", "sequential insertion R times, each scan's fastest time kept", "1");
+	args.option("samples", "N", "Eq. 6 sub-samples per axis of a grid cell (0: automatic)",
+				"[gridvector_occupancy] samples_per_axis");
 	return io::runTool(
 		args, argc, argv,
 		[&] {
@@ -299,7 +302,7 @@ int main(int argc, char** argv)
 			GridVectorConfig cfg;
 			if (args.has("config")) cfg.loadFromFile(args.get("config"));
 			const long maxScans = args.getInt("max-scans", 0, 0, 100000000);
-			const double band = args.getDouble("band", 0.2);
+			const double band = args.getDouble("band", kBand);
 			if (band <= 0) args.fail("--band must be > 0 (metres), got " + args.get("band"));  // -1 compared no cell
 			gRepeat = int(args.getInt("repeat", 1, 1, 100));
 			gSamples = int(args.getInt("samples", cfg.occupancy.samplesPerAxis, 0, 16));

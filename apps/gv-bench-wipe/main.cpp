@@ -29,6 +29,7 @@ using mrpt::math::TPose2D;
 
 namespace
 {
+const int kRepeat = 3;  //!< --repeat
 double cpuSeconds(std::clock_t a, std::clock_t b) { return double(b - a) / CLOCKS_PER_SEC; }
 
 // The reference: ScanWipe::apply scan by scan over the per-scan vectors, each scan's own left out.
@@ -80,7 +81,7 @@ int run(const io::ArgParser& args)
 {
 	args.requirePositional(2, 2);
 	const std::string log = args.positional()[0], trajPath = args.positional()[1];
-	const int repeat = int(args.getInt("repeat", 3, 1, 1000));
+	const int repeat = int(args.getInt("repeat", kRepeat, 1, 1000));
 	GridVectorConfig cfg = EmSlam::defaultConfig();
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
 	io::ReadOptions ro;
@@ -135,7 +136,7 @@ int run(const io::ArgParser& args)
 int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-bench-wipe", "LOG TRAJ [--repeat N] [--config FILE.ini]");
-	args.option("repeat", "N", "timings of each path, alternated; the best is reported (default 3)");
-	args.option("config", "FILE.ini", "parameters over gv-em-slam's defaults");
+	args.option("repeat", "N", "timings of each path, alternated; the best is reported", std::to_string(kRepeat));
+	args.option("config", "FILE.ini", "parameters over gv-em-slam's defaults", "none: gv-em-slam's defaults");
 	return io::runTool(args, argc, argv, [&] { return run(args); });
 }

@@ -32,15 +32,17 @@ int main(int argc, char** argv)
 {
 	ArgParser args("gv-carmen2rawlog", "IN.log[.gz] OUT.rawlog [options]");
 	args.option("format", "obs|sf",
-				"obs: CObservationOdometry + CObservation2DRangeScan (default); "
-				"sf: actions + sensory frames (for rbpf-slam)");
+				"obs: CObservationOdometry + CObservation2DRangeScan; "
+				"sf: actions + sensory frames (for rbpf-slam)",
+				"obs");
 	args.flag("no-compress", "write an uncompressed rawlog (default: gzip, as MRPT does)");
 	args.flag("front-only", "drop rear-laser scans (RLASER, RAWLASER2)");
 	args.option("max-range", "auto|declared|M",
-				"auto (default): a reading shared exactly by >= 1 % and >= 10 of the scans at the log's maximum, below the "
+				"auto: a reading shared exactly by >= 1 % and >= 10 of the scans at the log's maximum, below the "
 				"declared maximum, is the scanner's no-return value (as the CARMEN reader does for every tool); "
 				"declared: keep the log's declared maximum; M: readings at or beyond M metres are 'no return' "
-				"(invalid) and every scan's maxRange is M");
+				"(invalid) and every scan's maxRange is M",
+				"auto");
 	args.flag("quiet", "no progress and no summary");
 	return runTool(args, argc, argv, [&] {
 		args.requirePositional(2, 2);

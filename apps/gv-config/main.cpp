@@ -19,8 +19,8 @@ int main(int argc, char** argv)
 	args.flag("ini", "print the configuration as an .ini file (every key, with its meaning)");
 	args.flag("markdown", "print the parameter table of doc/parameters.md (with --profile: the differences)");
 	args.flag("json", "print every key and value as JSON");
-	args.option("check", "FILE.ini", "load and validate FILE.ini (unknown keys and bad values are errors)");
-	args.option("profile", "NAME", "library (default: GridVectorConfig{}) or em-slam (gv-em-slam's defaults)");
+	args.option("check", "FILE.ini", "load and validate FILE.ini (unknown keys and bad values are errors)", "none");
+	args.option("profile", "NAME", "library (GridVectorConfig{}) or em-slam (gv-em-slam's defaults)", "library");
 	return io::runTool(
 		args, argc, argv,
 		[&] {

@@ -198,11 +198,14 @@ int run(const io::ArgParser& args)
 int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-em-slam", "--input LOG --out DIR [--config FILE.ini] [--max-iterations N] [--quiet]");
-	args.option("input", "LOG", "CARMEN log (.log/.clf[.gz]) or MRPT rawlog");
-	args.option("out", "DIR", "output directory (created if missing)");
-	args.option("config", "FILE.ini", "parameters (see gv-config; default: built-in EM-SLAM defaults)");
-	args.option("init", "TRAJ", "start from this 't x y theta' trajectory (e.g. gv-graphslam's) instead of raw odometry");
-	args.option("max-iterations", "N", "EM iterations at most (overrides [gridvector_mstep] max_iterations)");
+	args.option("input", "LOG", "CARMEN log (.log/.clf[.gz]) or MRPT rawlog", io::ArgParser::kRequired);
+	args.option("out", "DIR", "output directory (created if missing)", io::ArgParser::kRequired);
+	args.option("config", "FILE.ini", "parameters over the embedded EM-SLAM profile (see gv-config --profile em-slam)",
+				"none: the embedded profile");
+	args.option("init", "TRAJ", "start from this 't x y theta' trajectory (e.g. gv-graphslam's) instead of raw odometry",
+				"none: raw odometry");
+	args.option("max-iterations", "N", "EM iterations at most (overrides [gridvector_mstep] max_iterations)",
+				std::to_string(EmSlam::defaultConfig().mstep.maxIterations));
 	args.flag("quiet", "no progress or summary output");
 	return io::runTool(
 		args, argc, argv,

@@ -4,6 +4,7 @@
 #include <gridvector/eval/MapEval.h>
 #include <gridvector/eval/TrajectoryEval.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/TextParsing.h>
 #include <gridvector/io/LogReader.h>
 
 #include <cstdio>
@@ -163,17 +164,24 @@ int main(int argc, char** argv)
 					   "       gv-eval map VECTORS.txt TRUTHDIR [options]  (TRUTHDIR: a gv-sim output directory)");
 	args.flag("json", "print JSON instead of text");
 	args.option("max-dt", "S",
-				"traj, map --trajectory: match poses within this time difference (default 0.05 s); where times are "
-				"shared by different poses, one pose per scan of the same log is matched by order");
+				"traj, map --trajectory: match poses within this time difference (s); where times are "
+				"shared by different poses, one pose per scan of the same log is matched by order",
+				io::shortestText(eval::TrajectoryEvalOptions().maxTimeDiff));
 	args.flag("log-pose", "traj: for logs, use the poses the log attaches to scans instead of odometry");
-	args.option("trajectory", "EST", "map: the trajectory the map was built with; aligns the map to the truth like the ATE");
-	args.option("doors", "FILE", "map: detected doors 'hinge_x hinge_y length ...' to score door recall");
+	args.option("trajectory", "EST", "map: the trajectory the map was built with; aligns the map to the truth like the ATE",
+				"none: the map is in the truth's frame");
+	args.option("doors", "FILE", "map: detected doors 'hinge_x hinge_y length ...' to score door recall",
+				"none: no door recall");
 	args.flag("breakdown", "map: the static length off every true wall by its nearest dynamic truth, and each door's passes");
-	args.option("tolerance", "M", "map: distance for 'on a wall' / 'on a dynamic object' (default 0.1 m)");
-	args.option("door-tolerance", "M", "map: hinge match distance (default 0.3 m)");
+	const eval::MapEvalOptions mapDefaults;
+	args.option("tolerance", "M", "map: distance for 'on a wall' / 'on a dynamic object' (m)",
+				io::shortestText(mapDefaults.wallTolerance));
+	args.option("door-tolerance", "M", "map: hinge match distance (m)", io::shortestText(mapDefaults.doorTolerance));
 	args.option("door-min-beams", "N",
-				"map: a truth hit run shows a door leaf's state with at least N beams (default 3: two points fit any line)");
-	args.option("pass-gap", "S", "map --breakdown: a door's leaf hits further apart in time are two passes (default 2 s)");
+				"map: a truth hit run shows a door leaf's state with at least N beams (3: two points fit any line)",
+				std::to_string(mapDefaults.doorMinRunBeams));
+	args.option("pass-gap", "S", "map --breakdown: a door's leaf hits further apart in time are two passes (s)",
+				io::shortestText(mapDefaults.doorPassGap));
 	return io::runTool(args, argc, argv, [&]() -> int {
 		if (args.positional().empty()) args.fail("missing command (traj or map)");
 		const std::string cmd = args.positional()[0];

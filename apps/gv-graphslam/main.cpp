@@ -53,6 +53,10 @@ struct Settings
 	bool finalOptimization = true, quiet = false;
 };
 
+const char* const kNodeReg = "CGridVectorNRD";
+const char* const kEdgeReg = "CGridVectorERD";
+const char* const kOptimizer = "CLevMarqGSO";
+
 // MRPT's graphslam-engine spells its value options with one dash.
 std::vector<std::string> longOptions(int argc, char** argv)
 {
@@ -70,13 +74,13 @@ std::vector<std::string> longOptions(int argc, char** argv)
 
 void declare(io::ArgParser& a)
 {
-	a.option("ini-file", "INI", "graphslam-engine .ini (-i)");
-	a.option("rawlog", "RAWLOG", "rawlog, either format, plain or gzip (-r)");
-	a.option("ground-truth", "GT.txt", "ground truth for the engine's SLAM metric (-g)");
-	a.option("node-reg", "NRD", "node registration decider (-n, default CGridVectorNRD)");
-	a.option("edge-reg", "ERD", "edge registration decider (-e, default CGridVectorERD)");
-	a.option("optimizer", "GSO", "graph optimizer (-o, default CLevMarqGSO)");
-	a.option("output-dir", "DIR", "results directory (default: output_dir_fname of the .ini)");
+	a.option("ini-file", "INI", "graphslam-engine .ini (-i)", io::ArgParser::kRequired);
+	a.option("rawlog", "RAWLOG", "rawlog, either format, plain or gzip (-r)", io::ArgParser::kRequired);
+	a.option("ground-truth", "GT.txt", "ground truth for the engine's SLAM metric (-g)", "none");
+	a.option("node-reg", "NRD", "node registration decider (-n)", kNodeReg);
+	a.option("edge-reg", "ERD", "edge registration decider (-e)", kEdgeReg);
+	a.option("optimizer", "GSO", "graph optimizer (-o)", kOptimizer);
+	a.option("output-dir", "DIR", "results directory", "output_dir_fname of the .ini");
 	a.flag("2d", "2D graph of CPosePDFGaussianInf constraints (the only kind supported)");
 	a.flag("3d", "not supported: rejected");
 	a.flag("disable-visuals", "accepted for compatibility: gv-graphslam always runs headless");
@@ -111,9 +115,9 @@ Settings settingsFrom(const io::ArgParser& a, const DeciderRegistry& reg)
 	if (s.ini.empty()) a.fail("missing -i INI");
 	if (s.rawlog.empty()) a.fail("missing -r RAWLOG");
 	s.groundTruth = a.get("ground-truth");
-	s.nodeReg = a.get("node-reg", "CGridVectorNRD");
-	s.edgeReg = a.get("edge-reg", "CGridVectorERD");
-	s.optimizer = a.get("optimizer", "CLevMarqGSO");
+	s.nodeReg = a.get("node-reg", kNodeReg);
+	s.edgeReg = a.get("edge-reg", kEdgeReg);
+	s.optimizer = a.get("optimizer", kOptimizer);
 	if (!reg.checkRegistrationDeciderExists(s.nodeReg, "node") || !reg.node_regs_map.count(s.nodeReg))
 		a.fail("unknown node registration decider '" + s.nodeReg + "'; --list-node-regs lists them");
 	if (!reg.checkRegistrationDeciderExists(s.edgeReg, "edge") || !reg.edge_regs_map.count(s.edgeReg))

@@ -17,9 +17,12 @@ int main(int argc, char** argv)
 {
 	gridvector::io::ArgParser args(
 		"gv-map-info", "MAP.gvmap [--save OUT.gvmap]\n       gv-map-info --from-simplemap FILE.simplemap [--config FILE.ini] [--save OUT.gvmap]");
-	args.option("from-simplemap", "FILE", "build the map from an MRPT .simplemap (poses + observations)");
-	args.option("config", "FILE.ini", "gridvector parameters for --from-simplemap ([gridvector_*] sections)");
-	args.option("save", "OUT.gvmap", "write the map (in the current .gvmap format version), atomically");
+	args.option("from-simplemap", "FILE", "build the map from an MRPT .simplemap (poses + observations)",
+				"none: read MAP.gvmap");
+	args.option("config", "FILE.ini", "gridvector parameters for --from-simplemap ([gridvector_*] sections)",
+				"the library's defaults (gv-config --ini)");
+	args.option("save", "OUT.gvmap", "write the map (in the current .gvmap format version), atomically",
+				"none: print only");
 	return gridvector::io::runTool(
 		args, argc, argv,
 		[&] {

@@ -111,10 +111,11 @@ int run(const io::ArgParser& args)
 int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-map", "--input LOG --poses {log|FILE} --out DIR [--config FILE.ini] [--quiet]");
-	args.option("input", "LOG", "CARMEN log (.log/.clf, optionally .gz) or MRPT rawlog");
-	args.option("poses", "log|FILE", "poses stored in the log, or a 't x y theta' trajectory file");
-	args.option("out", "DIR", "output directory (created if missing)");
-	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_*] sections)");
+	args.option("input", "LOG", "CARMEN log (.log/.clf, optionally .gz) or MRPT rawlog", io::ArgParser::kRequired);
+	args.option("poses", "log|FILE", "poses stored in the log, or a 't x y theta' trajectory file", io::ArgParser::kRequired);
+	args.option("out", "DIR", "output directory (created if missing)", io::ArgParser::kRequired);
+	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_*] sections)",
+				"the library's defaults (gv-config --ini)");
 	args.flag("quiet", "no progress and no summary");
 	return io::runTool(
 		args, argc, argv,

@@ -140,8 +140,8 @@ void printSummary(const sim::SimResult& r, const std::string& dir, double second
 int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-sim", "[--out DIR] [options]");
-	args.option("out", "DIR", "output directory (default: gv-sim-WORLD-seedN)");
-	args.option("config", "FILE", "read options from the [gv_sim] section of an .ini file (flags override)");
+	args.option("out", "DIR", "output directory", "gv-sim-WORLD-seedN");
+	args.option("config", "FILE", "read options from the [gv_sim] section of an .ini file (flags override)", "none");
 	args.flag("list-worlds", "list the built-in worlds and exit");
 	args.flag("quiet", "no progress and no summary");
 	args.flag("peer-timing", "also time MRPT's grid laser simulator on the same poses (a speed reference)");
@@ -149,7 +149,7 @@ int main(int argc, char** argv)
 	opt.visit([&](const char* k, auto& v, const char* help) {
 		std::ostringstream def;
 		def << std::boolalpha << std::setprecision(12) << v;
-		args.option(dashed(k), typeName(v), std::string(help) + " (default " + def.str() + ")");
+		args.option(dashed(k), typeName(v), help, def.str());
 	});
 	return io::runTool(args, argc, argv, [&] {
 		args.requirePositional(0, 0);

@@ -18,15 +18,16 @@ ArgParser::ArgParser(std::string program, std::string synopsis)
 	flag("version", "print the version (gridvector, git, MRPT) and exit");
 }
 
-void ArgParser::option(const std::string& name, const std::string& valueName, const std::string& help)
+void ArgParser::option(const std::string& name, const std::string& valueName, const std::string& help,
+					   const std::string& def)
 {
-	specs_[name] = {valueName, help, true};
+	specs_[name] = {valueName, help, def, true};
 	order_.push_back(name);
 }
 
 void ArgParser::flag(const std::string& name, const std::string& help)
 {
-	specs_[name] = {"", help, false};
+	specs_[name] = {"", help, "", false};
 	order_.push_back(name);
 }
 
@@ -78,7 +79,9 @@ std::string ArgParser::usage() const
 		std::string left = "  --" + n + (s.takesValue ? " " + s.valueName : "");
 		if (left.size() < 26) left.resize(26, ' ');
 		else left += "\n" + std::string(26, ' ');
-		os << left << s.help << "\n";
+		os << left << s.help;
+		if (s.takesValue) os << (s.def == kRequired ? " (required)" : " (default: " + s.def + ")");
+		os << "\n";
 	}
 	return os.str();
 }

@@ -22,8 +22,13 @@ class ArgParser
    public:
 	ArgParser(std::string program, std::string synopsis);
 
-	/** --name VALUE (also --name=VALUE). */
-	void option(const std::string& name, const std::string& valueName, const std::string& help);
+	/** What an option's `def` says of an option the tool cannot run without: --help shows "(required)". */
+	static constexpr const char* kRequired = "\x01required";
+
+	/** --name VALUE (also --name=VALUE). `def`: what the tool does without the option, which --help
+	 * prints after the help as "(default: DEF)", e.g. shortestText of the value the tool then uses,
+	 * "none" or a phrase; kRequired for "(required)". Every option states one (tests/integration/help.sh). */
+	void option(const std::string& name, const std::string& valueName, const std::string& help, const std::string& def);
 	/** --name without a value. */
 	void flag(const std::string& name, const std::string& help);
 
@@ -44,7 +49,7 @@ class ArgParser
    private:
 	struct Spec
 	{
-		std::string valueName, help;
+		std::string valueName, help, def;
 		bool takesValue;
 	};
 	std::string program_, synopsis_;

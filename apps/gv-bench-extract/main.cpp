@@ -5,6 +5,7 @@
 //   gv-bench-extract LOG [--repeat N] [--config FILE.ini]
 #include <gridvector/VectorExtractor.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Progress.h>
 #include <gridvector/io/LogReader.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 
@@ -55,23 +56,34 @@ int run(const io::ArgParser& args)
 	const int repeat = int(args.getInt("repeat", kRepeat, 1, 1'000'000));
 	GridVectorConfig cfg;
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
-	const io::LogData data = io::readLog(log);
+	const bool quiet = args.has("quiet");
+	io::ReadOptions ro;
+	ro.quiet = quiet;
+	const io::LogData data = io::readLog(log, ro);
 	io::requireScans(data);
 	const VectorExtractor ex(cfg.extraction, cfg.grid);
 
 	size_t vectors = 0, beams = 0;
+	io::Progress progress(quiet);  // once per pass: nothing measurable in the timings
 	const auto t0 = Clock::now();
 	for (int r = 0; r < repeat; ++r)
+	{
 		for (const auto& rec : data.scans) vectors += ex.extract(*rec.scan).vectors.size();
+		progress.show("extraction passes", size_t(r + 1), size_t(repeat));
+	}
 	const auto t1 = Clock::now();
 	for (int r = 0; r < repeat; ++r)
+	{
 		for (const auto& rec : data.scans)
 		{
 			mrpt::maps::CSimplePointsMap pm;
 			pm.insertObservation(*rec.scan);
 			beams += pm.size();
 		}
+		progress.show("peer passes", size_t(r + 1), size_t(repeat));
+	}
 	const auto t2 = Clock::now();
+	progress.done();
 
 	std::vector<double> res;
 	for (const auto& rec : data.scans) residuals(ex, *rec.scan, res);
@@ -93,6 +105,7 @@ int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-bench-extract", "LOG [--repeat N] [--config FILE.ini]");
 	args.option("repeat", "N", "passes over the log for each timing", std::to_string(kRepeat));
+	args.flag("quiet", "no progress (the figures on stdout are the output)");
 	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_extraction], [gridvector_grid])",
 				"the library's defaults (gv-config --ini)");
 	return io::runTool(args, argc, argv, [&] { return run(args); });

@@ -21,6 +21,7 @@
 #include <gridvector/OccupancyConversion.h>
 #include <gridvector/VectorExtractor.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Progress.h>
 #include <gridvector/io/TextParsing.h>
 #include <gridvector/io/LogReader.h>
 
@@ -147,10 +148,11 @@ Timing perScanTiming(const std::vector<double>& t)
 	return r;
 }
 
-void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScans, double band)
+void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScans, double band, bool quiet)
 {
 	io::ReadOptions ro;
 	ro.includeRearLaser = false;
+	ro.quiet = quiet;
 	const io::LogData log = io::readLog(path, ro);
 	std::vector<mrpt::math::TPose2D> poses;
 	std::vector<mrpt::obs::CObservation2DRangeScan::Ptr> obs;
@@ -183,6 +185,7 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 	// (--repeat R: the whole sequence R times, each scan's fastest time kept,
 	// so that other processes on a shared machine do not decide the figures)
 	GlobalMap map(cfg);
+	io::Progress progress(quiet);  // drawn between the timed calls
 	for (int rep = 0; rep < gRepeat; ++rep)
 	{
 		map.clear();
@@ -195,6 +198,7 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 			const auto& st = map.lastInsertStats();
 			work[t] = double(st.wipe.candidates);
 			cellsWiped[t] = double(st.wipe.cellsHit + st.wipe.cellsVisited);
+			progress.show(path + ": sequential insertion " + std::to_string(rep + 1) + "/" + std::to_string(gRepeat), t + 1, n);
 		}
 	}
 	// the same sequential map with map.wipe_vectorless_beams flipped (beyond the paper), for the agreement
@@ -216,8 +220,10 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 			grid.insertObservation(*obs[t], pose);
 			const double dt = seconds(a, Clock::now());
 			tMrpt[t] = rep ? std::min(tMrpt[t], dt) : dt;
+			progress.show(path + ": MRPT grid " + std::to_string(rep + 1) + "/" + std::to_string(gRepeat), t + 1, n);
 		}
 	}
+	progress.done();
 	mrpt::maps::COccupancyGridMap2D gridRev(-10, 10, -10, 10, float(cfg.grid.resolution));
 	gridRev.insertionOptions = grid.insertionOptions;
 	for (size_t k = n; k-- > 0;)
@@ -293,6 +299,7 @@ int main(int argc, char** argv)
 	args.option("max-scans", "N", "use at most N scans of each log (0: all)", "0");
 	args.option("band", "M", "compare cells within M metres of a vector", io::shortestText(kBand));
 	args.option("repeat", "R", "sequential insertion R times, each scan's fastest time kept", "1");
+	args.flag("quiet", "no progress (the table on stdout is the output)");
 	args.option("samples", "N", "Eq. 6 sub-samples per axis of a grid cell (0: automatic)",
 				"[gridvector_occupancy] samples_per_axis");
 	return io::runTool(
@@ -309,7 +316,7 @@ int main(int argc, char** argv)
 			gMaxPooling = cfg.occupancy.maxPooling;
 			gGrid = cfg.grid;
 			std::printf("| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/n_v static | n_g/cells | agree seq | agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-			for (const auto& log : args.positional()) benchLog(log, cfg, maxScans, band);
+			for (const auto& log : args.positional()) benchLog(log, cfg, maxScans, band, args.has("quiet"));
 			return 0;
 		});
 }

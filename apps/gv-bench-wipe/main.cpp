@@ -14,6 +14,8 @@
 #include <gridvector/GlobalMap.h>
 #include <gridvector/VectorExtractor.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Counted.h>
+#include <gridvector/io/Progress.h>
 #include <gridvector/io/LogReader.h>
 
 #include <algorithm>
@@ -84,14 +86,15 @@ int run(const io::ArgParser& args)
 	const int repeat = int(args.getInt("repeat", kRepeat, 1, 1000));
 	GridVectorConfig cfg = EmSlam::defaultConfig();
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
+	const bool quiet = args.has("quiet");
 	io::ReadOptions ro;
-	ro.quiet = true;
+	ro.quiet = quiet;
 	const io::LogData data = io::readLog(log, ro);
 	const io::Trajectory traj = io::readTrajectory(trajPath);
 	io::requireScans(data);
 	if (traj.size() != data.scans.size())
-		throw std::runtime_error(trajPath + ": " + std::to_string(traj.size()) + " poses for " +
-								 std::to_string(data.scans.size()) + " scans");
+		throw std::runtime_error(trajPath + ": " + io::counted(traj.size(), "pose") + " for " +
+								 io::counted(data.scans.size(), "scan"));
 	std::vector<TPose2D> odo;
 	for (const auto& r : data.scans) odo.push_back(r.hasOdometry ? r.odometry : r.hasLogPose ? r.logPose : TPose2D());
 	const auto key = EmSlam::keyframes(odo, cfg.mstep);
@@ -110,8 +113,10 @@ int run(const io::ArgParser& args)
 	double product = 1e300, reference = 1e300;
 	std::vector<GridVector> a, b;
 	ScanWipe::Stats st;
+	io::Progress progress(quiet);  // between the timed calls
 	for (int r = 0; r < repeat; ++r)  // alternated, so that both see the same machine
 	{
+		progress.show("timing passes", size_t(r), size_t(repeat));
 		auto c0 = std::clock();
 		a = GlobalMap::buildPerScan(poses, scans, cfg);
 		auto c1 = std::clock();
@@ -120,6 +125,7 @@ int run(const io::ArgParser& args)
 		product = std::min(product, cpuSeconds(c0, c1));
 		reference = std::min(reference, cpuSeconds(c1, c2));
 	}
+	progress.done();
 	const size_t differ = differingCells(a, b);
 	std::printf("log: %s\nkeyframes: %zu of %zu scans, %zu vectors, %zu cells\n", log.c_str(), key.size(),
 				data.scans.size(), a.size(), cells);
@@ -137,6 +143,7 @@ int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-bench-wipe", "LOG TRAJ [--repeat N] [--config FILE.ini]");
 	args.option("repeat", "N", "timings of each path, alternated; the best is reported", std::to_string(kRepeat));
+	args.flag("quiet", "no progress (the figures on stdout are the output)");
 	args.option("config", "FILE.ini", "parameters over gv-em-slam's defaults", "none: gv-em-slam's defaults");
 	return io::runTool(args, argc, argv, [&] { return run(args); });
 }

@@ -16,6 +16,7 @@
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/IniLayout.h>
+#include <gridvector/io/Progress.h>
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/containers/yaml.h>
@@ -30,6 +31,7 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -91,7 +93,7 @@ void declare(io::ArgParser& a)
 	a.flag("no-final-optimization",
 		   "trajectory/map from the engine's last node estimates instead of a final full "
 		   "Levenberg-Marquardt pass over the whole graph");
-	a.flag("quiet", "only errors and the summary line");
+	a.flag("quiet", "no progress, no engine messages and no summary: errors only");
 }
 
 /** Returns true if a listing was asked for (and printed). */
@@ -138,10 +140,12 @@ void requireFile(const std::string& path, const char* what)
 
 /** Feeds every rawlog entry to the engine; returns the number of entries. */
 size_t feed(const std::string& rawlog, mrpt::graphslam::CGraphSlamEngine<graph_t>& engine,
-			RunRecorder& rec, std::optional<GroundTruthIndex>& gt)
+			RunRecorder& rec, std::optional<GroundTruthIndex>& gt, bool quiet)
 {
 	mrpt::io::CFileGZInputStream in;
 	if (!in.open(rawlog)) throw std::runtime_error(rawlog + ": cannot open");
+	io::Progress progress("graph SLAM: rawlog entries", quiet);  // the share of the (compressed) file read
+	const double bytes = double(std::max<uint64_t>(1, in.getTotalBytesCount()));
 	auto arch = mrpt::serialization::archiveFrom(in);
 	mrpt::obs::CActionCollection::Ptr action;
 	mrpt::obs::CSensoryFrame::Ptr sf;
@@ -173,7 +177,9 @@ size_t feed(const std::string& rawlog, mrpt::graphslam::CGraphSlamEngine<graph_t
 		if (gt) gt->afterStep(obs != nullptr, entry);
 		rec.record(action, sf, obs, engine.getGraph().nodeCount());
 		++steps;
+		progress.update(std::min(1.0, double(in.getPosition()) / bytes), entry);
 	}
+	progress.done();
 	if (steps == 0) throw std::runtime_error(rawlog + ": no rawlog entries");
 	return steps;
 }
@@ -322,7 +328,7 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 
 	RunRecorder rec;
 	const auto t0 = std::chrono::steady_clock::now();
-	const size_t steps = feed(s.rawlog, engine, rec, gt);
+	const size_t steps = feed(s.rawlog, engine, rec, gt, s.quiet);
 	const double slamSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	writeEngineOutputs(engine, gc, outDir.create());
 
@@ -365,8 +371,9 @@ int main(int argc, char** argv)
 		[&] {
 			DeciderRegistry reg;
 			if (listings(args, reg)) return 0;
-			const std::string summary = run(settingsFrom(args, reg), reg);
-			std::fputs(summary.c_str(), stdout);
+			const Settings s = settingsFrom(args, reg);
+			const std::string summary = run(s, reg);
+			if (!s.quiet) std::fputs(summary.c_str(), stdout);
 			return 0;
 		});
 }

@@ -159,7 +159,7 @@ std::vector<float> CarmenParser::ranges(const Tokens& t, size_t first, size_t n,
 {
 	if (first + n > t.size())
 		parseError(pos_, what + ": " + counted(n, "range") + " announced, line has only " +
-							 counted(t.size() - std::min(first, t.size()), "more field") + ");
+							 counted(t.size() - std::min(first, t.size()), "more field"));
 	std::vector<float> r(n);
 	for (size_t i = 0; i < n; i++)
 	{

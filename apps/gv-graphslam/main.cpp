@@ -239,28 +239,33 @@ class StdinFromDevNull
 
 /** --quiet: MRPT's engine and deciders print their start-up messages (before their logging level
  * can be set), an INFO-level exception dump about a missing RGB-D info file and, when destroyed,
- * their timing tables, all on stdout. While this lives, stdout goes to /dev/null. */
-class StdoutToDevNull
+ * their timing tables, all on stdout, and on a terminal the colour codes of their log lines on
+ * stderr. While this lives, stdout and stderr go to /dev/null (errors are thrown, and reported by
+ * runTool once it is gone). */
+class QuietOutput
 {
    public:
-	explicit StdoutToDevNull(bool on) : saved_(on ? dup(1) : -1)
+	explicit QuietOutput(bool on)
 	{
-		if (saved_ < 0) return;
-		std::fflush(stdout), std::cout.flush();
+		if (!on) return;
+		std::fflush(stdout), std::cout.flush(), std::fflush(stderr), std::cerr.flush();
 		const int null = open("/dev/null", O_WRONLY);
-		if (null >= 0) dup2(null, 1), close(null);
+		if (null < 0) return;
+		for (int fd : {1, 2})
+			if ((saved_[fd - 1] = dup(fd)) >= 0) dup2(null, fd);
+		close(null);
 	}
-	~StdoutToDevNull()
+	~QuietOutput()
 	{
-		if (saved_ < 0) return;
-		std::fflush(stdout), std::cout.flush();
-		dup2(saved_, 1), close(saved_);
+		std::fflush(stdout), std::cout.flush(), std::fflush(stderr), std::cerr.flush();
+		for (int fd : {1, 2})
+			if (saved_[fd - 1] >= 0) dup2(saved_[fd - 1], fd), close(saved_[fd - 1]);
 	}
-	StdoutToDevNull(const StdoutToDevNull&) = delete;
-	StdoutToDevNull& operator=(const StdoutToDevNull&) = delete;
+	QuietOutput(const QuietOutput&) = delete;
+	QuietOutput& operator=(const QuietOutput&) = delete;
 
    private:
-	int saved_;
+	int saved_[2] = {-1, -1};
 };
 
 /** Checks the grid-vector sections before the engine reads them: errors
@@ -284,7 +289,7 @@ GridVectorConfig validateGridVectorSections(const mrpt::config::CConfigFileBase&
 /** Runs the engine; returns the summary line. */
 std::string run(const Settings& s, DeciderRegistry& reg)
 {
-	const StdoutToDevNull quiet(s.quiet);  // declared first: the engine and deciders are destroyed inside it
+	const QuietOutput quiet(s.quiet);  // declared first: the engine and deciders are destroyed inside it
 	requireFile(s.ini, "config file");
 	{
 		const std::vector<char> text = io::readFileBytes(s.ini);  // MRPT's reader skips what it cannot parse

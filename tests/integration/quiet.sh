@@ -4,7 +4,7 @@
 # file or pipe, and with --quiet print nothing but errors: gv-em-slam, gv-map, gv-sim,
 # gv-graphslam and gv-carmen2rawlog nothing at all, the benchmarks only their figures on stdout.
 set -euo pipefail
-: "${GV_BIN:?}" "${GV_SOURCE_DIR:?}"
+: "${GV_BIN:?}" "${GV_SOURCE_DIR:?}" "${GV_SHARED_DIR:?}"
 B="$GV_BIN"
 W=$(mktemp -d); trap 'rm -rf "$W"' EXIT
 cd "$W"
@@ -18,7 +18,7 @@ tools=(
   "gv-map|$B/gv-map --input sim/sim.log --poses sim/truth_trajectory.txt --out map"
   "gv-sim|$B/gv-sim --world office --seed 2 --scans 20 --out s2"
   "gv-graphslam|$B/gv-graphslam --2d -i $INI -r sim.rawlog --disable-visuals --output-dir gs"
-  "gv-carmen2rawlog|$B/gv-carmen2rawlog sim/sim.log c.rawlog"
+  "gv-carmen2rawlog|$B/gv-carmen2rawlog $GV_SHARED_DIR/data/aces-corrected.log.gz c.rawlog"  # progress every 4096 lines
   "gv-bench-extract|$B/gv-bench-extract sim/sim.log --repeat 2"
   "gv-bench-wipe|$B/gv-bench-wipe sim/sim.log sim/truth_trajectory.txt --repeat 2"
   "gv-bench-map|$B/gv-bench-map sim/sim.log --max-scans 30"

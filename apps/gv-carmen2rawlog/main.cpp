@@ -35,7 +35,7 @@ int main(int argc, char** argv)
 				"obs: CObservationOdometry + CObservation2DRangeScan; "
 				"sf: actions + sensory frames (for rbpf-slam)",
 				"obs");
-	args.flag("no-compress", "write an uncompressed rawlog (default: gzip, as MRPT does)");
+	args.flag("no-compress", "write an uncompressed rawlog (without it: gzip, as MRPT does)");
 	args.flag("front-only", "drop rear-laser scans (RLASER, RAWLASER2)");
 	args.option("max-range", "auto|declared|M",
 				"auto: a reading shared exactly by >= 1 % and >= 10 of the scans at the log's maximum, below the "

@@ -197,7 +197,7 @@ int run(const io::ArgParser& args)
 
 int main(int argc, char** argv)
 {
-	io::ArgParser args("gv-em-slam", "--input LOG --out DIR [--config FILE.ini] [--max-iterations N] [--quiet]");
+	io::ArgParser args("gv-em-slam", "--input LOG --out DIR [--config FILE.ini] [--init TRAJ] [--max-iterations N] [--quiet]");
 	args.option("input", "LOG", "CARMEN log (.log/.clf[.gz]) or MRPT rawlog", io::ArgParser::kRequired);
 	args.option("out", "DIR", "output directory (created if missing)", io::ArgParser::kRequired);
 	args.option("config", "FILE.ini", "parameters over the embedded EM-SLAM profile (see gv-config --profile em-slam)",

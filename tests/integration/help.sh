@@ -22,11 +22,13 @@ for tool in tools:
     if not lines[0].startswith(f"usage: {tool} "): bad.append(f"{tool}: first line {lines[0]!r}")
     listed = {}
     for i, line in enumerate(lines):
-        m = re.match(r"^  --([a-z0-9-]+)( (\S+))?(\s+(.*))?$", line)
-        if not m: continue
-        text = m.group(5) or ""
-        if not text and i + 1 < len(lines): text = lines[i + 1].strip()  # a long name: the help on the next line
-        listed[m.group(1)] = (m.group(3) is not None, text)
+        if not line.startswith("  --"): continue
+        # io::ArgParser's table: "  --name [VALUE]" padded to 26 columns, then the help; a longer
+        # left part stands alone and the help follows on the next line
+        alone = i + 1 < len(lines) and lines[i + 1].startswith(" " * 26) and lines[i + 1].strip()
+        left, text = (line, lines[i + 1].strip()) if alone else (line[:26], line[26:].strip())
+        words = left.split()
+        listed[words[0][2:]] = (len(words) > 1, text)
     for must in ("help", "version"):
         if must not in listed: bad.append(f"{tool}: --{must} not listed")
     for name, (takes_value, text) in listed.items():

@@ -13,8 +13,11 @@
 // out of both maps; with --map every scan goes into the occupancy grid.
 #include <gridvector/SE2.h>
 #include <gridvector/io/ArgParser.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/LogReader.h>
 #include <gridvector/io/ObjectFile.h>
+#include <gridvector/io/Progress.h>
+#include <gridvector/io/TextParsing.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CSimplePointsMap.h>
@@ -35,6 +38,13 @@ using mrpt::math::TPose2D;
 
 namespace
 {
+/** The options' defaults (--help prints them). */
+struct Defaults
+{
+	static constexpr long every = 10;
+	static constexpr double offset = 0.3, offsetDeg = 5.0, gridResolution = 0.05;
+	static constexpr long seed = 1;
+};
 struct Errors
 {
 	std::vector<double> trans, rot;  //!< [m], [deg]
@@ -93,17 +103,19 @@ int run(const gridvector::io::ArgParser& args)
 {
 	args.requirePositional(2, 2);
 	const std::string logPath = args.positional()[0], trajPath = args.positional()[1];
-	const long every = args.getInt("every", 10, 2, 1000000);
-	const double offset = args.getDouble("offset", 0.3), offsetDeg = args.getDouble("offset-deg", 5.0);
-	const double gridRes = args.getDouble("grid-resolution", 0.05);
+	const long every = args.getInt("every", Defaults::every, 2, 1000000);
+	const double offset = args.getDouble("offset", Defaults::offset), offsetDeg = args.getDouble("offset-deg", Defaults::offsetDeg);
+	const double gridRes = args.getDouble("grid-resolution", Defaults::gridResolution);
+	const bool quiet = args.has("quiet");
 	if (!(offset >= 0) || !(offsetDeg >= 0) || !(gridRes > 0)) args.fail("--offset, --offset-deg must be >= 0, --grid-resolution > 0");
 	gridvector::io::ReadOptions ro;
+	ro.quiet = quiet;
 	const gridvector::io::LogData data = gridvector::io::readLog(logPath, ro);
 	gridvector::io::requireScans(data);
 	const gridvector::io::Trajectory traj = gridvector::io::readTrajectory(trajPath);
 	if (traj.size() != data.scans.size())
-		throw std::runtime_error(trajPath + ": " + std::to_string(traj.size()) + " poses for " +
-								 std::to_string(data.scans.size()) + " scans of " + logPath);
+		throw std::runtime_error(trajPath + ": " + gridvector::io::counted(traj.size(), "pose") + " for " +
+								 gridvector::io::counted(data.scans.size(), "scan") + " of " + logPath);
 	mrpt::maps::CGridVectorMap gv;
 	if (args.has("map"))
 	{
@@ -128,11 +140,13 @@ int run(const gridvector::io::ArgParser& args)
 	}
 	std::printf("log: %s, %zu scans; map: %s; every %ld-th scan tested from a guess %.3f m / %.2f deg off\n",
 				logPath.c_str(), data.scans.size(), gv.asString().c_str(), every, offset, offsetDeg);
-	std::mt19937 rng(uint32_t(args.getInt("seed", 1, 0, 4294967295L)));
+	std::mt19937 rng(uint32_t(args.getInt("seed", Defaults::seed, 0, 4294967295L)));
 	std::uniform_real_distribution<double> dir(-M_PI, M_PI);
 	Errors eGv, eGrid;
+	gridvector::io::Progress progress(quiet);  // between the timed calls
 	for (size_t i = first; i < data.scans.size(); i += size_t(every))
 	{
+		progress.show("aligning scans", i, data.scans.size());
 		mrpt::maps::CSimplePointsMap pts;
 		pts.insertionOptions.minDistBetweenLaserPoints = 0;
 		pts.loadFromRangeScan(*data.scans[i].scan);
@@ -144,6 +158,7 @@ int run(const gridvector::io::ArgParser& args)
 		alignOne(gv, pts, ref, guess, eGv);
 		alignOne(grid, pts, ref, guess, eGrid);
 	}
+	progress.done();
 	if (eGv.trans.empty()) throw std::runtime_error(logPath + ": no tested scan has a valid reading");
 	report("CGridVectorMap", eGv);
 	report("COccupancyGridMap2D", eGrid);
@@ -156,15 +171,15 @@ int main(int argc, char** argv)
 	gridvector::io::ArgParser args("gv-bench-icp",
 								   "LOG TRAJ [--map MAP.gvmap] [--every N] [--offset M] [--offset-deg D] [--seed S] "
 								   "[--grid-resolution R] [--config FILE.ini]");
-	args.option("map", "MAP.gvmap", "the grid-vector map (else built from every other scan at its TRAJ pose)");
-	args.option("every", "N", "test scans N/2, N/2 + N, ... (default 10)");
-	args.option("offset", "M", "guess this far from the TRAJ pose, in a random direction [m] (default 0.3)");
-	args.option("offset-deg", "D", "... and turned by +-D [deg] (default 5)");
-	args.option("seed", "S", "seed of the guesses' directions (default 1)");
-	args.option("grid-resolution", "R", "MRPT occupancy grid's cell size [m] (default 0.05)");
-	args.option("config", "FILE.ini", "gridvector parameters for the map built here");
-	gridvector::io::ToolErrorStyle style;
-	style.prefix = "gv-bench-icp: ";
-	style.oneLine = true;
-	return gridvector::io::runTool(args, argc, argv, [&] { return run(args); }, style);
+	using gridvector::io::shortestText;
+	args.option("map", "MAP.gvmap", "the grid-vector map", "built from every other scan at its TRAJ pose");
+	args.option("every", "N", "test scans N/2, N/2 + N, ...", std::to_string(Defaults::every));
+	args.option("offset", "M", "guess this far from the TRAJ pose, in a random direction [m]", shortestText(Defaults::offset));
+	args.option("offset-deg", "D", "... and turned by +-D [deg]", shortestText(Defaults::offsetDeg));
+	args.option("seed", "S", "seed of the guesses' directions", std::to_string(Defaults::seed));
+	args.option("grid-resolution", "R", "MRPT occupancy grid's cell size [m]", shortestText(Defaults::gridResolution));
+	args.option("config", "FILE.ini", "gridvector parameters for the map built here",
+				"the library's defaults (gv-config --ini)");
+	args.flag("quiet", "no progress (the figures on stdout are the output)");
+	return gridvector::io::runTool(args, argc, argv, [&] { return run(args); });
 }

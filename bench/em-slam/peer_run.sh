@@ -42,7 +42,7 @@ command -v "$app" > /dev/null || fail_all "$app not installed (apt-get install m
 name=$(basename "$app")
 rawlog="$WORK/bench.$fmt.rawlog"
 "$BIN/gv-carmen2rawlog" "$BENCH.log" "$rawlog" --format "$fmt" --max-range auto --quiet 2> "$WORK/convert.err" ||
-  fail_all "gv-carmen2rawlog: $(head -1 "$WORK/convert.err")"
+  fail_all "$(head -1 "$WORK/convert.err")"  # the message names the tool
 
 rm -rf "$WORK/OUT"
 t0=$(date +%s.%N)

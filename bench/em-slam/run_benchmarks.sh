@@ -64,7 +64,7 @@ gv_row() {
   local name=$1 seed=$2 b=$3 res=$4 d="$OUT/${1}_s$2" t0 t1 r rep it conv
   t0=$(date +%s.%N)
   if ! taskset -c "$CORE" "$BIN/gv-em-slam" --input "$b.log" --out "$d" --quiet 2> "$d.err"; then
-    echo "failed: gv-em-slam: $(tail -1 "$d.err")" > "$res/gv.txt"
+    echo "failed: $(tail -1 "$d.err")" > "$res/gv.txt"
     echo "| $name | $seed | failed: $(tail -1 "$d.err") |"; return
   fi
   t1=$(date +%s.%N)
@@ -84,11 +84,11 @@ gv_rawlog() {
   local name=$1 seed=$2 b=$3 res=$4 w="$OUT/peers/${1}_s$2/gv-rawlog" t0 t1 r
   mkdir -p "$w"
   if ! "$BIN/gv-carmen2rawlog" "$b.log" "$w/bench.obs.rawlog" --max-range auto --quiet 2> "$w/convert.err"; then
-    echo "failed: gv-carmen2rawlog: $(head -1 "$w/convert.err")" > "$res/gv-rawlog.txt"; return
+    echo "failed: $(head -1 "$w/convert.err")" > "$res/gv-rawlog.txt"; return
   fi
   t0=$(date +%s.%N)
   if ! taskset -c "$CORE" "$BIN/gv-em-slam" --input "$w/bench.obs.rawlog" --out "$w/out" --quiet 2> "$w/run.err"; then
-    echo "failed: gv-em-slam: $(tail -1 "$w/run.err")" > "$res/gv-rawlog.txt"; return
+    echo "failed: $(tail -1 "$w/run.err")" > "$res/gv-rawlog.txt"; return
   fi
   t1=$(date +%s.%N)
   if ! r=$(python3 "$SHARED/bench/evaltraj.py" "$w/out/trajectory.txt" "$b.ref.txt" 2>&1); then

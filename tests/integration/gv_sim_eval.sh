@@ -43,7 +43,7 @@ printf '[gv_sim]\nwrold = office\n' > "$T/bad.ini"
 [ $rc -eq 1 ] && [ "$(cat "$T/err.txt")" = "$T/bad.ini: unknown key 'wrold' in section [gv_sim]" ] || fail "ini key: $rc $(cat "$T/err.txt")"
 "$BIN/gv-sim" --out /proc/gv-sim-cannot-write 2> "$T/err.txt"; rc=$?
 set -e
-[ $rc -eq 1 ] && grep -q "^/proc/gv-sim-cannot-write: cannot write" "$T/err.txt" || fail "unwritable: $rc $(cat "$T/err.txt")"
+[ $rc -eq 1 ] && grep -q "^gv-sim: /proc/gv-sim-cannot-write: cannot write" "$T/err.txt" || fail "unwritable: $rc $(cat "$T/err.txt")"
 
 # gv-eval: the odometry in the log and in odometry.txt score the same against the truth
 a=$("$BIN/gv-eval" traj "$T/a/odometry.txt" "$T/a/truth_trajectory.txt")

@@ -9,7 +9,7 @@ python3 - "$GV_BIN" <<'PY'
 import re, subprocess, sys
 bin = sys.argv[1]
 tools = ["gv-em-slam", "gv-map", "gv-sim", "gv-eval", "gv-carmen2rawlog", "gv-bench-log", "gv-graphslam",
-         "gv-map-info", "gv-config", "gv-bench-extract", "gv-bench-wipe", "gv-bench-map"]
+         "gv-map-info", "gv-config", "gv-bench-extract", "gv-bench-wipe", "gv-bench-map", "gv-bench-icp"]
 def run(tool, *args):
     p = subprocess.run([f"{bin}/{tool}", *args], capture_output=True, text=True, timeout=60, stdin=subprocess.DEVNULL)
     return p.returncode, p.stdout, p.stderr

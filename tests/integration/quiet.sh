@@ -22,6 +22,7 @@ tools=(
   "gv-bench-extract|$B/gv-bench-extract sim/sim.log --repeat 2"
   "gv-bench-wipe|$B/gv-bench-wipe sim/sim.log sim/truth_trajectory.txt --repeat 2"
   "gv-bench-map|$B/gv-bench-map sim/sim.log --max-scans 30"
+  "gv-bench-icp|$B/gv-bench-icp sim/sim.log sim/truth_trajectory.txt --every 4"
 )
 for entry in "${tools[@]}"; do
   name=${entry%%|*}; cmd=${entry#*|}

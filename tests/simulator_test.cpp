@@ -259,8 +259,8 @@ TEST(Simulator, TruthRejectsDoorsNotInTheDoorsFile)
 	EXPECT_EQ(errorOf("hit door 0 1 5 0.1 5 0.8 4\ndoor_swing 0 2 3 0 1.5\nhit person 7 1 3 1 4 1 5\n"),
 			  "read 2 hits, 1 swings");
 	EXPECT_EQ(errorOf("hit person 0 1 3 1 4 1 5\nhit door 1 1 5 0.1 5 0.8 4\n"),
-			  file + ":2: door 1 is not in truth_doors.txt (1 doors)");
-	EXPECT_EQ(errorOf("door_swing 3 2 3 0 1.5\n"), file + ":1: door 3 is not in truth_doors.txt (1 doors)");
+			  file + ":2: door 1 is not in truth_doors.txt (1 door)");
+	EXPECT_EQ(errorOf("door_swing 3 2 3 0 1.5\n"), file + ":1: door 3 is not in truth_doors.txt (1 door)");  // not "1 doors"
 	write(SimFiles::doors, "");
 	EXPECT_EQ(errorOf("hit door 0 1 5 0.1 5 0.8 4\n"), file + ":1: door 0 is not in truth_doors.txt (0 doors)");
 	fs::remove_all(dir);

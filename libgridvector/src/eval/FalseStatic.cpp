@@ -1,4 +1,5 @@
 #include <gridvector/eval/FalseStatic.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/eval/SegmentIndex.h>
 
 #include <algorithm>
@@ -126,7 +127,7 @@ std::string formatText(const FalseStaticBreakdown& b)
 		   << " m, " << d.passes.size() << " passes:";
 		for (const DoorPass& p : d.passes)
 		{
-			os << " [" << f(p.t0 - b.timeOrigin, "%.0f") << "-" << f(p.t1 - b.timeOrigin, "%.0f") << " s, " << p.runs << " scans, ";
+			os << " [" << f(p.t0 - b.timeOrigin, "%.0f") << "-" << f(p.t1 - b.timeOrigin, "%.0f") << " s, " << io::counted(p.runs, "scan") << ", ";
 			if (!p.angled) os << "no angle]";
 			else if (p.maxDeg - p.minDeg < 1) os << f(p.minDeg, "%.0f") << " deg]";
 			else os << f(p.minDeg, "%.0f") << "-" << f(p.maxDeg, "%.0f") << " deg]";

@@ -1,4 +1,5 @@
 #include <gridvector/eval/MapEval.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/eval/SegmentIndex.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/TextParsing.h>
@@ -140,7 +141,7 @@ std::vector<MapVector> readVectors(const std::string& path)
 		const auto t = io::splitTokens(line);
 		if (t.empty() || t[0][0] == '#') continue;
 		if (t.size() != 5 && t.size() != 6)
-			io::parseError(pos, "expected 'x1 y1 x2 y2 p_static [static|dynamic]', found " + std::to_string(t.size()) + " fields");
+			io::parseError(pos, "expected 'x1 y1 x2 y2 p_static [static|dynamic]', found " + io::counted(t.size(), "field"));
 		MapVector v;
 		v.seg = {io::parseDouble(t[0], pos, "x1"), io::parseDouble(t[1], pos, "y1"), io::parseDouble(t[2], pos, "x2"),
 				 io::parseDouble(t[3], pos, "y2")};

@@ -1,4 +1,5 @@
 #include <gridvector/eval/TrajectoryEval.h>
+#include <gridvector/io/Counted.h>
 
 #include <algorithm>
 #include <cmath>
@@ -145,7 +146,7 @@ PoseMatch matchPoses(const io::Trajectory& est, const io::Trajectory& ref, doubl
 	while (i < est.size() && i < ref.size() && std::abs(est[i].first - ref[i].first) < maxTimeDiff) ++i;
 	if (est.size() != ref.size() || i < est.size())
 		throw std::runtime_error(m.why + ": matching by time would pick one of them, and matching by order needs one pose per scan of the same log (" +
-								 std::to_string(est.size()) + " estimate and " + std::to_string(ref.size()) + " reference poses" +
+								 std::to_string(est.size()) + " estimate and " + io::counted(ref.size(), "reference pose") +
 								 (est.size() == ref.size() ? ", pose " + std::to_string(i + 1) + " at other times" : "") + ")");
 	m.byOrder = true;
 	for (i = 0; i < est.size(); ++i) m.pairs.emplace_back(est[i].second, ref[i].second);

@@ -130,7 +130,7 @@ void CarmenParser::onOther(const Tokens& t)
 
 void CarmenParser::onParam(const Tokens& t)
 {
-	if (t.size() < 3) parseError(pos_, "PARAM: expected 'PARAM name value ...', found " + std::to_string(t.size()) + " fields");
+	if (t.size() < 3) parseError(pos_, "PARAM: expected 'PARAM name value ...', found " + io::counted(t.size(), "field"));
 	params_.apply(t[1], t[2], pos_);
 	out_.contents.paramLines++;
 }
@@ -139,7 +139,7 @@ void CarmenParser::onParam(const Tokens& t)
 double CarmenParser::timestampAfter(const Tokens& t, size_t base, const std::string& what)
 {
 	if (t.size() != base + 3 && t.size() != base + 1)
-		parseError(pos_, what + ": expected " + std::to_string(base + 3) + " fields, found " + std::to_string(t.size()));
+		parseError(pos_, what + ": expected " + io::counted(base + 3, "field") + ", found " + std::to_string(t.size()));
 	return parseDouble(t[base], pos_, what + " timestamp");
 }
 

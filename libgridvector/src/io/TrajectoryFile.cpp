@@ -1,4 +1,5 @@
 #include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/LogReader.h>
 #include <gridvector/io/TextParsing.h>
@@ -22,7 +23,7 @@ Trajectory readTrajectory(const std::string& path)
 		pos.line = cur.lineNumber();
 		const auto t = splitTokens(line);
 		if (t.empty() || t[0][0] == '#') continue;
-		if (t.size() < 4) parseError(pos, "expected 't x y theta', found " + std::to_string(t.size()) + " fields");
+		if (t.size() < 4) parseError(pos, "expected 't x y theta', found " + io::counted(t.size(), "field"));
 		out.emplace_back(parseDouble(t[0], pos, "t"),
 						 mrpt::math::TPose2D(parseDouble(t[1], pos, "x"), parseDouble(t[2], pos, "y"),
 											 parseDouble(t[3], pos, "theta")));

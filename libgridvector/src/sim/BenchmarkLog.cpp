@@ -1,4 +1,5 @@
 #include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/CarmenReader.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/TextParsing.h>
@@ -33,11 +34,11 @@ std::vector<RefScan> readFlaser(const std::string& path)
 		if (t.size() < 2) io::parseError(pos, "FLASER: no beam count");
 		const size_t n = size_t(io::parseInt(t[1], pos, "FLASER beam count", 1, 100000));
 		if (t.size() < 2 + n + 3)
-			io::parseError(pos, "FLASER: expected at least " + std::to_string(2 + n + 3) + " fields, found " + std::to_string(t.size()));
+			io::parseError(pos, "FLASER: expected at least " + io::counted(2 + n + 3, "field") + ", found " + std::to_string(t.size()));
 		// mkbench.py reads the pose after the announced ranges: a wrong count would shift it silently
 		if (!io::flaserFieldCountMatches(n, t.size()))
-			io::parseError(pos, "FLASER: " + std::to_string(n) + " beams announced: expected " + std::to_string(2 + n + 9) +
-									" fields, found " + std::to_string(t.size()));
+			io::parseError(pos, "FLASER: " + io::counted(n, "beam") + " announced: expected " + io::counted(2 + n + 9, "field") +
+									", found " + std::to_string(t.size()));
 		RefScan s;
 		for (size_t i = 0; i < n; i++)
 		{

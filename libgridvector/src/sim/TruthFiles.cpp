@@ -1,4 +1,5 @@
 #include <gridvector/io/AtomicFile.h>
+#include <gridvector/io/Counted.h>
 #include <gridvector/io/CarmenWriter.h>
 #include <gridvector/io/FileBytes.h>
 #include <gridvector/io/TextParsing.h>
@@ -32,7 +33,7 @@ void writeLog(const SimResult& r, std::ostream& os)
 {
 	io::CarmenWriter w(os, "gv-sim");
 	w.comment("gridvector gv-sim: world " + r.world.name + ", seed " + std::to_string(r.options.seed) + ", " +
-			  std::to_string(r.scans.size()) + " scans");
+			  io::counted(r.scans.size(), "scan"));
 	w.comment("FLASER/ODOM poses are the NOISY odometry; the true path is in truth_trajectory.txt");
 	char b[64];
 	std::snprintf(b, sizeof b, "%.10g", r.laserResolution * 180.0 / M_PI);
@@ -144,7 +145,7 @@ void forEachLine(const std::string& path, const std::function<void(const Tokens&
 void expectFields(const Tokens& t, size_t n, const TextPos& pos, const std::string& what)
 {
 	if (t.size() != n)
-		io::parseError(pos, what + ": expected " + std::to_string(n) + " fields, found " + std::to_string(t.size()));
+		io::parseError(pos, what + ": expected " + io::counted(n, "field") + ", found " + std::to_string(t.size()));
 }
 
 Segment segAt(const Tokens& t, size_t i, const TextPos& pos)
@@ -168,7 +169,7 @@ int doorId(std::string_view tok, const TextPos& pos, const Truth& t)
 	const long id = io::parseInt(tok, pos, "door", 0, 1000000);
 	if (size_t(id) >= t.doors.size())
 		io::parseError(pos, "door " + std::to_string(id) + " is not in " + SimFiles::doors + " (" +
-								std::to_string(t.doors.size()) + " doors)");
+								io::counted(t.doors.size(), "door") + ")");
 	return int(id);
 }
 
@@ -234,7 +235,7 @@ std::vector<DoorTruth> readDoors(const std::string& path)
 {
 	std::vector<DoorTruth> out;
 	forEachLine(path, [&](const Tokens& t, const TextPos& pos) {
-		if (t.size() < 3) io::parseError(pos, "door: expected 'hinge_x hinge_y length ...', found " + std::to_string(t.size()) + " fields");
+		if (t.size() < 3) io::parseError(pos, "door: expected 'hinge_x hinge_y length ...', found " + io::counted(t.size(), "field"));
 		DoorTruth d;
 		d.hinge = {io::parseDouble(t[0], pos, "hinge_x"), io::parseDouble(t[1], pos, "hinge_y")};
 		d.length = io::parseDouble(t[2], pos, "length");

@@ -212,7 +212,7 @@ TEST(RawlogReader, ZeroBeamScanIsAnErrorAndTimeGoingBackIsAWarning)
 	writeRawlog(unsorted, log, {RawlogFormat::Observations, false});
 	const LogData back = readLog(unsorted);
 	ASSERT_EQ(back.scans.size(), 3u);
-	EXPECT_NE(back.summary.find("warning: 1 scan timestamps do not increase"), std::string::npos) << back.summary;
+	EXPECT_NE(back.summary.find("warning: 1 scan timestamp does not increase"), std::string::npos) << back.summary;
 
 	log.scans[2].scan->resizeScan(0);  // a scanner that returned nothing
 	const std::string empty = tmp("empty_scan.rawlog");
@@ -272,7 +272,7 @@ TEST(Carmen2Rawlog, ToolWritesRawlogsMrptCanRead)
 	EXPECT_EQ(WEXITSTATUS(std::system(("'" + bin + "' /no/such.log '" + out + "' 2>'" + log + "'").c_str())), 1);
 	std::ifstream e(log);
 	std::getline(e, line);
-	EXPECT_EQ(line, "/no/such.log: cannot read (No such file or directory)");
+	EXPECT_EQ(line, "gv-carmen2rawlog: /no/such.log: cannot read (No such file or directory)");
 	fs::remove(out);
 	fs::remove(log);
 }

@@ -55,7 +55,7 @@ set +e
 "$BIN/gv-carmen2rawlog" "$T/bad.log" "$T/bad.rawlog" 2> "$T/err.txt"; rc=$?
 set -e
 [ $rc -eq 1 ] || fail "bad input: exit $rc"
-[ "$(cat "$T/err.txt")" = "$T/bad.log:1: FLASER range 1 is 'nan' (not a finite number)" ] || fail "message: $(cat "$T/err.txt")"
+[ "$(cat "$T/err.txt")" = "gv-carmen2rawlog: $T/bad.log:1: FLASER range 1 is 'nan' (not a finite number)" ] || fail "message: $(cat "$T/err.txt")"
 [ ! -e "$T/bad.rawlog" ] || fail "output written for bad input"
 set +e
 "$BIN/gv-carmen2rawlog" "$DATA/intel-corrected.log.gz" "$T/x.rawlog" --frmat sf 2> "$T/err.txt"; rc=$?

@@ -40,7 +40,7 @@ set +e
 [ $rc -eq 2 ] || fail "bad number: $rc"
 printf '[gv_sim]\nwrold = office\n' > "$T/bad.ini"
 "$BIN/gv-sim" --out "$T/e" --config "$T/bad.ini" 2> "$T/err.txt"; rc=$?
-[ $rc -eq 1 ] && [ "$(cat "$T/err.txt")" = "$T/bad.ini: unknown key 'wrold' in section [gv_sim]" ] || fail "ini key: $rc $(cat "$T/err.txt")"
+[ $rc -eq 1 ] && [ "$(cat "$T/err.txt")" = "gv-sim: $T/bad.ini: unknown key 'wrold' in section [gv_sim]" ] || fail "ini key: $rc $(cat "$T/err.txt")"
 "$BIN/gv-sim" --out /proc/gv-sim-cannot-write 2> "$T/err.txt"; rc=$?
 set -e
 [ $rc -eq 1 ] && grep -q "^gv-sim: /proc/gv-sim-cannot-write: cannot write" "$T/err.txt" || fail "unwritable: $rc $(cat "$T/err.txt")"
@@ -94,5 +94,5 @@ set +e
 printf '0 0 1 1\n' > "$T/bad.txt"
 "$BIN/gv-eval" map "$T/bad.txt" "$T/a" 2> "$T/err.txt"; rc=$?
 set -e
-[ $rc -eq 1 ] && [ "$(cat "$T/err.txt")" = "$T/bad.txt:1: expected 'x1 y1 x2 y2 p_static [static|dynamic]', found 4 fields" ] || fail "bad vectors: $(cat "$T/err.txt")"
+[ $rc -eq 1 ] && [ "$(cat "$T/err.txt")" = "gv-eval: $T/bad.txt:1: expected 'x1 y1 x2 y2 p_static [static|dynamic]', found 4 fields" ] || fail "bad vectors: $(cat "$T/err.txt")"
 echo "gv_sim_eval: OK"

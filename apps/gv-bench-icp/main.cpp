@@ -10,7 +10,8 @@
 // map.gvmap; gv-sim's truth_trajectory.txt). The scans tested are N/2, N/2 + N, ... Without
 // --map the grid-vector map is built here by inserting every other scan at its TRAJ pose
 // (sequential mode, no E-step; parameters: defaults, or --config), so the tested scans are held
-// out of both maps; with --map every scan goes into the occupancy grid.
+// out of both maps; with --map every scan goes into the occupancy grid, and --config sets the
+// map's [gridvector_matching] group only.
 #include <gridvector/SE2.h>
 #include <gridvector/io/ArgParser.h>
 #include <gridvector/io/Counted.h>
@@ -119,8 +120,14 @@ int run(const gridvector::io::ArgParser& args)
 	mrpt::maps::CGridVectorMap gv;
 	if (args.has("map"))
 	{
-		if (args.has("config")) args.fail("--config applies without --map only (a .gvmap stores its own parameters)");
 		gridvector::io::readObjectFile(args.get("map"), gv);
+		if (args.has("config"))  // the stored map keeps its own parameters but the matching group
+		{
+			gridvector::GridVectorConfig file, cfg = gv.config();
+			file.loadFromFile(args.get("config"));
+			cfg.matching = file.matching;
+			gv.setConfig(cfg);
+		}
 	}
 	else if (args.has("config"))
 	{
@@ -178,7 +185,7 @@ int main(int argc, char** argv)
 	args.option("offset-deg", "D", "... and turned by +-D [deg]", shortestText(Defaults::offsetDeg));
 	args.option("seed", "S", "seed of the guesses' directions", std::to_string(Defaults::seed));
 	args.option("grid-resolution", "R", "MRPT occupancy grid's cell size [m]", shortestText(Defaults::gridResolution));
-	args.option("config", "FILE.ini", "gridvector parameters for the map built here",
+	args.option("config", "FILE.ini", "gridvector parameters for the map built here; with --map its [gridvector_matching] only",
 				"the library's defaults (gv-config --ini)");
 	args.flag("quiet", "no progress (the figures on stdout are the output)");
 	return gridvector::io::runTool(args, argc, argv, [&] { return run(args); });

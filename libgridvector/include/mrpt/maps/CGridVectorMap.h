@@ -91,7 +91,8 @@ class CGridVectorMap : public CMetricMap
 	 * per (vector, grid column), the closest. Points offset, offset + decimation, ... are used.
 	 * extraResults: sumSqrDist = the sum over the points with a correspondence of the closest
 	 * squared distance (as COccupancyGridMap2D and the header's contract; CPointsMap gives the
-	 * mean); correspondencesRatio = those points / the points used. */
+	 * mean); correspondencesRatio = those points / the points used. Like the rest of the map, not
+	 * thread-safe (the spatial index's query keeps a stamp), const as it is. */
 	void determineMatching2D(const mrpt::maps::CMetricMap* otherMap, const mrpt::poses::CPose2D& otherMapPose,
 							 mrpt::tfest::TMatchingPairList& correspondences, const TMatchingParams& params,
 							 TMatchingExtraResults& extraResults) const override;

@@ -170,7 +170,9 @@ TEST(GridVectorMapMatching, DynamicVectorsAndSeenThroughColumnsGiveNoCorresponde
 	door.state = gridvector::VectorState::Dynamic;  // Eq. 14: c = 0
 	GridVector w = wall(0, 0, 4, 0);
 	seenThrough(w, 0, 10, 9);  // its first metre reads 0.1
-	const CGridVectorMap map = mapOf({w, door});
+	gridvector::GridVectorConfig half;
+	half.matching.staticThreshold = 0.5;
+	const CGridVectorMap map = mapOf({w, door}, half);
 	const CSimplePointsMap pts = pointsOf({{0.5, 1.05}, {0.5, 0.1}, {2, 0.1}});
 	TMatchingPairList pairs;
 	TMatchingExtraResults extra;
@@ -179,10 +181,8 @@ TEST(GridVectorMapMatching, DynamicVectorsAndSeenThroughColumnsGiveNoCorresponde
 	for (const auto& m : pairs) EXPECT_EQ(m.globalIdx, 0u);  // never the door
 	EXPECT_NEAR(pairs[1].global.x, 1.0, 1e-5);  // the static stretch starts at 1 m
 	EXPECT_NEAR(pairs[2].global.x, 2.0, 1e-5);
-	// with static_threshold 0 the seen-through stretch takes part (the dynamic vector still not)
-	gridvector::GridVectorConfig all;
-	all.matching.staticThreshold = 0;
-	const CGridVectorMap mapAll = mapOf({w, door}, all);
+	// with static_threshold 0 (the default) the seen-through stretch takes part (the dynamic vector still not)
+	const CGridVectorMap mapAll = mapOf({w, door});
 	mapAll.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, gate(1.5), extra);
 	ASSERT_EQ(pairs.size(), 3u);
 	EXPECT_NEAR(pairs[1].global.x, 0.5, 1e-5);
@@ -329,10 +329,10 @@ TEST(GridVectorMapMatching, IcpLevenbergMarquardtNeedsAPointsMapAsReferenceInMrp
 
 TEST(GridVectorMapMatching, DoorStateAndTrolleySeenOnlyEarlyGetNoCorrespondences)
 {
-	const CGridVectorMap map = corridorMap();
-	gridvector::GridVectorConfig allCfg;
-	allCfg.matching.staticThreshold = 0;
-	const CGridVectorMap mapAll = corridorMap(allCfg);
+	gridvector::GridVectorConfig half;
+	half.matching.staticThreshold = 0.5;  // the E-step's split; the default 0 takes every column
+	const CGridVectorMap map = corridorMap(half);
+	const CGridVectorMap mapAll = corridorMap();
 	// a scan that sees the early scene again: the door closed, the trolley back at its place
 	auto walls = corridorWorld();
 	walls.push_back(kDoorClosed);

@@ -114,7 +114,7 @@ struct EStepOptions
 	template <class V>
 	void visit(V&& v)
 	{
-		v("static_threshold", staticThreshold, "Occupancy-profile threshold: above is static, below dynamic");
+		v("static_threshold", staticThreshold, "Beyond the paper (CGridVectorMap::determineMatching2D, MRPT's ICP against the map): a scan point corresponds to the nearest point of the vectors' stretches whose columns the E-step's occupancy profile (Fig. 4, estep.use_peak_row / min_visits / free_weight) puts at or above this, on vectors not classified dynamic (Eq. 14: a gv-em-slam map's dynamic children are out at any value); 0 (default): every column of those vectors; 0.5 (the E-step's split) keeps the stretches scans saw through out of a map built without an E-step, which aligned more scans on the simulated office (seeds 1-3) but far fewer on long-corridor (doc/benchmarks.md, ICP against a grid-vector map)");
 		v("final_static_threshold", finalStaticThreshold, "Final map only (after EM): static children are split again at this profile value; a static place is occupied in nearly every observation");
 		v("final_relative_drop", finalRelativeDrop, "Final map only: a column whose profile lies this far below the median of its vector is dynamic too (a door closed most of the time in a wall read ~1); 0: off");
 		v("min_piece_length", minPieceLength, "Smallest static/dynamic sub-vector; shorter pieces merge into neighbours [m]");
@@ -411,7 +411,7 @@ struct DoorOptions
  * (determineMatching2D and friends; see StaticFootPoints). */
 struct MatchingOptions
 {
-	double staticThreshold = 0.50;  //!< a column takes part when its Fig. 4 profile is at least this
+	double staticThreshold = 0.0;  //!< a column takes part when its Fig. 4 profile is at least this (0: every column)
 
 	template <class V>
 	void visit(V&& v)

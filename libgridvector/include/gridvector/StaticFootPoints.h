@@ -25,10 +25,11 @@ struct FootPoint
 
 /** Where a map point may correspond to a measured point: the stretches of the
  * vectors whose columns the E-step's Fig. 4 profile (EStep::profile) puts at or
- * above matching.static_threshold, on vectors not classified dynamic (Eq. 14:
- * state Dynamic). A door leaf seen in one state and later seen through, a person
- * standing for a while: their columns read low, so scan points on them find no
- * correspondence on the map.
+ * above matching.static_threshold (0, the default: every column), on vectors not
+ * classified dynamic (Eq. 14: state Dynamic). With a threshold (0.5: the E-step's
+ * split), a door leaf seen in one state and later seen through, an object that stood
+ * for a while: their columns read low, so scan points on them find no
+ * correspondence on the map even where no E-step has run.
  *
  * Candidates come from the map's spatial index (GlobalMap::index()), so a query
  * of radius r costs O((r/B + 1)^2 + k) with B the index bucket and k the vectors

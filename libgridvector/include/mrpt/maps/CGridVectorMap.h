@@ -81,8 +81,8 @@ class CGridVectorMap : public CMetricMap
 	// --- CMetricMap matching: the map as the reference ("this", m1) of mrpt::slam::CICP (icpClassic) ---
 	/** Each point of `otherMap` (a CPointsMap; std::invalid_argument otherwise), moved by
 	 * otherMapPose, is paired with the nearest point of the map's static stretches
-	 * (gridvector::StaticFootPoints: columns whose Fig. 4 profile is at least
-	 * matching.static_threshold, on vectors not classified dynamic) closer than
+	 * (gridvector::StaticFootPoints: vectors not classified dynamic, their columns whose Fig. 4
+	 * profile is at least matching.static_threshold, 0 by default: all) closer than
 	 * params.maxDistForCorrespondence + params.maxAngularDistForCorrespondence x its distance to
 	 * params.angularDistPivotPoint. Pairs: `global` = that point on the vector's line (z = the
 	 * point's z), globalIdx = the vector's index in vectors(); `local` = the point in the other

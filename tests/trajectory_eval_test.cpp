@@ -270,3 +270,40 @@ TEST(TrajectoryEval, GvEvalScoresCsailsRawLogByOrder)
 	EXPECT_EQ(m.at("ate_rmse_m"), 0);
 	EXPECT_EQ(m.at("rel_loop_t_m"), 0);
 }
+
+// Localisation on a map (gv-eval traj --absolute): nothing is aligned, so a constant offset that the
+// ATE would remove is an error; convergence is the first pose from which every error stays below the bound.
+TEST(TrajectoryEval, LocalizationErrorsAreUnalignedWithConvergenceTime)
+{
+	const io::Trajectory ref = path(100);
+	io::Trajectory est = ref;
+	for (size_t k = 0; k < est.size(); ++k)
+	{
+		// 1.0 m off for the first 10 poses, 0.3 m at pose 20 (a relapse), then 0.05 m in x throughout
+		const double off = k < 10 ? 1.0 : k == 20 ? 0.3 : 0.05;
+		est[k].second.x += off;
+	}
+	est.back().second.phi += 2 * M_PI / 180;
+	const eval::PoseMatch match = eval::matchPoses(est, ref, 0.05);
+	ASSERT_EQ(match.times.size(), 100u);
+	const auto m = eval::evaluateLocalization(match.pairs, match.times, 0.2);
+	EXPECT_EQ(m.matched, 100u);
+	EXPECT_NEAR(m.rmse, std::sqrt((10 * 1.0 + 0.09 + 89 * 0.0025) / 100), 1e-9);
+	EXPECT_NEAR(m.finalT, 0.05, 1e-9);
+	EXPECT_NEAR(m.finalRDeg, 2.0, 1e-9);
+	EXPECT_TRUE(m.converged);
+	EXPECT_NEAR(m.firstBelow, 10 * 0.2, 1e-9);
+	EXPECT_NEAR(m.convergedAfter, 21 * 0.2, 1e-9);  // pose 21, not pose 10: pose 20 is off by 0.3 m
+	EXPECT_NEAR(m.rmseAfter, 0.05, 1e-9);
+	EXPECT_NEAR(m.maxAfter, 0.05, 1e-9);
+	// The ATE aligns the constant offset away; the localisation error keeps it.
+	EXPECT_LT(eval::evaluatePairs(match.pairs).ateRmse, m.rmse);
+
+	est.back().second.x += 1.0;  // diverged at the end
+	const eval::PoseMatch lost = eval::matchPoses(est, ref, 0.05);
+	const auto d = eval::evaluateLocalization(lost.pairs, lost.times, 0.2);
+	EXPECT_FALSE(d.converged);
+	EXPECT_TRUE(std::isnan(d.convergedAfter));
+	EXPECT_NE(eval::formatText(d).find("converged=no"), std::string::npos);
+	EXPECT_NE(eval::formatJson(m).find("\"converged_after_s\": 4.200000"), std::string::npos) << eval::formatJson(m);
+}

@@ -16,6 +16,9 @@ using namespace gridvector;
 
 namespace
 {
+/** traj --absolute: converged once every later error is below this [m]. */
+constexpr double kConvergedDefault = 0.2;
+
 bool isLog(std::string p)
 {
 	if (p.size() > 3 && p.compare(p.size() - 3, 3, ".gz") == 0) p.resize(p.size() - 3);
@@ -50,7 +53,7 @@ double maxTimeDiff(const io::ArgParser& a)
 }
 
 /** eval::matchPoses with the files named in its errors, and a note on stderr when it matched by order. */
-eval::PosePairs matchTrajectories(const io::Trajectory& est, const io::Trajectory& ref, double maxDt, const std::string& files)
+eval::PoseMatch matchTrajectories(const io::Trajectory& est, const io::Trajectory& ref, double maxDt, const std::string& files)
 {
 	eval::PoseMatch match;
 	try
@@ -64,7 +67,7 @@ eval::PosePairs matchTrajectories(const io::Trajectory& est, const io::Trajector
 	if (match.byOrder)
 		std::fprintf(stderr, "gv-eval: %s%s: matched by order (one pose per scan of the same log)\n", files.c_str(),
 					 match.why.c_str());
-	return match.pairs;
+	return match;
 }
 
 /** "too few matched poses (n)" from f(), naming the files and --max-dt. */
@@ -92,8 +95,17 @@ int trajectoryCommand(const io::ArgParser& a)
 	const auto est = loadTrajectory(a.positional()[1], logPose);
 	const auto ref = loadTrajectory(a.positional()[2], logPose);
 	const std::string files = a.positional()[1] + " vs " + a.positional()[2] + ": ";
-	const eval::PosePairs pairs = matchTrajectories(est, ref, o.maxTimeDiff, files);
-	const auto m = withTooFewNamed([&] { return eval::evaluatePairs(pairs, o); }, files, o.maxTimeDiff);
+	const eval::PoseMatch match = matchTrajectories(est, ref, o.maxTimeDiff, files);
+	if (a.has("absolute"))
+	{
+		const double threshold = a.getDouble("converged", kConvergedDefault);
+		if (!(threshold > 0)) a.fail("--converged must be > 0");
+		const auto m = withTooFewNamed([&] { return eval::evaluateLocalization(match.pairs, match.times, threshold); },
+									   files, o.maxTimeDiff);
+		std::cout << (a.has("json") ? eval::formatJson(m) : eval::formatText(m)) << "\n";
+		return 0;
+	}
+	const auto m = withTooFewNamed([&] { return eval::evaluatePairs(match.pairs, o); }, files, o.maxTimeDiff);
 	std::cout << (a.has("json") ? eval::formatJson(m) : eval::formatText(m)) << "\n";
 	return 0;
 }
@@ -120,7 +132,7 @@ int mapCommand(const io::ArgParser& a)
 		const std::string refFile = a.positional()[2] + "/" + sim::SimFiles::trajectory;
 		const auto ref = io::readTrajectory(refFile);
 		const std::string files = a.get("trajectory") + " vs " + refFile + ": ";
-		const eval::PosePairs pairs = matchTrajectories(est, ref, maxDt, files);  // the same rule as traj
+		const eval::PosePairs pairs = matchTrajectories(est, ref, maxDt, files).pairs;  // the same rule as traj
 		const auto T = withTooFewNamed([&] { return eval::alignmentTransform(pairs); }, files, maxDt);
 		vectors = eval::transformVectors(vectors, T);
 		doors = eval::transformDoors(doors, T);
@@ -168,6 +180,9 @@ int main(int argc, char** argv)
 				"shared by different poses, one pose per scan of the same log is matched by order",
 				io::shortestText(eval::TrajectoryEvalOptions().maxTimeDiff));
 	args.flag("log-pose", "traj: for logs, use the poses the log attaches to scans instead of odometry");
+	args.flag("absolute", "traj: localisation error in the reference's frame, nothing aligned (final error, convergence)");
+	args.option("converged", "M", "traj --absolute: converged once every later error is below M (m)",
+				io::shortestText(kConvergedDefault));
 	args.option("trajectory", "EST", "map: the trajectory the map was built with; aligns the map to the truth like the ATE",
 				"none: the map is in the truth's frame");
 	args.option("doors", "FILE", "map: detected doors 'hinge_x hinge_y length ...' to score door recall",

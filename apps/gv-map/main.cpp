@@ -1,13 +1,14 @@
 // gv-map: build the global grid vector map (Sec. 3.2) of a laser log with given poses.
 //
-//   gv-map --input LOG --poses {log|FILE} --out DIR [--config FILE.ini] [--quiet]
+//   gv-map --input LOG --poses {log|FILE} --out DIR [--config FILE.ini] [--simplemap] [--quiet]
 //
 // LOG: CARMEN (.log/.clf, optionally .gz) or MRPT rawlog. --poses log uses the
 // poses stored with each scan (CARMEN FLASER: the corrected pose), falling back
 // to odometry; FILE is a "t x y theta" trajectory matched to scans by time.
 // Writes to DIR: map.gvmap (serialized mrpt::maps::CGridVectorMap), vectors.txt,
 // vectors.svg, occupancy.png, occupancy.pgm + occupancy.yaml (ROS map_server),
-// map.3Dscene (MRPT viewers) and memory.json (Table 1).
+// map.3Dscene (MRPT viewers) and memory.json (Table 1); with --simplemap also
+// map.simplemap (the scans at their poses: MRPT's pf-localization builds its maps from it).
 #include <gridvector/MapExport.h>
 #include <gridvector/MemoryAccounting.h>
 #include <gridvector/OccupancyConversion.h>
@@ -16,6 +17,7 @@
 #include <gridvector/io/AtomicFile.h>
 #include <gridvector/io/Progress.h>
 #include <gridvector/io/LogReader.h>
+#include <gridvector/io/RawlogWriter.h>
 
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/poses/CPose3D.h>
@@ -94,6 +96,8 @@ int run(const io::ArgParser& args)
 	MapExport::writeRosMap(grid, dir + "occupancy.pgm", dir + "occupancy.yaml");
 	MapExport::write3DScene(vectors, grid, dir + "map.3Dscene");
 	const MemoryReport mem = MemoryAccounting::account(vectors, 0.1);
+	const bool simplemap = args.has("simplemap");
+	if (simplemap) io::writeSimplemap(dir + "map.simplemap", log, poses);
 	MemoryAccounting::writeJson(mem, outDir.markerPath());  // last: a directory with memory.json is complete
 	if (!quiet)
 	{
@@ -101,8 +105,8 @@ int run(const io::ArgParser& args)
 					io::counted(log.scans.size(), "scan").c_str(), secs, used / std::max(secs, 1e-9),
 					io::counted(vectors.size(), "grid vector").c_str());
 		std::printf("%s", MemoryAccounting::summary(mem).c_str());
-		std::printf("wrote %s{map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, occupancy.yaml, map.3Dscene, memory.json}\n",
-					dir.c_str());
+		std::printf("wrote %s{map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, occupancy.yaml, map.3Dscene, memory.json%s}\n",
+					dir.c_str(), simplemap ? ", map.simplemap" : "");
 	}
 	return 0;
 }
@@ -110,12 +114,13 @@ int run(const io::ArgParser& args)
 
 int main(int argc, char** argv)
 {
-	io::ArgParser args("gv-map", "--input LOG --poses {log|FILE} --out DIR [--config FILE.ini] [--quiet]");
+	io::ArgParser args("gv-map", "--input LOG --poses {log|FILE} --out DIR [--config FILE.ini] [--simplemap] [--quiet]");
 	args.option("input", "LOG", "CARMEN log (.log/.clf, optionally .gz) or MRPT rawlog", io::ArgParser::kRequired);
 	args.option("poses", "log|FILE", "poses stored in the log, or a 't x y theta' trajectory file", io::ArgParser::kRequired);
 	args.option("out", "DIR", "output directory (created if missing)", io::ArgParser::kRequired);
 	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_*] sections)",
 				"the library's defaults (gv-config --ini)");
+	args.flag("simplemap", "also write map.simplemap: the mapped scans at their poses (for MRPT's pf-localization)");
 	args.flag("quiet", "no progress and no summary");
 	return io::runTool(
 		args, argc, argv,

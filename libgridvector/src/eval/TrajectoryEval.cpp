@@ -98,11 +98,16 @@ long nearestInTime(const io::Trajectory& sorted, double t, double maxTimeDiff)
 	return best;
 }
 
-Pairs matchSorted(const io::Trajectory& sorted, const io::Trajectory& ref, double maxTimeDiff)
+Pairs matchSorted(const io::Trajectory& sorted, const io::Trajectory& ref, double maxTimeDiff,
+				  std::vector<double>* times = nullptr)
 {
 	Pairs out;
 	for (const auto& [t, g] : ref)
-		if (const long j = nearestInTime(sorted, t, maxTimeDiff); j >= 0) out.emplace_back(sorted[size_t(j)].second, g);
+		if (const long j = nearestInTime(sorted, t, maxTimeDiff); j >= 0)
+		{
+			out.emplace_back(sorted[size_t(j)].second, g);
+			if (times) times->push_back(t);
+		}
 	return out;
 }
 
@@ -139,7 +144,7 @@ PoseMatch matchPoses(const io::Trajectory& est, const io::Trajectory& ref, doubl
 	m.why = timeTie(sorted, ref, maxTimeDiff);
 	if (m.why.empty())
 	{
-		m.pairs = matchSorted(sorted, ref, maxTimeDiff);
+		m.pairs = matchSorted(sorted, ref, maxTimeDiff, &m.times);
 		return m;
 	}
 	size_t i = 0;
@@ -149,7 +154,7 @@ PoseMatch matchPoses(const io::Trajectory& est, const io::Trajectory& ref, doubl
 								 std::to_string(est.size()) + " estimate and " + io::counted(ref.size(), "reference pose") +
 								 (est.size() == ref.size() ? ", pose " + std::to_string(i + 1) + " at other times" : "") + ")");
 	m.byOrder = true;
-	for (i = 0; i < est.size(); ++i) m.pairs.emplace_back(est[i].second, ref[i].second);
+	for (i = 0; i < est.size(); ++i) m.pairs.emplace_back(est[i].second, ref[i].second), m.times.push_back(ref[i].first);
 	return m;
 }
 
@@ -206,6 +211,50 @@ TPose2D alignmentTransform(const Pairs& p)
 TPose2D alignmentTransform(const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff)
 {
 	return alignmentTransform(matchPoses(est, ref, maxTimeDiff).pairs);
+}
+
+LocalizationMetrics evaluateLocalization(const Pairs& p, const std::vector<double>& times, double threshold)
+{
+	const size_t n = p.size();
+	if (n < 3) throw std::runtime_error("too few matched poses (" + std::to_string(n) + ")");
+	if (times.size() != n) throw std::invalid_argument("evaluateLocalization: one time per pair");
+	std::vector<double> err(n);
+	for (size_t i = 0; i < n; ++i) err[i] = std::hypot(p[i].first.x - p[i].second.x, p[i].first.y - p[i].second.y);
+	LocalizationMetrics m;
+	m.matched = n;
+	double sum = 0;
+	for (double e : err) sum += e * e;
+	m.rmse = std::sqrt(sum / double(n));
+	m.finalT = err.back();
+	m.finalRDeg = std::abs(wrap(p.back().first.phi - p.back().second.phi)) * 180.0 / M_PI;
+	m.converged = m.finalT < threshold;
+	if (const auto below = std::find_if(err.begin(), err.end(), [&](double e) { return e < threshold; }); below != err.end())
+		m.firstBelow = times[size_t(below - err.begin())] - times.front();
+	if (!m.converged) return m;
+	size_t from = n - 1;
+	while (from > 0 && err[from - 1] < threshold) --from;
+	m.convergedAfter = times[from] - times.front();
+	double after = 0, worst = 0;
+	for (size_t i = from; i < n; ++i) after += err[i] * err[i], worst = std::max(worst, err[i]);
+	m.rmseAfter = std::sqrt(after / double(n - from));
+	m.maxAfter = worst;
+	return m;
+}
+
+std::string formatText(const LocalizationMetrics& m)
+{
+	return "n=" + std::to_string(m.matched) + " abs_rmse_m=" + num("%.4f", m.rmse) + " final_t_m=" + num("%.4f", m.finalT) +
+		   " final_r_deg=" + num("%.3f", m.finalRDeg) + " first_below_s=" + num("%.1f", m.firstBelow) +
+		   " converged=" + (m.converged ? "yes" : "no") + " converged_after_s=" + num("%.1f", m.convergedAfter) + " rmse_after_m=" + num("%.4f", m.rmseAfter) +
+		   " max_after_m=" + num("%.4f", m.maxAfter);
+}
+
+std::string formatJson(const LocalizationMetrics& m)
+{
+	return "{\"n\": " + std::to_string(m.matched) + ", \"abs_rmse_m\": " + jsonNum(m.rmse) +
+		   ", \"final_t_m\": " + jsonNum(m.finalT) + ", \"final_r_deg\": " + jsonNum(m.finalRDeg) +
+		   ", \"first_below_s\": " + jsonNum(m.firstBelow) + ", \"converged\": " + (m.converged ? "true" : "false") + ", \"converged_after_s\": " + jsonNum(m.convergedAfter) +
+		   ", \"rmse_after_m\": " + jsonNum(m.rmseAfter) + ", \"max_after_m\": " + jsonNum(m.maxAfter) + "}";
 }
 
 }  // namespace gridvector::eval

@@ -7,12 +7,15 @@
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
+#include <mrpt/maps/CSimpleMap.h>
 #include <mrpt/obs/CSensoryFrame.h>
+#include <mrpt/poses/CPose3DPDFGaussian.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/serialization/CArchive.h>
 
 #include <memory>
 #include <stdexcept>
+#include <string>
 
 namespace gridvector::io
 {
@@ -88,6 +91,50 @@ void writeRawlog(const std::string& path, const LogData& log, const RawlogWriteO
 		throw std::runtime_error(path + ": cannot write (" + e.what() + ")");
 	}
 	file.commit();
+}
+
+namespace
+{
+mrpt::maps::CSimpleMap simplemapOf(const LogData& log, const std::vector<std::optional<mrpt::math::TPose2D>>& poses)
+{
+	if (poses.size() != log.scans.size())
+		throw std::invalid_argument("writeSimplemap: " + std::to_string(poses.size()) + " poses for " +
+									std::to_string(log.scans.size()) + " scans");
+	mrpt::maps::CSimpleMap sm;
+	for (size_t i = 0; i < log.scans.size(); ++i)
+	{
+		if (!poses[i]) continue;
+		if (!log.scans[i].scan) throw std::invalid_argument("writeSimplemap: scan record without a scan");
+		const auto& p = *poses[i];
+		auto pose = mrpt::poses::CPose3DPDFGaussian::Create();
+		pose->mean = mrpt::poses::CPose3D(p.x, p.y, 0, p.phi, 0, 0);  // covariance zero: the pose is given
+		auto sf = CSensoryFrame::Create();
+		sf->insert(log.scans[i].scan);
+		sm.insert(pose, sf);
+	}
+	if (sm.empty()) throw std::invalid_argument("writeSimplemap: no scan has a pose");
+	return sm;
+}
+}  // namespace
+
+size_t writeSimplemap(const std::string& path, const LogData& log,
+					  const std::vector<std::optional<mrpt::math::TPose2D>>& poses)
+{
+	const mrpt::maps::CSimpleMap sm = simplemapOf(log, poses);
+	AtomicFile file(path, AtomicFile::Mode::External);
+	try
+	{
+		auto out = openOutput(file.tempPath(), true);
+		auto ar = mrpt::serialization::archiveFrom(*out);
+		ar << sm;
+		out.reset();  // flush and close before renaming
+	}
+	catch (const std::exception& e)
+	{
+		throw std::runtime_error(path + ": cannot write (" + e.what() + ")");
+	}
+	file.commit();
+	return sm.size();
 }
 
 }  // namespace gridvector::io

@@ -38,6 +38,7 @@ PosePairs matchByTimestamp(const io::Trajectory& est, const io::Trajectory& ref,
 struct PoseMatch
 {
 	PosePairs pairs;
+	std::vector<double> times;  //!< the reference time of each pair
 	bool byOrder = false;  //!< est[i] with ref[i]
 	std::string why;  //!< byOrder: the time shared by different poses ("365 estimate poses share t = ... and differ")
 };
@@ -65,6 +66,26 @@ mrpt::math::TPose2D alignmentTransform(const PosePairs& pairs);
 /** alignmentTransform(matchPoses(est, ref, maxTimeDiff).pairs): gv-eval traj's matching rule. */
 mrpt::math::TPose2D alignmentTransform(const io::Trajectory& est, const io::Trajectory& ref,
 									   double maxTimeDiff = 0.05);
+
+/** Localisation error: the estimate is in the reference's frame (a robot localised on a map built in
+ * that frame), so nothing is aligned. */
+struct LocalizationMetrics
+{
+	size_t matched = 0;
+	double rmse = 0;  //!< translation RMSE over all matched poses [m]
+	double finalT = 0, finalRDeg = 0;  //!< error of the last matched pose [m], [deg]
+	bool converged = false;  //!< the last pose's error is below the threshold
+	double firstBelow = NAN;  //!< seconds from the first matched pose to the first one whose error is below the threshold
+	double convergedAfter = NAN;  //!< seconds from the first matched pose to the first one from which every error stays below the threshold
+	double rmseAfter = NAN, maxAfter = NAN;  //!< translation RMSE and maximum from that pose on [m]
+};
+
+/** The metrics of matched pairs (times: the reference time of each, as PoseMatch::times); converged
+ * means below `threshold` metres. Throws std::runtime_error("too few matched poses (n)") when fewer than 3. */
+LocalizationMetrics evaluateLocalization(const PosePairs& pairs, const std::vector<double>& times, double threshold);
+
+std::string formatText(const LocalizationMetrics& m);
+std::string formatJson(const LocalizationMetrics& m);
 
 /** evaltraj.py's output line: "n=... ate_rmse_m=... rel_local_t_m=... ...". */
 std::string formatText(const TrajectoryMetrics& m);

@@ -1,9 +1,12 @@
-// Writes scans + odometry as an MRPT rawlog that MRPT's own apps can read.
+// Writes scans + odometry as an MRPT rawlog, and scans at given poses as an MRPT
+// simplemap, files that MRPT's own apps can read.
 #pragma once
 
 #include <gridvector/io/LogReader.h>
 
+#include <optional>
 #include <string>
+#include <vector>
 
 namespace gridvector::io
 {
@@ -24,5 +27,14 @@ struct RawlogWriteOptions
  * (Gaussian motion model with MRPT's default parameters), the first one zero.
  * Throws "path: cannot write (reason)". */
 void writeRawlog(const std::string& path, const LogData& log, const RawlogWriteOptions& opt = {});
+
+/** Writes a gzip mrpt::maps::CSimpleMap atomically: one frame per scan that has a pose
+ * (poses[i] for log.scans[i]; scans without one are left out), the pose exact (zero
+ * covariance), the frame holding the scan alone. MRPT's pf-localization builds the maps of
+ * its `[MetricMap]` section from such a file (`map_file = X.simplemap`). Returns the number
+ * of frames. Throws "path: cannot write (reason)", or std::invalid_argument when poses and
+ * scans differ in number or no scan has a pose. */
+size_t writeSimplemap(const std::string& path, const LogData& log,
+					  const std::vector<std::optional<mrpt::math::TPose2D>>& poses);
 
 }  // namespace gridvector::io

@@ -10,6 +10,8 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 
@@ -243,6 +245,49 @@ TEST(CGridVectorMap, LikelihoodPeaksAtTheTruePose)
 	for (const TPose2D& off : {TPose2D(0.85, 0.4, 1.1), TPose2D(0.7, 0.25, 1.1), TPose2D(0.7, 0.4, 1.2)})
 		EXPECT_GT(atTruth, m.computeObservationLikelihood(obs, mrpt::poses::CPose3D(mrpt::poses::CPose2D(off))));
 	EXPECT_TRUE(m.canComputeObservationLikelihood(obs));
+}
+
+// The likelihood field (CGridVectorMap_likelihood.cpp) looks up each point's vectors through the
+// spatial index; it must equal the field over every vector of the map, computed here directly.
+TEST(CGridVectorMap, LikelihoodEqualsTheFieldOverEveryVector)
+{
+	CGridVectorMap m = mapOfRoom();
+	const double prior = gridvector::OccupancyConversion::priorRatio(m.config().grid);
+	for (int decimation : {1, 2, 7})
+	{
+		m.likelihoodOptions.decimation = decimation;
+		const auto& o = m.likelihoodOptions;
+		for (const TPose2D& at : {TPose2D(0.7, 0.4, 1.1), TPose2D(-1.5, 1.0, -2.0), TPose2D(3.5, -1.0, 0.3)})
+		{
+			const auto obs = scanAt(at);
+			for (const TPose2D& pose : {at, TPose2D(at.x + 0.12, at.y - 0.05, at.phi + 0.03), TPose2D(at.x - 0.4, at.y, at.phi)})
+			{
+				double expected = 0;
+				const size_t n = obs.getScanSize();
+				for (size_t i = 0; i < n; i += size_t(decimation))
+				{
+					// every beam of the closed room is valid; rightToLeft, aperture pi
+					const double a = pose.phi - M_PI / 2 + M_PI * double(i) / double(n - 1), r = obs.getScanRange(i);
+					const mrpt::math::TPoint2D p(pose.x + r * std::cos(a), pose.y + r * std::sin(a));
+					double best = o.maxCorrDistance, hit = 0;
+					for (const auto& v : m.vectors())
+					{
+						const auto g = v.toGridFrame(p);
+						const double d = std::hypot(g.x - std::clamp(g.x, 0.0, v.length()), g.y);
+						if (d >= best) continue;
+						int row, col;
+						best = d;
+						hit = (v.cellOf(p, row, col) ? v.cell(row, col).occupancy(prior) : prior) *
+							  std::exp(-d * d / (2 * o.sigma * o.sigma));
+					}
+					expected += std::log((1 - o.zRandom) * hit + o.zRandom);
+				}
+				EXPECT_NEAR(m.computeObservationLikelihood(obs, mrpt::poses::CPose3D(mrpt::poses::CPose2D(pose))), expected,
+							1e-6 * std::abs(expected))
+					<< "decimation " << decimation << " pose " << pose.asString();
+			}
+		}
+	}
 }
 
 TEST(CGridVectorMap, OccupancyGridIsEq6AtEveryCellCentre)

@@ -44,34 +44,27 @@ double CGridVectorMap::internal_computeObservationLikelihood(
 	std::vector<size_t> runs;
 	extractor_.scanToRuns(*scan, pts, runs);
 	const double c = std::cos(takenFrom.yaw()), s = std::sin(takenFrom.yaw());
-	double xmin = 1e300, xmax = -1e300, ymin = 1e300, ymax = -1e300;
-	for (auto& p : pts)
-	{
-		p = TPoint2D(takenFrom.x() + c * p.x - s * p.y, takenFrom.y() + s * p.x + c * p.y);
-		xmin = std::min(xmin, p.x), xmax = std::max(xmax, p.x);
-		ymin = std::min(ymin, p.y), ymax = std::max(ymax, p.y);
-	}
-	// Only vectors near the scan, through the map's spatial index: O(nearby vectors).
 	const double m = likelihoodOptions.maxCorrDistance;
-	std::vector<uint32_t> slots;
-	map_.index().query(gridvector::Box2D{xmin, ymin, xmax, ymax}.expanded(m), slots);
-	std::vector<const GridVector*> near;
-	near.reserve(slots.size());
-	for (uint32_t s : slots) near.push_back(&map_.vectors()[s]);
 	const double inv2s2 = 1.0 / (2 * likelihoodOptions.sigma * likelihoodOptions.sigma);
 	const double zr = likelihoodOptions.zRandom, zh = 1.0 - zr;
 	const double prior = gridvector::OccupancyConversion::priorRatio(map_.config().grid);
+	std::vector<uint32_t> slots;
 	double logLik = 0;
 	for (size_t i = 0; i < pts.size(); i += size_t(likelihoodOptions.decimation))
 	{
+		const TPoint2D p(takenFrom.x() + c * pts[i].x - s * pts[i].y, takenFrom.y() + s * pts[i].x + c * pts[i].y);
+		// Only the vectors within maxCorrDistance of this point, through the map's spatial index.
+		slots.clear();
+		map_.index().query(gridvector::Box2D{p.x, p.y, p.x, p.y}.expanded(m), slots);
 		double best = m;
 		const GridVector* bestV = nullptr;
-		for (const GridVector* v : near)
+		for (uint32_t slot : slots)
 		{
-			const double d = distanceToSegment(*v, pts[i]);
-			if (d < best) best = d, bestV = v;
+			const GridVector& v = map_.vectors()[slot];
+			const double d = distanceToSegment(v, p);
+			if (d < best) best = d, bestV = &v;
 		}
-		const double hit = bestV ? occupancyNear(*bestV, pts[i], prior) * std::exp(-best * best * inv2s2) : 0.0;
+		const double hit = bestV ? occupancyNear(*bestV, p, prior) * std::exp(-best * best * inv2s2) : 0.0;
 		logLik += std::log(zh * hit + zr);
 	}
 	return logLik;

@@ -441,3 +441,25 @@ TEST(EStep, PeakRowProfileReadsCellsWithoutCountsAsThePrior)
 		EXPECT_DOUBLE_EQ(empty[c], atPrior[c]) << c;  // was 1: a column of cells without counts read as unseen
 	}
 }
+
+// Sec. 4.1: each E-step computes p(c_i | M^[k]) from the current map alone; the hysteresis that
+// keeps a column's last state is beyond the paper and off by default (doc/paper-fidelity.md,
+// finding 10). A wall piece the first E-step made static (0.9) that the next map reads at 0.45
+// is dynamic at the second E-step, as at any first one.
+TEST(EStep, EachEStepClassifiesFromTheMapAloneByDefault)
+{
+	const EStep e;
+	EXPECT_EQ(EStepOptions{}.hysteresis, 0.0);
+	const GridVector before = withProfile(runs({{10, 0.9}}));
+	std::vector<ProfilePiece> first;
+	ASSERT_EQ(e.split(before, {}, &first)[0].state, VectorState::Static);
+	const GridVector now = withProfile(runs({{10, 0.45}}));
+	EXPECT_EQ(e.split(now, first)[0].state, VectorState::Dynamic);  // was static: 0.45 + 0.1 held it
+	EXPECT_EQ(e.split(now)[0].state, VectorState::Dynamic);
+	// run(): the same through the previous E-step's result
+	const EStepResult r1 = e.run({before});
+	const EStepResult r2 = e.run({now}, &r1);
+	ASSERT_EQ(r2.children.size(), 1u);
+	EXPECT_EQ(r2.children[0].state, VectorState::Dynamic);
+	EXPECT_TRUE(EStep::changedChildren(r2, &r1)[0]);  // Eq. 25: its M_chd changed
+}

@@ -15,7 +15,27 @@ function(gv_git_describe dir out)
   set(${out} "${desc}" PARENT_SCOPE)
 endfunction()
 
+# gv_write_git_describe(DIR FILE): FILE defines GV_GIT_DESCRIBE as DIR's description; the file is
+# rewritten only when the description changed, so an unchanged tree recompiles nothing.
+function(gv_write_git_describe dir file)
+  gv_git_describe("${dir}" d)
+  set(text "#define GV_GIT_DESCRIBE \"${d}\"\n")
+  if(EXISTS "${file}")
+    file(READ "${file}" old)
+    if(old STREQUAL text)
+      return()
+    endif()
+  endif()
+  file(WRITE "${file}" "${text}")
+endfunction()
+
+# Script mode: with GV_DESCRIBE_OUT, refresh that header (the build does it before every compile
+# of the library: libgridvector/CMakeLists.txt); without, print the description.
 if(CMAKE_SCRIPT_MODE_FILE STREQUAL CMAKE_CURRENT_LIST_FILE)
-  gv_git_describe("${GV_DESCRIBE_DIR}" d)
-  message("${d}")
+  if(DEFINED GV_DESCRIBE_OUT)
+    gv_write_git_describe("${GV_DESCRIBE_DIR}" "${GV_DESCRIBE_OUT}")
+  else()
+    gv_git_describe("${GV_DESCRIBE_DIR}" d)
+    message("${d}")
+  endif()
 endif()

@@ -2,6 +2,8 @@
 
 #include <mrpt/version.h>
 
+#include "gridvector_git_describe.h"  // GV_GIT_DESCRIBE, written by cmake/GitDescribe.cmake at build time
+
 namespace gridvector
 {
 std::string version() { return GV_PROJECT_VERSION; }

@@ -7,7 +7,7 @@ namespace gridvector
 {
 /** The project version of CMakeLists.txt's project(), e.g. "0.1.0". */
 std::string version();
-/** `git describe --tags --always --dirty` of the source at configure time; "unknown" outside git. */
+/** `git describe --tags --always --dirty` of the source, refreshed at every build; "unknown" outside git. */
 std::string gitDescription();
 /** The MRPT version the library was compiled against, e.g. "2.5.8". */
 std::string mrptVersion();

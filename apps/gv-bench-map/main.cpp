@@ -85,17 +85,24 @@ std::vector<uint8_t> bandMask(const std::vector<GridVector>& vs, const mrpt::map
 	return mask;
 }
 
-int gSamples = 0;  // --samples, else [gridvector_occupancy] samples_per_axis
-bool gMaxPooling = true;  // [gridvector_occupancy] max_pooling
-GridOptions gGrid;  // [gridvector_grid]: the cells' prior
-int gRepeat = 1;  // --repeat
-
-Agreement agreement(const std::vector<GridVector>& vs, const mrpt::maps::COccupancyGridMap2D& mrptGrid, double band)
+/** The command line's settings, with the configuration they come from. */
+struct BenchOptions
 {
-	const OccupancyRaster R = OccupancyConversion::rasterise(vs, mrptGrid.getXMin(), mrptGrid.getYMin(),
-															 mrptGrid.getResolution(), int(mrptGrid.getSizeX()),
-															 int(mrptGrid.getSizeY()), gSamples, gMaxPooling, gGrid);
-	const auto mask = bandMask(vs, mrptGrid, band);
+	GridVectorConfig cfg;
+	long maxScans = 0;  //!< --max-scans (0: all)
+	double band = kBand;  //!< --band [m]
+	int repeat = 1;  //!< --repeat
+	int samples = 0;  //!< --samples, else [gridvector_occupancy] samples_per_axis
+	bool quiet = false;
+};
+
+Agreement agreement(const std::vector<GridVector>& vs, const mrpt::maps::COccupancyGridMap2D& mrptGrid,
+					const BenchOptions& o)
+{
+	const OccupancyRaster R = OccupancyConversion::rasterise(
+		vs, mrptGrid.getXMin(), mrptGrid.getYMin(), mrptGrid.getResolution(), int(mrptGrid.getSizeX()),
+		int(mrptGrid.getSizeY()), o.samples, o.cfg.occupancy.maxPooling, o.cfg.grid);
+	const auto mask = bandMask(vs, mrptGrid, o.band);
 	Agreement a;
 	for (int iy = 0; iy < R.ny; ++iy)
 		for (int ix = 0; ix < R.nx; ++ix)
@@ -148,8 +155,12 @@ Timing perScanTiming(const std::vector<double>& t)
 	return r;
 }
 
-void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScans, double band, bool quiet)
+void benchLog(const std::string& path, const BenchOptions& o)
 {
+	const GridVectorConfig& cfg = o.cfg;
+	const long maxScans = o.maxScans;
+	const double band = o.band;
+	const bool quiet = o.quiet;
 	io::ReadOptions ro;
 	ro.includeRearLaser = false;
 	ro.quiet = quiet;
@@ -186,7 +197,7 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 	// so that other processes on a shared machine do not decide the figures)
 	GlobalMap map(cfg);
 	io::Progress progress(quiet);  // drawn between the timed calls
-	for (int rep = 0; rep < gRepeat; ++rep)
+	for (int rep = 0; rep < o.repeat; ++rep)
 	{
 		map.clear();
 		for (size_t t = 0; t < n; ++t)
@@ -198,7 +209,7 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 			const auto& st = map.lastInsertStats();
 			work[t] = double(st.wipe.candidates);
 			cellsWiped[t] = double(st.wipe.cellsHit + st.wipe.cellsVisited);
-			progress.show(path + ": sequential insertion " + std::to_string(rep + 1) + "/" + std::to_string(gRepeat), t + 1, n);
+			progress.show(path + ": sequential insertion " + std::to_string(rep + 1) + "/" + std::to_string(o.repeat), t + 1, n);
 		}
 	}
 	// the same sequential map with map.wipe_vectorless_beams flipped (beyond the paper), for the agreement
@@ -209,7 +220,7 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 	// MRPT's occupancy grid from the same scans and poses
 	// (timed the same way: --repeat R fresh grids, each scan's fastest time)
 	mrpt::maps::COccupancyGridMap2D grid(-10, 10, -10, 10, float(cfg.grid.resolution));
-	for (int rep = 0; rep < gRepeat; ++rep)
+	for (int rep = 0; rep < o.repeat; ++rep)
 	{
 		grid = mrpt::maps::COccupancyGridMap2D(-10, 10, -10, 10, float(cfg.grid.resolution));
 		grid.insertionOptions.maxDistanceInsertion = 80.0f;
@@ -220,7 +231,7 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 			grid.insertObservation(*obs[t], pose);
 			const double dt = seconds(a, Clock::now());
 			tMrpt[t] = rep ? std::min(tMrpt[t], dt) : dt;
-			progress.show(path + ": MRPT grid " + std::to_string(rep + 1) + "/" + std::to_string(gRepeat), t + 1, n);
+			progress.show(path + ": MRPT grid " + std::to_string(rep + 1) + "/" + std::to_string(o.repeat), t + 1, n);
 		}
 	}
 	progress.done();
@@ -247,9 +258,9 @@ void benchLog(const std::string& path, const GridVectorConfig& cfg, long maxScan
 	const MemoryReport mem = MemoryAccounting::account(map.vectors(), 0.1);
 	const MemoryReport memB = MemoryAccounting::account(merged.vectors, 0.1);
 	const MemoryReport memS = MemoryAccounting::account(staticMap.vectors, 0.1);
-	const Agreement ag = agreement(map.vectors(), grid, band), agB = agreement(merged.vectors, grid, band);
+	const Agreement ag = agreement(map.vectors(), grid, o), agB = agreement(merged.vectors, grid, o);
 	const Agreement agM = mrptSelfAgreement(map.vectors(), grid, gridRev, band);
-	const Agreement agAlt = agreement(alt.vectors(), grid, band);
+	const Agreement agAlt = agreement(alt.vectors(), grid, o);
 	const Agreement& agOff = cfg.map.wipeVectorlessBeams ? agAlt : ag;
 	const Agreement& agOn = cfg.map.wipeVectorlessBeams ? ag : agAlt;
 	size_t perScanVectors = 0;
@@ -306,17 +317,16 @@ int main(int argc, char** argv)
 		args, argc, argv,
 		[&] {
 			args.requirePositional(1, 100);
-			GridVectorConfig cfg;
-			if (args.has("config")) cfg.loadFromFile(args.get("config"));
-			const long maxScans = args.getInt("max-scans", 0, 0, 100000000);
-			const double band = args.getDouble("band", kBand);
-			if (band <= 0) args.fail("--band must be > 0 (metres), got " + args.get("band"));  // -1 compared no cell
-			gRepeat = int(args.getInt("repeat", 1, 1, 100));
-			gSamples = int(args.getInt("samples", cfg.occupancy.samplesPerAxis, 0, 16));
-			gMaxPooling = cfg.occupancy.maxPooling;
-			gGrid = cfg.grid;
+			BenchOptions o;
+			if (args.has("config")) o.cfg.loadFromFile(args.get("config"));
+			o.maxScans = args.getInt("max-scans", 0, 0, 100000000);
+			o.band = args.getDouble("band", kBand);
+			if (o.band <= 0) args.fail("--band must be > 0 (metres), got " + args.get("band"));  // -1 compared no cell
+			o.repeat = int(args.getInt("repeat", 1, 1, 100));
+			o.samples = int(args.getInt("samples", o.cfg.occupancy.samplesPerAxis, 0, 16));
+			o.quiet = args.has("quiet");
 			std::printf("| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/n_v static | n_g/cells | agree seq | agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-			for (const auto& log : args.positional()) benchLog(log, cfg, maxScans, band, args.has("quiet"));
+			for (const auto& log : args.positional()) benchLog(log, o);
 			return 0;
 		});
 }

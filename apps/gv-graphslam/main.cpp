@@ -320,8 +320,10 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 	std::unique_ptr<mrpt::graphslam::optimizers::CGraphSlamOptimizer<graph_t>> gso(
 		reg.optimizers_map[s.optimizer]());
 	std::optional<StdinFromDevNull> noPause(std::in_place);
-	mrpt::graphslam::CGraphSlamEngine<graph_t> engine(s.ini, s.rawlog, s.groundTruth, nullptr,
-													   nrd.get(), erd.get(), gso.get());
+	// optional: destroyed before the marker is written, since its destructor writes timings.log
+	std::optional<mrpt::graphslam::CGraphSlamEngine<graph_t>> engineHolder;
+	engineHolder.emplace(s.ini, s.rawlog, s.groundTruth, nullptr, nrd.get(), erd.get(), gso.get());
+	auto& engine = *engineHolder;
 	noPause.reset();
 	if (s.quiet)
 		for (mrpt::system::COutputLogger* l :
@@ -338,6 +340,7 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 	writeEngineOutputs(engine, gc, outDir.create());
 
 	graph_t graph = engine.getGraph();
+	engineHolder.reset();  // the engine's last file (timings.log) before ours: the marker must be newest
 	if (s.finalOptimization && graph.edgeCount() > 0)
 	{
 		mrpt::graphslam::TResultInfoSpaLevMarq info;

@@ -16,9 +16,23 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 # check TOOL DIR MARKER LATER EARLIER -- command...: a first run makes a complete set (the marker
 # newest of all files); then LATER is replaced by a directory and the run repeated: it fails naming
 # LATER, EARLIER (written before LATER) is rewritten, and the old marker is gone
+# With strace (if ptrace is allowed) the first run's writes and renames are traced (-y: each fd's
+# path) and the last one into DIR must be the marker's: file times alone miss a write in the same
+# clock tick (MRPT's graphslam engine flushed timings.log after gv-graphslam's marker, which the
+# times showed only when the two fell in different ticks).
+STRACE=0
+if command -v strace > /dev/null && strace -f -qq -o /dev/null true 2> /dev/null; then STRACE=1; fi
 check() {
   local tool=$1 dir=$2 marker=$3 later=$4 earlier=$5; shift 6
-  "$@" > /dev/null 2>&1 || fail "$tool: first run failed"
+  if [ "$STRACE" = 1 ]; then
+    strace -f -qq -y -e trace=write,pwrite64,writev,rename,renameat,renameat2 -o trace.txt "$@" > /dev/null 2>&1 ||
+      fail "$tool: first run failed"
+    local last
+    last=$(grep -E "/$dir/[^>]*>|\"$dir/" trace.txt | tail -n 1 | cut -c1-200)
+    echo "$last" | grep -qE "rename.*\"$dir/$marker\"" || fail "$tool: the last write into $dir is not $marker's rename: $last"
+  else
+    "$@" > /dev/null 2>&1 || fail "$tool: first run failed"
+  fi
   [ -s "$dir/$marker" ] || fail "$tool: no $marker after a complete run"
   [ -z "$(find "$dir" -maxdepth 1 -type f -newer "$dir/$marker")" ] || fail "$tool: files written after $marker: $(find "$dir" -maxdepth 1 -type f -newer "$dir/$marker")"
   sleep 1.1; touch -d '-1 hour' "$dir/$earlier"
@@ -35,4 +49,4 @@ check gv-map map memory.json occupancy.yaml map.gvmap -- "$B/gv-map" --input sim
 check gv-sim s2 sim_info.txt truth_dynamic.txt sim.log -- "$B/gv-sim" --world office --seed 2 --scans 30 --out s2 --quiet
 check gv-graphslam gs trajectory.txt vectors.svg nodes.txt -- "$B/gv-graphslam" --2d -i "$GV_SOURCE_DIR/share/gridvector/graphslam-gridvector.ini" \
   -r sim.rawlog --disable-visuals --output-dir gs --quiet
-echo "output_sets: 4 tools OK"
+echo "output_sets: 4 tools OK (write order traced: $([ "$STRACE" = 1 ] && echo yes || echo "no, strace unavailable"))"

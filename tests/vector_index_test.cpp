@@ -1,11 +1,14 @@
-// Spatial hash over vector boxes: queries equal brute force through inserts, moves and removals.
+// Spatial hash over vector boxes: queries equal brute force through inserts, moves and removals,
+// and stay the same when several threads query at once.
 #include <gridvector/VectorIndex.h>
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <random>
+#include <thread>
 
 using namespace gridvector;
 
@@ -109,4 +112,42 @@ TEST(VectorIndex, HugeAndNonFiniteBoxesAreFoundWithoutBucketing)
 	std::sort(out.begin(), out.end());
 	EXPECT_EQ(out, (std::vector<uint32_t>{0, 1}));
 	EXPECT_EQ(idx.size(), 3u);
+}
+
+// query() writes nothing in the index: threads querying one index at once get exactly the answers
+// (slots and their order) of the same queries made one after the other.
+TEST(VectorIndex, QueriesFromSeveralThreadsAtOnceGiveTheSingleThreadedAnswers)
+{
+	std::mt19937 rng(7);
+	std::uniform_real_distribution<double> U(-30, 30), L(0, 5);
+	VectorIndex idx(2.0);
+	for (uint32_t i = 0; i < 400; ++i)
+	{
+		const double x = U(rng), y = U(rng);
+		idx.insert(i, {x, y, x + L(rng), y + L(rng)});
+	}
+	idx.insert(400, {-1e5, -1e5, 1e5, 1e5});  // a wide box, listed once
+	std::vector<Box2D> queries;
+	for (int q = 0; q < 200; ++q)
+	{
+		const double x = U(rng), y = U(rng);
+		queries.push_back(q % 40 == 0 ? Box2D{-1e4, -1e4, 1e4, 1e4} : Box2D{x, y, x + L(rng), y + L(rng)});
+	}
+	std::vector<std::vector<uint32_t>> want(queries.size());
+	for (size_t q = 0; q < queries.size(); ++q) idx.query(queries[q], want[q]);
+	std::atomic<int> wrong{0};
+	std::vector<std::thread> threads;
+	for (int t = 0; t < 6; ++t)
+		threads.emplace_back([&] {
+			std::vector<uint32_t> got;
+			for (int round = 0; round < 50; ++round)
+				for (size_t q = 0; q < queries.size(); ++q)
+				{
+					got.clear();
+					idx.query(queries[q], got);
+					wrong += got != want[q];
+				}
+		});
+	for (auto& th : threads) th.join();
+	EXPECT_EQ(wrong.load(), 0);
 }

@@ -33,7 +33,6 @@ void VectorIndex::clear()
 	wide_.clear();
 	boxes_.clear();
 	present_.clear();
-	stamp_.clear();
 	live_ = 0;
 }
 
@@ -61,7 +60,6 @@ void VectorIndex::insert(uint32_t slot, const Box2D& box)
 	{
 		boxes_.resize(slot + 1);
 		present_.resize(slot + 1, 0);
-		stamp_.resize(slot + 1, 0);
 	}
 	boxes_[slot] = box;
 	present_[slot] = 1;
@@ -94,31 +92,64 @@ void VectorIndex::remove(uint32_t slot)
 	});
 }
 
+namespace
+{
+using Buckets = std::unordered_map<uint64_t, std::vector<uint32_t>>;
+
+/** Bucket index of coordinate v (as insert() and forBuckets() compute it). */
+int64_t bucketOf(double v, double cell) { return int64_t(std::floor(v / cell)); }
+
+// The buckets x0..x1 times y0..y1 in order (x, then y); a slot listed in several of them is reported
+// in the first one the query visits, (max(its lowest x, x0), max(its lowest y, y0)): in a bucket past
+// the query's first column (row) only if the slot's box starts in that column (row). Free functions
+// (not members) so that the compiler inlines them into query().
+template <class Key>
+void queryRange(const Buckets& buckets, const std::vector<Box2D>& boxes, double cell, const Box2D& box,
+				const int64_t x0, const int64_t x1, const int64_t y0, const int64_t y1, Key&& key,
+				std::vector<uint32_t>& out)
+{
+	for (int64_t ix = x0; ix <= x1; ++ix)
+		for (int64_t iy = y0; iy <= y1; ++iy)
+		{
+			const auto it = buckets.find(key(ix, iy));
+			if (it == buckets.end()) continue;
+			for (uint32_t s : it->second)
+			{
+				const Box2D& b = boxes[s];
+				if (!b.intersects(box)) continue;
+				if (ix != x0 && bucketOf(b.minX, cell) != ix) continue;  // reported before
+				if (iy != y0 && bucketOf(b.minY, cell) != iy) continue;
+				out.push_back(s);
+			}
+		}
+}
+
+// Every bucket in the map's order (a query wider than the map); the slots seen are marked in a set
+// of this call's own.
+void queryAll(const Buckets& buckets, const std::vector<Box2D>& boxes, const Box2D& box, std::vector<uint32_t>& out)
+{
+	std::vector<uint8_t> seen(boxes.size(), 0);
+	for (const auto& kv : buckets)
+		for (uint32_t s : kv.second)
+		{
+			if (seen[s]) continue;
+			seen[s] = 1;
+			if (boxes[s].intersects(box)) out.push_back(s);
+		}
+}
+}  // namespace
+
+// Writes nothing in the index: any number of threads may query at once.
 void VectorIndex::query(const Box2D& box, std::vector<uint32_t>& out) const
 {
-	if (++query_ == 0)  // stamp wrapped: reset
-	{
-		std::fill(stamp_.begin(), stamp_.end(), 0);
-		query_ = 1;
-	}
-	auto scan = [&](const std::vector<uint32_t>& slots) {
-		for (uint32_t s : slots)
-		{
-			if (stamp_[s] == query_) continue;
-			stamp_[s] = query_;
-			if (boxes_[s].intersects(box)) out.push_back(s);
-		}
-	};
-	const double nx = std::floor(box.maxX / cell_) - std::floor(box.minX / cell_) + 1;
-	const double ny = std::floor(box.maxY / cell_) - std::floor(box.minY / cell_) + 1;
-	if (!(nx * ny <= double(buckets_.size())))  // a query wider than the map (or not finite): walk the buckets
-		for (const auto& kv : buckets_) scan(kv.second);
+	const double x0 = std::floor(box.minX / cell_), x1 = std::floor(box.maxX / cell_);
+	const double y0 = std::floor(box.minY / cell_), y1 = std::floor(box.maxY / cell_);
+	if (!((x1 - x0 + 1) * (y1 - y0 + 1) <= double(buckets_.size())))  // wider than the map (or not finite)
+		queryAll(buckets_, boxes_, box, out);
 	else
-		forBuckets(box, [&](uint64_t k) {
-			auto it = buckets_.find(k);
-			if (it != buckets_.end()) scan(it->second);
-		});
-	scan(wide_);
+		queryRange(buckets_, boxes_, cell_, box, int64_t(x0), int64_t(x1), int64_t(y0), int64_t(y1), key, out);
+	for (uint32_t s : wide_)  // listed once each
+		if (boxes_[s].intersects(box)) out.push_back(s);
 }
 
 }  // namespace gridvector

@@ -35,7 +35,9 @@ struct FootPoint
  * of radius r costs O((r/B + 1)^2 + k) with B the index bucket and k the vectors
  * near the point. A vector's static stretches are computed once per finder, on
  * first use (the finder is meant to live for one matching call: the map must not
- * change meanwhile). Not thread-safe (the index's query is not). */
+ * change meanwhile). A finder's cache and scratch are its own: one finder per
+ * thread; any number of finders may read one map at once (the index's query
+ * writes nothing). */
 class StaticFootPoints
 {
    public:

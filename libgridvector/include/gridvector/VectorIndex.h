@@ -40,7 +40,9 @@ struct Box2D
  * along the rays past the vector's ends; bounded to the vector since, they
  * stay under the cap on every benchmark log.)
  *
- * Not thread-safe: query() uses an internal stamp to report each slot once. */
+ * query() writes nothing in the index (a slot listed in several buckets is
+ * reported at the first of them the query visits, known from its box), so
+ * any number of threads may query one index at once while none modifies it. */
 class VectorIndex
 {
    public:
@@ -74,8 +76,6 @@ class VectorIndex
 	std::vector<uint32_t> wide_;  //!< slots whose boxes are too large (or not finite) for the buckets
 	std::vector<Box2D> boxes_;
 	std::vector<uint8_t> present_;
-	mutable std::vector<uint32_t> stamp_;
-	mutable uint32_t query_ = 0;
 	size_t live_ = 0;
 };
 

@@ -85,7 +85,10 @@ Eigen::Matrix3d marginaliseTranslation(const Eigen::Matrix3d& information, const
  * exactly along each segment by Simpson's rule) with Cauchy weights. With
  * matcher.angle_rotation_seeds the angle step only seeds (while the gates
  * tighten) and the Gauss-Newton step alone iterates to its fixed point.
- * Not thread-safe: one workspace per matcher. Allocation-free once warm. */
+ * One workspace per matcher, written by its const members: one matcher per
+ * thread. MStep, LoopSearch and the graphslam deciders each own one and call it
+ * from the one thread that drives them; CGridVectorMap's const members use none.
+ * Allocation-free once warm. */
 class VectorMatcher
 {
    public:

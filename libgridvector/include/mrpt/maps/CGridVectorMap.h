@@ -31,7 +31,13 @@ namespace mrpt::maps
  * [MappingApplication_gridVectorMap_00_likelihoodOpts]
  * sigma = 0.05
  * \endcode
- * Unknown keys in these sections are an error, not silently ignored. */
+ * Unknown keys in these sections are an error, not silently ignored.
+ *
+ * Threads: every const member (likelihood, matching, getAsOccupancyGrid,
+ * asString, visualisation, save*) may run in any number of threads at once,
+ * as long as no thread modifies the map meanwhile (insert, clear, setConfig,
+ * deserialisation, globalMap() non-const): the standard library's contract.
+ * A const call keeps its scratch to itself and writes nothing in the map. */
 class CGridVectorMap : public CMetricMap
 {
 	DEFINE_SERIALIZABLE(CGridVectorMap, mrpt::maps)
@@ -91,8 +97,7 @@ class CGridVectorMap : public CMetricMap
 	 * per (vector, grid column), the closest. Points offset, offset + decimation, ... are used.
 	 * extraResults: sumSqrDist = the sum over the points with a correspondence of the closest
 	 * squared distance (as COccupancyGridMap2D and the header's contract; CPointsMap gives the
-	 * mean); correspondencesRatio = those points / the points used. Like the rest of the map, not
-	 * thread-safe (the spatial index's query keeps a stamp), const as it is. */
+	 * mean); correspondencesRatio = those points / the points used. */
 	void determineMatching2D(const mrpt::maps::CMetricMap* otherMap, const mrpt::poses::CPose2D& otherMapPose,
 							 mrpt::tfest::TMatchingPairList& correspondences, const TMatchingParams& params,
 							 TMatchingExtraResults& extraResults) const override;

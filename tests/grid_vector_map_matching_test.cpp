@@ -4,15 +4,18 @@
 #include <gridvector/GridVector.h>
 #include <gridvector/SE2.h>
 #include <gtest/gtest.h>
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/poses/CPosePDFGaussian.h>
+#include <mrpt/serialization/CArchive.h>
 #include <mrpt/slam/CICP.h>
 
 #include <cmath>
 #include <random>
+#include <tuple>
 
 #include "corridor_map.h"
 #include "test_scans.h"
@@ -321,4 +324,74 @@ TEST(GridVectorMapMatching, DoorStateAndTrolleySeenOnlyEarlyGetNoCorrespondences
 	EXPECT_LT(std::hypot(est.x - truth.x, est.y - truth.y), 0.01) << est.asString();
 	EXPECT_LT(angleErr(est.phi, truth.phi), 0.2 * M_PI / 180) << est.asString();
 	EXPECT_GT(std::hypot(estAll.x - truth.x, estAll.y - truth.y), 0.03) << estAll.asString();
+}
+
+// The matching calls keep the vectors' static stretches (the Fig. 4 profile against the threshold)
+// while the map does not change: after every kind of change their answers are those of a map that
+// never answered before.
+namespace
+{
+/** Every pair of a determineMatching2D call (vector, point, squared distance) and a nearest distance. */
+std::vector<std::tuple<uint32_t, uint32_t, float>> answersOf(const CGridVectorMap& m, const CSimplePointsMap& pts,
+															  const TPose2D& x)
+{
+	TMatchingPairList pairs;
+	TMatchingExtraResults extra;
+	m.determineMatching2D(&pts, CPose2D(x), pairs, gate(0.3), extra);
+	std::vector<std::tuple<uint32_t, uint32_t, float>> out;
+	for (const auto& p : pairs) out.emplace_back(p.globalIdx, p.localIdx, p.errorSquareAfterTransformation);
+	out.emplace_back(0, 0, m.squareDistanceToClosestCorrespondence(4.5f, 0.05f));  // on the door's closed state
+	return out;
+}
+
+/** A map that has never answered a matching call: its stretches come fresh. */
+CGridVectorMap fresh(const CGridVectorMap& m)
+{
+	CGridVectorMap f(m.config());
+	f.globalMap().setVectors(m.vectors());
+	return f;
+}
+}  // namespace
+
+TEST(GridVectorMapMatching, AnswersFollowTheMapThroughEveryChange)
+{
+	gridvector::GridVectorConfig half;
+	half.matching.staticThreshold = 0.5;
+	CGridVectorMap map = corridorMap();
+	auto walls = corridorWorld();
+	walls.push_back(kDoorClosed);
+	walls.insert(walls.end(), kTrolley.begin(), kTrolley.end());
+	const TPose2D truth(3.0, 1.0, -0.3);
+	const CSimplePointsMap pts = scanPoints(scanOf(truth, walls, {}, 42));
+	const auto all = answersOf(map, pts, truth);
+	EXPECT_EQ(answersOf(map, pts, truth), all);  // the second call from the kept stretches
+	map.setConfig(half);  // the door's closed state and the trolley drop out
+	const auto halfAnswers = answersOf(map, pts, truth);
+	EXPECT_NE(halfAnswers, all);
+	EXPECT_EQ(halfAnswers, answersOf(corridorMap(half), pts, truth));
+	map.setConfig(gridvector::GridVectorConfig{});
+	EXPECT_EQ(answersOf(map, pts, truth), all);
+	map.setConfig(half);
+	const CGridVectorMap copy = map;  // answers as the original, from a cache of its own
+	EXPECT_EQ(answersOf(copy, pts, truth), halfAnswers);
+	// an insertion (the door seen closed again: its columns read more static), a wipe, an
+	// insertVector, new content through globalMap(), deserialisation, clear
+	map.insertObservation(scanOf({4.5, 1.0, -1.2}, walls, {}, 43), mrpt::poses::CPose3D(4.5, 1.0, 0, -1.2, 0, 0));
+	EXPECT_EQ(answersOf(map, pts, truth), answersOf(fresh(map), pts, truth));
+	EXPECT_NE(answersOf(map, pts, truth), halfAnswers);
+	map.globalMap().wipe({4.5, 1.5, -1.57}, map.extractLocal(scanOf({4.5, 1.5, -1.57}, corridorWorld(), {}, 44)));
+	EXPECT_EQ(answersOf(map, pts, truth), answersOf(fresh(map), pts, truth));
+	map.globalMap().insertVector(GridVector({4, 0}, {5, 0}, map.config().grid));
+	EXPECT_EQ(answersOf(map, pts, truth), answersOf(fresh(map), pts, truth));
+	std::vector<GridVector> few(map.vectors().begin(), map.vectors().begin() + 5);
+	map.globalMap().setVectors(few);
+	EXPECT_EQ(answersOf(map, pts, truth), answersOf(mapOf(few, half), pts, truth));
+	mrpt::io::CMemoryStream buf;
+	auto arch = mrpt::serialization::archiveFrom(buf);
+	arch << copy;
+	buf.Seek(0);
+	arch >> map;
+	EXPECT_EQ(answersOf(map, pts, truth), halfAnswers);
+	map.clear();
+	EXPECT_EQ(answersOf(map, pts, truth).size(), 1u);  // no pairs; the nearest distance: none (float max)
 }

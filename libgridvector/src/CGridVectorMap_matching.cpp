@@ -71,7 +71,8 @@ void CGridVectorMap::determineMatching2D(const CMetricMap* otherMap, const mrpt:
 		throw std::invalid_argument("CGridVectorMap::determineMatching2D: onlyUniqueRobust needs onlyKeepTheClosest");
 	const size_t n = other.size();
 	if (n <= off) return;
-	const gridvector::StaticFootPoints feet(map_, map_.config());
+	const auto table = stretches_.tableFor(map_);
+	const gridvector::StaticFootPoints feet(map_, map_.config(), table.get());
 	const auto &xs = other.getPointsBufferRef_x(), &ys = other.getPointsBufferRef_y(), &zs = other.getPointsBufferRef_z();
 	const double c = std::cos(otherMapPose.phi()), s = std::sin(otherMapPose.phi());
 	const TPoint2D pivot(params.angularDistPivotPoint.x, params.angularDistPivotPoint.y);
@@ -115,7 +116,8 @@ float CGridVectorMap::compute3DMatchingRatio(const CMetricMap* otherMap, const m
 {
 	const CPointsMap& other = pointsOf(otherMap, "compute3DMatchingRatio");
 	if (other.size() == 0) return 0;
-	const gridvector::StaticFootPoints feet(map_, map_.config());
+	const auto table = stretches_.tableFor(map_);
+	const gridvector::StaticFootPoints feet(map_, map_.config(), table.get());
 	size_t matched = 0;
 	FootPoint f;
 	for (size_t i = 0; i < other.size(); ++i)
@@ -131,7 +133,8 @@ float CGridVectorMap::compute3DMatchingRatio(const CMetricMap* otherMap, const m
 // Squared distance to the nearest static point of the map, no gate (as a points map's nearest neighbour).
 float CGridVectorMap::squareDistanceToClosestCorrespondence(float x0, float y0) const
 {
-	const gridvector::StaticFootPoints feet(map_, map_.config());
+	const auto table = stretches_.tableFor(map_);
+	const gridvector::StaticFootPoints feet(map_, map_.config(), table.get());
 	FootPoint f;
 	return feet.nearestAnywhere(TPoint2D(x0, y0), f) ? float(f.sqrDist) : std::numeric_limits<float>::max();
 }

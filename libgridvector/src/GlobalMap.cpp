@@ -3,6 +3,7 @@
 #include <gridvector/MergeCascade.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 namespace gridvector
@@ -12,10 +13,18 @@ using mrpt::math::TPoint2D;
 GlobalMap::GlobalMap(const GridVectorConfig& cfg)
 	: cfg_(cfg), index_(cfg.map.indexCellSize), wiper_(cfg.map.hitBand, cfg.map.wipeCountsBeams), merger_(cfg)
 {
+	modified();
+}
+
+void GlobalMap::modified()
+{
+	static std::atomic<uint64_t> counter{0};
+	revision_ = ++counter;
 }
 
 void GlobalMap::clear()
 {
+	modified();
 	vectors_.clear();
 	index_.clear();
 	nextId_ = 1;
@@ -24,6 +33,7 @@ void GlobalMap::clear()
 
 void GlobalMap::setConfig(const GridVectorConfig& cfg)
 {
+	modified();
 	const bool reindex = cfg.map.indexCellSize != cfg_.map.indexCellSize;
 	cfg_ = cfg;
 	wiper_ = ScanWipe(cfg.map.hitBand, cfg.map.wipeCountsBeams);
@@ -37,6 +47,7 @@ void GlobalMap::setConfig(const GridVectorConfig& cfg)
 
 void GlobalMap::setVectors(std::vector<GridVector> v)
 {
+	modified();
 	vectors_ = std::move(v);
 	nextId_ = 1;
 	for (const auto& g : vectors_) nextId_ = std::max(nextId_, g.id + 1);
@@ -94,6 +105,7 @@ std::vector<size_t> GlobalMap::correspondents(const GridVector& v) const
 // Eq. 8: the triangles of V_t over the vectors already in the map (not over the scan's own).
 ScanWipe::Stats GlobalMap::wipe(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
 {
+	modified();
 	HeldBack none;
 	return wipeHolding(robotPose, scan, false, none);
 }
@@ -159,6 +171,7 @@ void GlobalMap::completeRefused(HeldBack& held)
 // Algorithm 2 with every correspondent the guard allows, repeated while the merged vector finds new ones.
 void GlobalMap::insertVector(GridVector m)
 {
+	modified();
 	m.id = nextId_++;
 	if (cfg_.map.mergeOnInsert)
 	{
@@ -188,6 +201,7 @@ void GlobalMap::insertVector(GridVector m)
 // m_{i,t} = x_t (+) v_{i,t} (Sec. 3.2), after the Eq. 8 update by the same scan.
 void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan)
 {
+	modified();
 	stats_ = {};
 	HeldBack held;
 	stats_.wipe = wipeHolding(robotPose, scan, cfg_.map.mergeOnInsert, held);
@@ -197,6 +211,7 @@ void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan
 
 void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, const ScanBeams& beams)
 {
+	modified();
 	stats_ = {};
 	HeldBack held;
 	stats_.wipe = wipeHolding(robotPose, scan, cfg_.map.mergeOnInsert, held);

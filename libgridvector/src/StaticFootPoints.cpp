@@ -4,14 +4,17 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace gridvector
 {
 using mrpt::math::TPoint2D;
 
-StaticFootPoints::StaticFootPoints(const GlobalMap& map, const GridVectorConfig& cfg)
-	: map_(map), estep_(cfg.estep, cfg.grid), threshold_(cfg.matching.staticThreshold)
+StaticFootPoints::StaticFootPoints(const GlobalMap& map, const GridVectorConfig& cfg, const StaticStretchTable* table)
+	: map_(map), table_(table), estep_(cfg.estep, cfg.grid), threshold_(cfg.matching.staticThreshold)
 {
+	if (table_ && (table_->revision() != map.revision() || table_->size() != map.size()))
+		throw std::invalid_argument("StaticFootPoints: the stretch table is not of the map's current state");
 }
 
 // Fig. 4: runs of columns whose profile is at or above the threshold, as [u0, u1] along the vector.
@@ -37,6 +40,7 @@ std::vector<std::pair<double, double>> StaticFootPoints::computeStretches(const 
 
 const std::vector<std::pair<double, double>>& StaticFootPoints::stretches(uint32_t slot) const
 {
+	if (table_) return table_->get(slot, [&] { return computeStretches(map_.vectors()[slot]); });
 	auto it = stretches_.find(slot);
 	if (it == stretches_.end()) it = stretches_.emplace(slot, computeStretches(map_.vectors()[slot])).first;
 	return it->second;

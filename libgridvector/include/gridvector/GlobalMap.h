@@ -48,6 +48,10 @@ class GlobalMap
 	const GridVectorConfig& config() const { return cfg_; }
 	/** Also rebuilds the spatial index if its bucket size changed. */
 	void setConfig(const GridVectorConfig& cfg);
+	/** Changes with every modification (clear, setConfig, insertScan, wipe, insertVector,
+	 * setVectors); drawn from one process-wide counter, so two states never share one. A copy
+	 * has the original's (same content). What caches of the map's state key on. */
+	uint64_t revision() const { return revision_; }
 
 	/** Insert V_t observed from robot pose x_t (sequential mode, see above).
 	 * Vectors of the map whose scanIndex equals scan.scanIndex (>= 0) are not
@@ -144,8 +148,12 @@ class GlobalMap
 	void removeSlots(std::vector<size_t> slots);
 	void rebuildIndex();
 
+	/** A fresh revision for a modification. */
+	void modified();
+
 	GridVectorConfig cfg_;
 	std::vector<GridVector> vectors_;
+	uint64_t revision_ = 0;
 	uint64_t nextId_ = 1;
 	VectorIndex index_;
 	ScanWipe wiper_;

@@ -4,6 +4,7 @@
 
 #include <gridvector/EStep.h>
 #include <gridvector/GlobalMap.h>
+#include <gridvector/StaticStretchCache.h>
 
 #include <mrpt/math/TPoint2D.h>
 
@@ -33,15 +34,18 @@ struct FootPoint
  *
  * Candidates come from the map's spatial index (GlobalMap::index()), so a query
  * of radius r costs O((r/B + 1)^2 + k) with B the index bucket and k the vectors
- * near the point. A vector's static stretches are computed once per finder, on
- * first use (the finder is meant to live for one matching call: the map must not
- * change meanwhile). A finder's cache and scratch are its own: one finder per
- * thread; any number of finders may read one map at once (the index's query
- * writes nothing). */
+ * near the point. A vector's static stretches are computed on first use, once per
+ * finder, or once per map state with a StaticStretchTable of the map's revision
+ * (CGridVectorMap keeps one: its matching calls share it). The finder is meant to
+ * live for one matching call: the map must not change meanwhile. Its own cache and
+ * scratch are its own: one finder per thread; any number of finders may read one
+ * map and one table at once (the index's query writes nothing, the table fills
+ * each entry once). */
 class StaticFootPoints
 {
    public:
-	StaticFootPoints(const GlobalMap& map, const GridVectorConfig& cfg);
+	/** `table`: the stretches shared between finders, for the map's current revision (or none). */
+	StaticFootPoints(const GlobalMap& map, const GridVectorConfig& cfg, const StaticStretchTable* table = nullptr);
 
 	/** For every vector with a static stretch within `radius` of p, its nearest
 	 * static point (one per vector), appended to out unordered. */
@@ -64,6 +68,7 @@ class StaticFootPoints
 	bool footOn(uint32_t slot, const mrpt::math::TPoint2D& p, double radius, FootPoint& out) const;
 
 	const GlobalMap& map_;
+	const StaticStretchTable* table_;
 	EStep estep_;
 	double threshold_;
 	mutable std::unordered_map<uint32_t, std::vector<std::pair<double, double>>> stretches_;

@@ -3,6 +3,7 @@
 
 #include <gridvector/GlobalMap.h>
 #include <gridvector/GridVectorConfig.h>
+#include <gridvector/StaticStretchCache.h>
 #include <gridvector/VectorExtractor.h>
 
 #include <mrpt/config/CLoadableOptions.h>
@@ -37,7 +38,9 @@ namespace mrpt::maps
  * asString, visualisation, save*) may run in any number of threads at once,
  * as long as no thread modifies the map meanwhile (insert, clear, setConfig,
  * deserialisation, globalMap() non-const): the standard library's contract.
- * A const call keeps its scratch to itself and writes nothing in the map. */
+ * A const call keeps its scratch to itself; the matching calls share the
+ * vectors' static stretches, computed once per map state (each entry filled
+ * once, under std::call_once). */
 class CGridVectorMap : public CMetricMap
 {
 	DEFINE_SERIALIZABLE(CGridVectorMap, mrpt::maps)
@@ -126,6 +129,8 @@ class CGridVectorMap : public CMetricMap
 	gridvector::GlobalMap map_;
 	gridvector::VectorExtractor extractor_;
 	size_t insertedScans_ = 0;
+	/** The matching calls' static stretches while the map does not change (map_.revision()). */
+	gridvector::StaticStretchCache stretches_;
 };
 
 }  // namespace mrpt::maps

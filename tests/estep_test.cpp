@@ -417,7 +417,10 @@ TEST(EStep, SplitSpansLeavesNoStaticSliverBesideAStretch)
 	EXPECT_EQ(stub[1].state, VectorState::Dynamic);
 	EXPECT_NEAR(stub[1].length(), 1.5, 1e-9);
 	for (const auto& p : stub)
-		if (p.state == VectorState::Static) EXPECT_GE(p.length(), minLen - 1e-9);
+		if (p.state == VectorState::Static)
+		{
+			EXPECT_GE(p.length(), minLen - 1e-9);
+		}
 }
 
 TEST(EStep, PeakRowProfileReadsCellsWithoutCountsAsThePrior)

@@ -231,3 +231,39 @@ TEST(VectorExtractor, BreakpointAllowsTheConfiguredRangeNoise)
 	EXPECT_EQ(runs(0.0), (std::vector<size_t>{0, 90}));  // geometry only: broken at the step
 	EXPECT_EQ(runs(1.0), (std::vector<size_t>{0, 90}));  // 0.02 m allowance: still broken
 }
+
+TEST(VectorExtractor, ScanToPointsIsEveryStrideThValidPointOfScanToRuns)
+{
+	// invalid beams of every kind (flagged, NaN, inf, too short, at max range), a sensor offset
+	mrpt::obs::CObservation2DRangeScan scan;
+	scan.aperture = float(M_PI);
+	scan.maxRange = 10.f;
+	scan.rightToLeft = true;
+	scan.sensorPose = mrpt::poses::CPose3D(0.2, -0.1, 0, 0.3, 0, 0);
+	scan.resizeScan(181);
+	for (size_t i = 0; i < 181; ++i)
+	{
+		float r = 2.0f + 0.01f * float(i % 37);
+		if (i % 11 == 3) r = std::numeric_limits<float>::quiet_NaN();
+		if (i % 13 == 5) r = std::numeric_limits<float>::infinity();
+		if (i % 17 == 7) r = 0.01f;
+		if (i % 19 == 9) r = 10.f;
+		scan.setScanRange(i, r), scan.setScanRangeValidity(i, i % 23 != 4);
+	}
+	const VectorExtractor ex;
+	std::vector<TPoint2D> all, some;
+	std::vector<size_t> starts;
+	ex.scanToRuns(scan, all, starts);
+	ASSERT_GT(all.size(), 100u);
+	ASSERT_LT(all.size(), 181u);
+	for (size_t stride : {1, 2, 7, 20, 500})
+	{
+		ex.scanToPoints(scan, some, stride);
+		ASSERT_EQ(some.size(), (all.size() + stride - 1) / stride) << "stride " << stride;
+		for (size_t k = 0; k < some.size(); ++k)
+		{
+			EXPECT_EQ(some[k].x, all[k * stride].x) << "stride " << stride << " point " << k;
+			EXPECT_EQ(some[k].y, all[k * stride].y) << "stride " << stride << " point " << k;
+		}
+	}
+}

@@ -40,17 +40,17 @@ double CGridVectorMap::internal_computeObservationLikelihood(
 {
 	const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
 	if (!scan || isEmpty()) return 0;
-	std::vector<TPoint2D> pts;
-	std::vector<size_t> runs;
-	extractor_.scanToRuns(*scan, pts, runs);
+	// per-thread scratch: a particle filter calls this once per particle with the same scan
+	thread_local std::vector<TPoint2D> pts;
+	thread_local std::vector<uint32_t> slots;
+	extractor_.scanToPoints(*scan, pts, size_t(likelihoodOptions.decimation));
 	const double c = std::cos(takenFrom.yaw()), s = std::sin(takenFrom.yaw());
 	const double m = likelihoodOptions.maxCorrDistance;
 	const double inv2s2 = 1.0 / (2 * likelihoodOptions.sigma * likelihoodOptions.sigma);
 	const double zr = likelihoodOptions.zRandom, zh = 1.0 - zr;
 	const double prior = gridvector::OccupancyConversion::priorRatio(map_.config().grid);
-	std::vector<uint32_t> slots;
 	double logLik = 0;
-	for (size_t i = 0; i < pts.size(); i += size_t(likelihoodOptions.decimation))
+	for (size_t i = 0; i < pts.size(); ++i)
 	{
 		const TPoint2D p(takenFrom.x() + c * pts[i].x - s * pts[i].y, takenFrom.y() + s * pts[i].x + c * pts[i].y);
 		// Only the vectors within maxCorrDistance of this point, through the map's spatial index.

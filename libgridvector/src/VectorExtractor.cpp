@@ -53,9 +53,7 @@ void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
 	for (size_t i = 0; i < n; ++i)
 	{
 		const float r = scan.getScanRange(i);
-		const bool valid = scan.getScanRangeValidity(i) && std::isfinite(r) &&
-						   r > ext_.minRange && r < scan.maxRange - ext_.maxRangeMargin;
-		if (!valid)
+		if (!validBeam(scan, i))
 		{
 			prevValid = false;
 			continue;
@@ -73,6 +71,31 @@ void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
 		pts.push_back(p);
 		prevValid = true;
 		prevR = r;
+	}
+}
+
+bool VectorExtractor::validBeam(const mrpt::obs::CObservation2DRangeScan& scan, size_t i) const
+{
+	const float r = scan.getScanRange(i);
+	return scan.getScanRangeValidity(i) && std::isfinite(r) && r > ext_.minRange &&
+		   r < scan.maxRange - ext_.maxRangeMargin;
+}
+
+void VectorExtractor::scanToPoints(const mrpt::obs::CObservation2DRangeScan& scan, std::vector<TPoint2D>& pts,
+								   size_t stride) const
+{
+	pts.clear();
+	const size_t n = scan.getScanSize();
+	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y(), syaw = scan.sensorPose.yaw();
+	const double cs = std::cos(syaw), ss = std::sin(syaw);
+	thread_local BeamTrig trigCache;
+	const BeamTrig& trig = trigCache.update(scan);
+	size_t valid = 0;
+	for (size_t i = 0; i < n; ++i)
+	{
+		if (!validBeam(scan, i) || valid++ % std::max<size_t>(1, stride) != 0) continue;
+		const double r = scan.getScanRange(i), lx = r * trig.c[i], ly = r * trig.s[i];
+		pts.emplace_back(sx + cs * lx - ss * ly, sy + ss * lx + cs * ly);
 	}
 }
 

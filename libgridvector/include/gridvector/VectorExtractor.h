@@ -45,6 +45,12 @@ class VectorExtractor
 					std::vector<mrpt::math::TPoint2D>& pts,
 					std::vector<size_t>& runStarts) const;
 
+	/** Every `stride`-th valid beam endpoint (robot frame): the points scanToRuns lists, at
+	 * 0, stride, 2 stride, ..., without the others' transforms or the breakpoints (the likelihood's
+	 * decimated points, once per particle). */
+	void scanToPoints(const mrpt::obs::CObservation2DRangeScan& scan, std::vector<mrpt::math::TPoint2D>& pts,
+					  size_t stride) const;
+
 	/** Split-and-merge over one run of ordered points [first, last]. */
 	std::vector<ScanSegment> splitAndMerge(
 		const std::vector<mrpt::math::TPoint2D>& pts, size_t first, size_t last) const;
@@ -59,6 +65,9 @@ class VectorExtractor
 	const GridOptions& gridOptions() const { return grid_; }
 
    private:
+	/** Whether beam i's reading is one scanToRuns keeps (finite, valid, inside the ranges). */
+	bool validBeam(const mrpt::obs::CObservation2DRangeScan& scan, size_t i) const;
+
 	void split(const std::vector<mrpt::math::TPoint2D>& pts, const PrefixMoments& pm, size_t i,
 			   size_t j, std::vector<ScanSegment>& out) const;
 	/** LS fit of [i, j] from prefix moments; false if degenerate or, when

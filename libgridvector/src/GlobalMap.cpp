@@ -3,7 +3,6 @@
 #include <gridvector/MergeCascade.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 
 namespace gridvector
@@ -14,12 +13,6 @@ GlobalMap::GlobalMap(const GridVectorConfig& cfg)
 	: cfg_(cfg), index_(cfg.map.indexCellSize), wiper_(cfg.map.hitBand, cfg.map.wipeCountsBeams), merger_(cfg)
 {
 	modified();
-}
-
-void GlobalMap::modified()
-{
-	static std::atomic<uint64_t> counter{0};
-	revision_ = ++counter;
 }
 
 void GlobalMap::clear()

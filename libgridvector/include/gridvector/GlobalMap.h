@@ -49,9 +49,10 @@ class GlobalMap
 	/** Also rebuilds the spatial index if its bucket size changed. */
 	void setConfig(const GridVectorConfig& cfg);
 	/** Changes with every modification (clear, setConfig, insertScan, wipe, insertVector,
-	 * setVectors); drawn from one process-wide counter, so two states never share one. A copy
-	 * has the original's (same content). What caches of the map's state key on. */
-	uint64_t revision() const { return revision_; }
+	 * setVectors) and assignment, so one map object's successive states never share one; a copy
+	 * starts with the original's (same content), a moved-from map gets a new one. What a cache of
+	 * this object's state keys on. */
+	uint64_t revision() const { return revision_.value(); }
 
 	/** Insert V_t observed from robot pose x_t (sequential mode, see above).
 	 * Vectors of the map whose scanIndex equals scan.scanIndex (>= 0) are not
@@ -149,11 +150,36 @@ class GlobalMap
 	void rebuildIndex();
 
 	/** A fresh revision for a modification. */
-	void modified();
+	void modified() { revision_.bump(); }
+
+	/** The state counter: bumped by assignment (and in a move's source) as by a modification,
+	 * so GlobalMap's defaulted copy and move keep revision()'s promise. */
+	class Revision
+	{
+	   public:
+		Revision() = default;
+		Revision(const Revision& o) : value_(o.value_) {}
+		Revision(Revision&& o) noexcept : value_(o.value_) { o.bump(); }
+		Revision& operator=(const Revision&)
+		{
+			bump();
+			return *this;
+		}
+		Revision& operator=(Revision&& o) noexcept
+		{
+			bump(), o.bump();
+			return *this;
+		}
+		void bump() { ++value_; }
+		uint64_t value() const { return value_; }
+
+	   private:
+		uint64_t value_ = 0;
+	};
 
 	GridVectorConfig cfg_;
 	std::vector<GridVector> vectors_;
-	uint64_t revision_ = 0;
+	Revision revision_;
 	uint64_t nextId_ = 1;
 	VectorIndex index_;
 	ScanWipe wiper_;

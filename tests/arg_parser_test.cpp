@@ -1,5 +1,5 @@
 // io::ArgParser and io::runTool, the main() every tool shares.
-#include <gridvector/io/ArgParser.h>
+#include "common/ArgParser.h"
 
 #include <gtest/gtest.h>
 

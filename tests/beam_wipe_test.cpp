@@ -1,8 +1,8 @@
 // Eq. 8 extended (beyond the paper): beams that made no vector update the map vectors they cross.
-#include <gridvector/BeamWipe.h>
-#include <gridvector/GlobalMap.h>
-#include <gridvector/OccupancyConversion.h>
-#include <gridvector/VectorExtractor.h>
+#include "map/BeamWipe.h"
+#include "map/GlobalMap.h"
+#include "map/OccupancyConversion.h"
+#include "extraction/VectorExtractor.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,12 @@
 // gv-bench-log: the same numbers as ../shared/bench/mkbench.py (Python's random
 // module reproduced draw for draw), and the noise model itself.
-#include <gridvector/eval/TrajectoryEval.h>
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/FileBytes.h>
+#include "eval/TrajectoryEval.h"
+#include "io/AtomicFile.h"
+#include "io/FileBytes.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/sim/BenchmarkLog.h>
-#include <gridvector/sim/OdometryNoise.h>
-#include <gridvector/sim/Random.h>
+#include "sim/BenchmarkLog.h"
+#include "sim/OdometryNoise.h"
+#include "sim/Random.h"
 
 #include <gtest/gtest.h>
 

@@ -1,9 +1,9 @@
 // CARMEN reader: real logs, gzip, PARAM handling, beam layout and malformed input.
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/CarmenReader.h>
-#include <gridvector/io/FileBytes.h>
+#include "io/AtomicFile.h"
+#include "io/CarmenReader.h"
+#include "io/FileBytes.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/io/NoReturnRange.h>
+#include "io/NoReturnRange.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/maps/CSimplePointsMap.h>

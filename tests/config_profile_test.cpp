@@ -1,6 +1,6 @@
 // Parameter profiles: gv-em-slam's embedded defaults, where they differ from the library's, and why.
-#include <gridvector/ConfigProfile.h>
-#include <gridvector/EmSlam.h>
+#include "config/ConfigProfile.h"
+#include "em/EmSlam.h"
 #include <gtest/gtest.h>
 
 using namespace gridvector;

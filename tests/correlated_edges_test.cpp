@@ -1,7 +1,7 @@
 // CorrelatedEdges (Eq. 22 with covariance intersection): registrations of one scan against one pass weigh as one.
-#include <gridvector/CorrelatedEdges.h>
-#include <gridvector/PoseGraph.h>
-#include <gridvector/SE2.h>
+#include "posegraph/CorrelatedEdges.h"
+#include "posegraph/PoseGraph.h"
+#include "core/SE2.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Sec. 3.2: the three correspondence criteria.
-#include <gridvector/Correspondence.h>
+#include "map/Correspondence.h"
 
 #include <gtest/gtest.h>
 

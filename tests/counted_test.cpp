@@ -1,5 +1,5 @@
 // io::counted: a count with its noun in the right number ("1 ground-truth pose", not "1 ground-truth poses").
-#include <gridvector/io/Counted.h>
+#include "io/Counted.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // DoorDetector (Sec. 5.4, Fig. 10): hinges from static/dynamic corners.
-#include <gridvector/DoorDetector.h>
+#include "doors/DoorDetector.h"
 
 #include <gtest/gtest.h>
 

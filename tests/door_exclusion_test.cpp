@@ -1,11 +1,11 @@
 // DoorExclusion (Sec. 5.3): doors detected on each E-step's map, their states kept out of the
 // M-step's static children, accumulated over the iterations, Eq. 25's changed children.
-#include <gridvector/DoorExclusion.h>
-#include <gridvector/EmSlam.h>
-#include <gridvector/VectorExtractor.h>
+#include "doors/DoorExclusion.h"
+#include "em/EmSlam.h"
+#include "extraction/VectorExtractor.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/sim/Simulator.h>
-#include <gridvector/sim/TruthFiles.h>
+#include "sim/Simulator.h"
+#include "sim/TruthFiles.h"
 
 #include <gtest/gtest.h>
 

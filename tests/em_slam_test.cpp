@@ -1,7 +1,7 @@
 // EmSlam (Sec. 4): E- and M-steps until no constraint changes; a transient object ends dynamic.
 #include "em_world.h"
 
-#include <gridvector/EmSlam.h>
+#include "em/EmSlam.h"
 
 #include <gtest/gtest.h>
 

@@ -4,9 +4,9 @@
 #pragma once
 
 #include <gridvector/GridVector.h>
-#include <gridvector/SE2.h>
-#include <gridvector/VectorExtractor.h>
-#include <gridvector/VectorMatcher.h>
+#include "core/SE2.h"
+#include "extraction/VectorExtractor.h"
+#include "mstep/VectorMatcher.h"
 
 #include <cmath>
 #include <random>

@@ -1,6 +1,6 @@
 // [GeneralConfiguration] of graphslam-engine .ini files: gv-graphslam's output keys and MRPT's
 // engine keys, read strictly before the engine reads them with read_bool / read_int.
-#include <gridvector/graphslam/EngineOptions.h>
+#include "graphslam/EngineOptions.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>

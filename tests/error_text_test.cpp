@@ -1,4 +1,4 @@
-#include <gridvector/ErrorText.h>
+#include "io/ErrorText.h"
 #include <gtest/gtest.h>
 #include <mrpt/core/exceptions.h>
 

@@ -1,5 +1,5 @@
 // EStep (Sec. 4.1, Eq. 14-15, Fig. 4): profile split-and-merge into static and dynamic children.
-#include <gridvector/EStep.h>
+#include "estep/EStep.h"
 
 #include <gtest/gtest.h>
 

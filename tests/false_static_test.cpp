@@ -1,5 +1,5 @@
 // The false-static breakdown (gv-eval map --breakdown) on a hand-made truth with known answers.
-#include <gridvector/eval/FalseStatic.h>
+#include "eval/FalseStatic.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // Sec. 3.2: global map building, sequential (insertScan) and batch (buildPerScan + mergeAll).
-#include <gridvector/Correspondence.h>
-#include <gridvector/GlobalMap.h>
-#include <gridvector/OccupancyConversion.h>
-#include <gridvector/VectorExtractor.h>
+#include "map/Correspondence.h"
+#include "map/GlobalMap.h"
+#include "map/OccupancyConversion.h"
+#include "extraction/VectorExtractor.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/math/wrap2pi.h>

@@ -1,8 +1,10 @@
 // Grid-vector registration deciders for MRPT's graphslam-engine: options, registry, behaviour.
+#include "graphslam/CGridVectorERD.h"
+#include "graphslam/CGridVectorNRD.h"
 #include <gridvector/graphslam/DeciderRegistry.h>
-#include <gridvector/PoseGraph.h>
-#include <gridvector/graphslam/PoseFusion.h>
-#include <gridvector/graphslam/RunRecorder.h>
+#include "posegraph/PoseGraph.h"
+#include "graphslam/PoseFusion.h"
+#include "graphslam/RunRecorder.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFile.h>

@@ -2,9 +2,10 @@
 // gate, decimation and ratios on a known map; CICP aligning scans against a map
 // built from other scans; dynamic vectors (a door state, a person) left out.
 #include <gridvector/GridVector.h>
-#include <gridvector/SE2.h>
+#include "core/SE2.h"
 #include <gtest/gtest.h>
 #include <mrpt/io/CMemoryStream.h>
+#include "map/GlobalMap.h"
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 #include <mrpt/poses/CPose2D.h>

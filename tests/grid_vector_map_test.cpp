@@ -1,4 +1,4 @@
-#include <gridvector/OccupancyConversion.h>
+#include "map/OccupancyConversion.h"
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 #include <mrpt/io/CMemoryStream.h>

@@ -1,7 +1,7 @@
 // gv-graphslam -g: the ground truth MRPT 2.5's CGraphSlamEngine indexes without bounds checks,
 // checked before the run (empty file, unread format) and followed step by step (short file).
-#include <gridvector/graphslam/GroundTruthIndex.h>
-#include <gridvector/io/AtomicFile.h>
+#include "graphslam/GroundTruthIndex.h"
+#include "io/AtomicFile.h"
 
 #include <mrpt/config/CConfigFileMemory.h>
 

@@ -1,5 +1,5 @@
 // Incidence of the beams that saw a vector (mstep.register_min_incidence_deg).
-#include <gridvector/Incidence.h>
+#include "mstep/Incidence.h"
 
 #include <gtest/gtest.h>
 

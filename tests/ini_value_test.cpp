@@ -1,5 +1,5 @@
 // io::IniValue: the strict .ini value reader shared by GridVectorConfig and CGridVectorMap.
-#include <gridvector/io/IniValue.h>
+#include "io/IniValue.h"
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>
 

@@ -2,7 +2,7 @@
 #include "em_world.h"
 #include "match_world.h"
 
-#include <gridvector/LoopSearch.h>
+#include "mstep/LoopSearch.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/math/wrap2pi.h>

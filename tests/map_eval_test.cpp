@@ -1,7 +1,7 @@
 // Map metrics on synthetic cases with known answers, and the vectors-file reader.
-#include <gridvector/eval/MapEval.h>
-#include <gridvector/eval/SegmentIndex.h>
-#include <gridvector/io/AtomicFile.h>
+#include "eval/MapEval.h"
+#include "eval/SegmentIndex.h"
+#include "io/AtomicFile.h"
 
 #include <gtest/gtest.h>
 

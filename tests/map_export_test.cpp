@@ -1,6 +1,6 @@
 // Exports: ROS map_server PGM/YAML, PNG, SVG, vectors.txt, MRPT .3Dscene; all atomic.
-#include <gridvector/MapExport.h>
-#include <gridvector/OccupancyConversion.h>
+#include "map/MapExport.h"
+#include "map/OccupancyConversion.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/img/CImage.h>

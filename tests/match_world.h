@@ -2,7 +2,7 @@
 // MatchSegments VectorMatcher and LoopSearch consume.
 #pragma once
 
-#include <gridvector/VectorMatcher.h>
+#include "mstep/VectorMatcher.h"
 
 #include <mrpt/math/TPose2D.h>
 

@@ -1,5 +1,5 @@
 // Table 1: memory accounting of the grid vector map.
-#include <gridvector/MemoryAccounting.h>
+#include "map/MemoryAccounting.h"
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
 // Algorithm 2 cascaded: merged with the correspondents, then the merged vector with its own; refusals remembered.
-#include <gridvector/Correspondence.h>
-#include <gridvector/MergeCascade.h>
+#include "map/Correspondence.h"
+#include "map/MergeCascade.h"
 
 #include <gtest/gtest.h>
 

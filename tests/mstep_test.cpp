@@ -2,13 +2,13 @@
 #include "em_world.h"
 #include "match_world.h"
 
-#include <gridvector/EStep.h>
-#include <gridvector/EmSlam.h>
-#include <gridvector/MStep.h>
-#include <gridvector/SE2.h>
-#include <gridvector/VectorExtractor.h>
+#include "estep/EStep.h"
+#include "em/EmSlam.h"
+#include "mstep/MStep.h"
+#include "core/SE2.h"
+#include "extraction/VectorExtractor.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/sim/BenchmarkLog.h>
+#include "sim/BenchmarkLog.h"
 
 #include <gtest/gtest.h>
 

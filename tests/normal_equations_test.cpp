@@ -1,4 +1,4 @@
-#include <gridvector/NormalEquations.h>
+#include "posegraph/NormalEquations.h"
 
 #include <gtest/gtest.h>
 

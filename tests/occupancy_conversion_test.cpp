@@ -1,5 +1,5 @@
 // Eq. 6-7: conversion of the grid vector map to an occupancy grid.
-#include <gridvector/OccupancyConversion.h>
+#include "map/OccupancyConversion.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // io::OutputDirectory: checked before the work, created only to write, removed again if the run wrote nothing.
-#include <gridvector/io/AtomicFile.h>
+#include "io/AtomicFile.h"
 
 #include <gtest/gtest.h>
 

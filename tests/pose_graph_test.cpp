@@ -1,8 +1,8 @@
 // PoseGraph (Eq. 21-22): exact solutions, outlier robustness, both optimisers agree.
 #include "match_world.h"
 
-#include <gridvector/PoseGraph.h>
-#include <gridvector/VectorMatcher.h>
+#include "posegraph/PoseGraph.h"
+#include "mstep/VectorMatcher.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/math/wrap2pi.h>

@@ -1,5 +1,5 @@
 // io::Progress: the progress line's text (stage, percent, ETA).
-#include <gridvector/io/Progress.h>
+#include "io/Progress.h"
 
 #include <gtest/gtest.h>
 

@@ -1,10 +1,10 @@
 // MRPT rawlog reader (both formats, gzip or not) and the CARMEN -> rawlog
 // converter, checked against MRPT's own CRawlog.
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/FileBytes.h>
+#include "io/AtomicFile.h"
+#include "io/FileBytes.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/io/RawlogReader.h>
-#include <gridvector/io/RawlogWriter.h>
+#include "io/RawlogReader.h"
+#include "io/RawlogWriter.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/obs/CActionCollection.h>

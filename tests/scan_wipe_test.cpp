@@ -1,5 +1,5 @@
 // Eq. 8 for one scan: every triangle of the scan over the map, once per cell per scan.
-#include <gridvector/ScanWipe.h>
+#include "map/ScanWipe.h"
 
 #include <gtest/gtest.h>
 

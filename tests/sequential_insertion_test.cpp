@@ -1,8 +1,9 @@
 // Sequential mode (incremental use on a robot): scans inserted one by one into a
 // CGridVectorMap cost O(vectors near the robot), not O(map size).
-#include <gridvector/EStep.h>
+#include "estep/EStep.h"
 
 #include <gtest/gtest.h>
+#include "map/GlobalMap.h"
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPose3D.h>

@@ -2,7 +2,7 @@
 // a CMultiMetricMap declared in an .ini (pf-localization's [MetricMap]) builds a CGridVectorMap.
 #include "test_scans.h"
 
-#include <gridvector/io/RawlogWriter.h>
+#include "io/RawlogWriter.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/config/CConfigFileMemory.h>

@@ -1,12 +1,12 @@
 // gv-sim: determinism, beam labels against the geometry, odometry noisy while
 // the truth is not, output files readable by the project's own readers.
-#include <gridvector/eval/TrajectoryEval.h>
-#include <gridvector/io/AtomicFile.h>
+#include "eval/TrajectoryEval.h"
+#include "io/AtomicFile.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/sim/BuiltinWorlds.h>
-#include <gridvector/sim/OdometryNoise.h>
-#include <gridvector/sim/Simulator.h>
-#include <gridvector/sim/TruthFiles.h>
+#include "sim/BuiltinWorlds.h"
+#include "sim/OdometryNoise.h"
+#include "sim/Simulator.h"
+#include "sim/TruthFiles.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include <gridvector/SparseCholesky.h>
+#include "posegraph/SparseCholesky.h"
 
 #include <Eigen/SparseCholesky>
 #include <gtest/gtest.h>

@@ -1,9 +1,9 @@
 // Trajectory metrics: known answers, timestamp matching, and agreement with
 // ../shared/bench/evaltraj.py on a benchmark made from a real log.
-#include <gridvector/eval/TrajectoryEval.h>
+#include "eval/TrajectoryEval.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/sim/BenchmarkLog.h>
-#include <gridvector/sim/Random.h>
+#include "sim/BenchmarkLog.h"
+#include "sim/Random.h"
 
 #include <gtest/gtest.h>
 

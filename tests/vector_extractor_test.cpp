@@ -1,4 +1,4 @@
-#include <gridvector/VectorExtractor.h>
+#include "extraction/VectorExtractor.h"
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -1,6 +1,6 @@
 // Spatial hash over vector boxes: queries equal brute force through inserts, moves and removals,
 // and stay the same when several threads query at once.
-#include <gridvector/VectorIndex.h>
+#include "map/VectorIndex.h"
 
 #include <gtest/gtest.h>
 

@@ -1,8 +1,8 @@
 // VectorMatcher (Sec. 4.2): registration accuracy, corridor degeneracy, rejection, speed.
 #include "match_world.h"
 
-#include <gridvector/SE2.h>
-#include <gridvector/VectorMatcher.h>
+#include "core/SE2.h"
+#include "mstep/VectorMatcher.h"
 
 #include <Eigen/Eigenvalues>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // Algorithm 2: merging keeps the Eq. 6 posterior and the totals; weighted refit; union extent.
-#include <gridvector/VectorMerger.h>
+#include "map/VectorMerger.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/math/wrap2pi.h>

@@ -1,6 +1,6 @@
 // gridvector::version() and the --version every tool shares through io::runTool.
 #include <gridvector/Version.h>
-#include <gridvector/io/ArgParser.h>
+#include "common/ArgParser.h"
 
 #include <gtest/gtest.h>
 

@@ -1,7 +1,7 @@
 // Eq. 8 over a whole trajectory: the product vector by vector equals ScanWipe scan by scan, bit for bit.
-#include <gridvector/GlobalMap.h>
-#include <gridvector/VectorExtractor.h>
-#include <gridvector/WipeProduct.h>
+#include "map/GlobalMap.h"
+#include "extraction/VectorExtractor.h"
+#include "map/WipeProduct.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // Eq. 8, Fig. 2: wipe triangle parts a/b/c and its region-by-region rasterisation.
-#include <gridvector/WipeTriangle.h>
+#include "map/WipeTriangle.h"
 
 #include <gtest/gtest.h>
 

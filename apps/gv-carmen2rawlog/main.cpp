@@ -1,12 +1,12 @@
 // gv-carmen2rawlog: CARMEN log -> MRPT rawlog with correct timestamps, aperture
 // and max range (a replacement for MRPT 2.5's carmen2rawlog).
-#include <gridvector/io/ArgParser.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/AtomicFile.h>
+#include "common/ArgParser.h"
+#include "io/Counted.h"
+#include "io/AtomicFile.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/io/RawlogWriter.h>
+#include "io/RawlogWriter.h"
 
-#include <gridvector/io/NoReturnRange.h>
+#include "io/NoReturnRange.h"
 
 #include <cstdio>
 #include <iostream>

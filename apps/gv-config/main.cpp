@@ -5,8 +5,8 @@
 //   gv-config --check FILE.ini [--profile NAME]  load and validate a file over the profile (unknown keys are errors)
 //   gv-config --json [--profile NAME]            every key and value as JSON (as report.json records it)
 // Profiles: library (GridVectorConfig{}, the default), em-slam (gv-em-slam's built-in defaults).
-#include <gridvector/ConfigProfile.h>
-#include <gridvector/io/ArgParser.h>
+#include "config/ConfigProfile.h"
+#include "common/ArgParser.h"
 
 #include <iostream>
 #include <string>

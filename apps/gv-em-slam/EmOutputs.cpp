@@ -1,8 +1,9 @@
 #include "EmOutputs.h"
 
 #include <gridvector/Version.h>
-#include <gridvector/io/AtomicFile.h>
+#include "io/AtomicFile.h"
 
+#include "map/GlobalMap.h"
 #include <mrpt/maps/CGridVectorMap.h>
 
 #include <algorithm>

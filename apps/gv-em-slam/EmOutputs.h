@@ -1,9 +1,9 @@
 // gv-em-slam's output files (all written atomically).
 #pragma once
 
-#include <gridvector/DoorDetector.h>
-#include <gridvector/EmSlam.h>
-#include <gridvector/MemoryAccounting.h>
+#include "doors/DoorDetector.h"
+#include "em/EmSlam.h"
+#include "map/MemoryAccounting.h"
 
 #include <string>
 #include <vector>

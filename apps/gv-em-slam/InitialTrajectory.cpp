@@ -1,6 +1,6 @@
 #include "InitialTrajectory.h"
 
-#include <gridvector/SE2.h>
+#include "core/SE2.h"
 
 #include <algorithm>
 #include <cmath>

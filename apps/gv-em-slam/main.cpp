@@ -11,16 +11,16 @@
 #include "EmOutputs.h"
 #include "InitialTrajectory.h"
 
-#include <gridvector/DoorDetector.h>
-#include <gridvector/EmSlam.h>
-#include <gridvector/MapExport.h>
-#include <gridvector/MemoryAccounting.h>
-#include <gridvector/OccupancyConversion.h>
-#include <gridvector/VectorExtractor.h>
-#include <gridvector/io/ArgParser.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/Progress.h>
-#include <gridvector/io/AtomicFile.h>
+#include "doors/DoorDetector.h"
+#include "em/EmSlam.h"
+#include "map/MapExport.h"
+#include "map/MemoryAccounting.h"
+#include "map/OccupancyConversion.h"
+#include "extraction/VectorExtractor.h"
+#include "common/ArgParser.h"
+#include "io/Counted.h"
+#include "io/Progress.h"
+#include "io/AtomicFile.h"
 #include <gridvector/io/LogReader.h>
 
 #include <chrono>

@@ -1,10 +1,10 @@
 // gv-eval: trajectory accuracy (as ../shared/bench/evaltraj.py) and map quality
 // against gv-sim's truth.
-#include <gridvector/eval/FalseStatic.h>
-#include <gridvector/eval/MapEval.h>
-#include <gridvector/eval/TrajectoryEval.h>
-#include <gridvector/io/ArgParser.h>
-#include <gridvector/io/TextParsing.h>
+#include "eval/FalseStatic.h"
+#include "eval/MapEval.h"
+#include "eval/TrajectoryEval.h"
+#include "common/ArgParser.h"
+#include "io/TextParsing.h"
 #include <gridvector/io/LogReader.h>
 
 #include <cstdio>

@@ -3,20 +3,22 @@
 //
 //   gv-graphslam --2d -i INI -r RAWLOG [-g GT] -n CGridVectorNRD -e CGridVectorERD -o CLevMarqGSO
 //   gv-graphslam --list-regs
-#include <gridvector/ErrorText.h>
-#include <gridvector/MapExport.h>
-#include <gridvector/graphslam/DeciderOptions.h>
+#include "io/ErrorText.h"
+#include "map/MapExport.h"
+#include "graphslam/DeciderOptions.h"
+#include "graphslam/CGridVectorERD.h"
+#include "graphslam/CGridVectorNRD.h"
 #include <gridvector/graphslam/DeciderRegistry.h>
-#include <gridvector/graphslam/EngineOptions.h>
-#include <gridvector/graphslam/GroundTruthIndex.h>
-#include <gridvector/graphslam/IniKeys.h>
-#include <gridvector/graphslam/RunRecorder.h>
-#include <gridvector/io/ArgParser.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/FileBytes.h>
-#include <gridvector/io/IniLayout.h>
-#include <gridvector/io/Progress.h>
+#include "graphslam/EngineOptions.h"
+#include "graphslam/GroundTruthIndex.h"
+#include "graphslam/IniKeys.h"
+#include "graphslam/RunRecorder.h"
+#include "common/ArgParser.h"
+#include "io/Counted.h"
+#include "io/AtomicFile.h"
+#include "io/FileBytes.h"
+#include "io/IniLayout.h"
+#include "io/Progress.h"
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/containers/yaml.h>

@@ -3,9 +3,9 @@
 //
 //   gv-map-info MAP.gvmap [--save OUT.gvmap]      (--save rewrites it in the current format version)
 //   gv-map-info --from-simplemap FILE.simplemap [--config FILE.ini] [--save OUT.gvmap]
-#include <gridvector/io/ArgParser.h>
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/ObjectFile.h>
+#include "common/ArgParser.h"
+#include "io/AtomicFile.h"
+#include "io/ObjectFile.h"
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/maps/CSimpleMap.h>
 

@@ -9,15 +9,15 @@
 // vectors.svg, occupancy.png, occupancy.pgm + occupancy.yaml (ROS map_server),
 // map.3Dscene (MRPT viewers) and memory.json (Table 1); with --simplemap also
 // map.simplemap (the scans at their poses: MRPT's pf-localization builds its maps from it).
-#include <gridvector/MapExport.h>
-#include <gridvector/MemoryAccounting.h>
-#include <gridvector/OccupancyConversion.h>
-#include <gridvector/io/ArgParser.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/Progress.h>
+#include "map/MapExport.h"
+#include "map/MemoryAccounting.h"
+#include "map/OccupancyConversion.h"
+#include "common/ArgParser.h"
+#include "io/Counted.h"
+#include "io/AtomicFile.h"
+#include "io/Progress.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/io/RawlogWriter.h>
+#include "io/RawlogWriter.h"
 
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/poses/CPose3D.h>

@@ -2,7 +2,7 @@
 // same world, over the same true poses.
 #pragma once
 
-#include <gridvector/sim/Simulator.h>
+#include "sim/Simulator.h"
 
 /** Seconds MRPT's COccupancyGridMap2D::laserScanSimulator needs for every scan of
  * r (static walls rasterised at 5 cm, same beam count and max range). */

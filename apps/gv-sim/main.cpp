@@ -2,18 +2,18 @@
 // CARMEN log (noisy odometry) and the truth files gv-eval scores against.
 #include "PeerTiming.h"
 
-#include <gridvector/eval/TrajectoryEval.h>
-#include <gridvector/io/ArgParser.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/FileBytes.h>
-#include <gridvector/io/IniLayout.h>
-#include <gridvector/io/IniValue.h>
-#include <gridvector/io/Progress.h>
-#include <gridvector/sim/BuiltinWorlds.h>
-#include <gridvector/sim/SimOptions.h>
-#include <gridvector/sim/Simulator.h>
-#include <gridvector/sim/TruthFiles.h>
+#include "eval/TrajectoryEval.h"
+#include "common/ArgParser.h"
+#include "io/Counted.h"
+#include "io/AtomicFile.h"
+#include "io/FileBytes.h"
+#include "io/IniLayout.h"
+#include "io/IniValue.h"
+#include "io/Progress.h"
+#include "sim/BuiltinWorlds.h"
+#include "sim/SimOptions.h"
+#include "sim/Simulator.h"
+#include "sim/TruthFiles.h"
 
 #include <mrpt/config/CConfigFile.h>
 

@@ -1,6 +1,6 @@
-#include <gridvector/eval/FalseStatic.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/eval/SegmentIndex.h>
+#include "eval/FalseStatic.h"
+#include "io/Counted.h"
+#include "eval/SegmentIndex.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
-#include <gridvector/eval/MapEval.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/eval/SegmentIndex.h>
-#include <gridvector/io/FileBytes.h>
-#include <gridvector/io/TextParsing.h>
+#include "eval/MapEval.h"
+#include "io/Counted.h"
+#include "eval/SegmentIndex.h"
+#include "io/FileBytes.h"
+#include "io/TextParsing.h"
 
 #include <cmath>
 #include <cstdio>

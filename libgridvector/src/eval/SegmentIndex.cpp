@@ -1,4 +1,4 @@
-#include <gridvector/eval/SegmentIndex.h>
+#include "eval/SegmentIndex.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-#include <gridvector/eval/TrajectoryEval.h>
-#include <gridvector/io/Counted.h>
+#include "eval/TrajectoryEval.h"
+#include "io/Counted.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
-#include <gridvector/graphslam/CGridVectorERD.h>
-#include <gridvector/graphslam/RegistrationConfig.h>
-#include <gridvector/graphslam/OdometryTracker.h>
+#include "graphslam/CGridVectorERD.h"
+#include "graphslam/RegistrationConfig.h"
+#include "graphslam/OdometryTracker.h"
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/format.h>

@@ -1,6 +1,6 @@
-#include <gridvector/PoseGraph.h>
-#include <gridvector/graphslam/CGridVectorNRD.h>
-#include <gridvector/graphslam/RegistrationConfig.h>
+#include "posegraph/PoseGraph.h"
+#include "graphslam/CGridVectorNRD.h"
+#include "graphslam/RegistrationConfig.h"
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/format.h>

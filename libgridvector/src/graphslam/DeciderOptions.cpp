@@ -1,5 +1,5 @@
-#include <gridvector/graphslam/DeciderOptions.h>
-#include <gridvector/graphslam/IniKeys.h>
+#include "graphslam/DeciderOptions.h"
+#include "graphslam/IniKeys.h"
 
 #include <sstream>
 #include <type_traits>

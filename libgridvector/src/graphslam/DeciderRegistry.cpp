@@ -1,3 +1,6 @@
+#include "graphslam/CGridVectorERD.h"
+#include "graphslam/CGridVectorNRD.h"
+
 #include <gridvector/graphslam/DeciderRegistry.h>
 
 namespace gridvector::graphslam

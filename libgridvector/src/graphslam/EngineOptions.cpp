@@ -1,5 +1,5 @@
-#include <gridvector/graphslam/EngineOptions.h>
-#include <gridvector/graphslam/IniKeys.h>
+#include "graphslam/EngineOptions.h"
+#include "graphslam/IniKeys.h"
 
 namespace gridvector::graphslam
 {

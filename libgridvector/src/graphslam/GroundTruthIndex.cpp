@@ -1,6 +1,6 @@
-#include <gridvector/graphslam/GroundTruthIndex.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/TextParsing.h>
+#include "graphslam/GroundTruthIndex.h"
+#include "io/Counted.h"
+#include "io/TextParsing.h"
 
 #include <mrpt/system/string_utils.h>
 

@@ -1,4 +1,4 @@
-#include <gridvector/graphslam/OdometryTracker.h>
+#include "graphslam/OdometryTracker.h"
 
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>

@@ -1,5 +1,5 @@
-#include <gridvector/PoseGraph.h>
-#include <gridvector/graphslam/PoseFusion.h>
+#include "posegraph/PoseGraph.h"
+#include "graphslam/PoseFusion.h"
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>

@@ -1,4 +1,4 @@
-#include <gridvector/graphslam/RegistrationConfig.h>
+#include "graphslam/RegistrationConfig.h"
 
 #include <mrpt/system/filesystem.h>
 

@@ -1,4 +1,4 @@
-#include <gridvector/graphslam/RunRecorder.h>
+#include "graphslam/RunRecorder.h"
 
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/system/datetime.h>

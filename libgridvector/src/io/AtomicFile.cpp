@@ -1,4 +1,4 @@
-#include <gridvector/io/AtomicFile.h>
+#include "io/AtomicFile.h"
 
 #include <sys/stat.h>
 #include <unistd.h>

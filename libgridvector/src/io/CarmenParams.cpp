@@ -1,4 +1,4 @@
-#include <gridvector/io/CarmenParams.h>
+#include "io/CarmenParams.h"
 
 #include <cmath>
 #include <string>

@@ -1,10 +1,10 @@
-#include <gridvector/io/CarmenParams.h>
-#include <gridvector/io/CarmenReader.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/FileBytes.h>
-#include <gridvector/io/OdometryTrack.h>
-#include <gridvector/io/Progress.h>
-#include <gridvector/io/TextParsing.h>
+#include "io/CarmenParams.h"
+#include "io/CarmenReader.h"
+#include "io/Counted.h"
+#include "io/FileBytes.h"
+#include "io/OdometryTrack.h"
+#include "io/Progress.h"
+#include "io/TextParsing.h"
 
 #include <mrpt/core/Clock.h>
 #include <mrpt/poses/CPose2D.h>

@@ -1,4 +1,4 @@
-#include <gridvector/io/CarmenWriter.h>
+#include "io/CarmenWriter.h"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include <gridvector/io/Counted.h>
+#include "io/Counted.h"
 
 namespace gridvector::io
 {

@@ -1,4 +1,4 @@
-#include <gridvector/io/FileBytes.h>
+#include "io/FileBytes.h"
 
 #include <mrpt/io/CFileGZInputStream.h>
 

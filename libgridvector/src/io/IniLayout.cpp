@@ -1,5 +1,5 @@
-#include <gridvector/io/IniLayout.h>
-#include <gridvector/io/TextParsing.h>
+#include "io/IniLayout.h"
+#include "io/TextParsing.h"
 
 #include <sstream>
 #include <stdexcept>

@@ -1,5 +1,5 @@
 // Strict .ini values (IniValue.h): one parser for GridVectorConfig and CGridVectorMap's options.
-#include <gridvector/io/IniValue.h>
+#include "io/IniValue.h"
 
 #include <cctype>
 #include <cerrno>

@@ -1,9 +1,9 @@
-#include <gridvector/io/CarmenReader.h>
-#include <gridvector/io/FileBytes.h>
+#include "io/CarmenReader.h"
+#include "io/FileBytes.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/NoReturnRange.h>
-#include <gridvector/io/RawlogReader.h>
+#include "io/Counted.h"
+#include "io/NoReturnRange.h"
+#include "io/RawlogReader.h"
 
 #include <algorithm>
 #include <cstdio>

@@ -1,5 +1,5 @@
 // Sensor max range of a CARMEN log from its readings (the "no return" value, see NoReturnRange.h).
-#include <gridvector/io/NoReturnRange.h>
+#include "io/NoReturnRange.h"
 
 #include <algorithm>
 

@@ -1,7 +1,7 @@
 // Reading one serialized MRPT object from a file (gv-map-info, gv-bench-icp).
-#include <gridvector/ErrorText.h>
-#include <gridvector/io/FileBytes.h>
-#include <gridvector/io/ObjectFile.h>
+#include "io/ErrorText.h"
+#include "io/FileBytes.h"
+#include "io/ObjectFile.h"
 #include <mrpt/io/CFileGZInputStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>

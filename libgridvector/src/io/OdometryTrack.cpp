@@ -1,4 +1,4 @@
-#include <gridvector/io/OdometryTrack.h>
+#include "io/OdometryTrack.h"
 
 #include <mrpt/math/wrap2pi.h>
 

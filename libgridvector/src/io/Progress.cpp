@@ -1,4 +1,4 @@
-#include <gridvector/io/Progress.h>
+#include "io/Progress.h"
 
 #include <unistd.h>
 

@@ -1,9 +1,9 @@
-#include <gridvector/ErrorText.h>
-#include <gridvector/io/FileBytes.h>
-#include <gridvector/io/OdometryTrack.h>
-#include <gridvector/io/Progress.h>
-#include <gridvector/io/RawlogReader.h>
-#include <gridvector/io/Counted.h>
+#include "io/ErrorText.h"
+#include "io/FileBytes.h"
+#include "io/OdometryTrack.h"
+#include "io/Progress.h"
+#include "io/RawlogReader.h"
+#include "io/Counted.h"
 
 #include <mrpt/io/CMemoryStream.h>
 #include <mrpt/maps/registerAllClasses.h>

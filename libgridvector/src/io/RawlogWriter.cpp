@@ -1,5 +1,5 @@
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/RawlogWriter.h>
+#include "io/AtomicFile.h"
+#include "io/RawlogWriter.h"
 
 #include <mrpt/core/Clock.h>
 #include <mrpt/io/CFileGZOutputStream.h>

@@ -1,4 +1,4 @@
-#include <gridvector/io/TextParsing.h>
+#include "io/TextParsing.h"
 
 #include <cerrno>
 #include <charconv>

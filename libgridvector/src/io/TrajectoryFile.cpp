@@ -1,8 +1,8 @@
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/FileBytes.h>
+#include "io/AtomicFile.h"
+#include "io/Counted.h"
+#include "io/FileBytes.h"
 #include <gridvector/io/LogReader.h>
-#include <gridvector/io/TextParsing.h>
+#include "io/TextParsing.h"
 
 #include <algorithm>
 #include <cmath>

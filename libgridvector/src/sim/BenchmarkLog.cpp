@@ -1,9 +1,9 @@
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/CarmenReader.h>
-#include <gridvector/io/FileBytes.h>
-#include <gridvector/io/TextParsing.h>
-#include <gridvector/sim/BenchmarkLog.h>
+#include "io/AtomicFile.h"
+#include "io/Counted.h"
+#include "io/CarmenReader.h"
+#include "io/FileBytes.h"
+#include "io/TextParsing.h"
+#include "sim/BenchmarkLog.h"
 
 #include <cstdio>
 #include <string>

@@ -1,4 +1,4 @@
-#include <gridvector/sim/BuiltinWorlds.h>
+#include "sim/BuiltinWorlds.h"
 
 #include <stdexcept>
 

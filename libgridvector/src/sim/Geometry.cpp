@@ -1,4 +1,4 @@
-#include <gridvector/sim/Geometry.h>
+#include "sim/Geometry.h"
 
 #include <algorithm>
 

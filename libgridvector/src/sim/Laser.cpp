@@ -1,4 +1,4 @@
-#include <gridvector/sim/Laser.h>
+#include "sim/Laser.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include <gridvector/sim/OdometryNoise.h>
+#include "sim/OdometryNoise.h"
 
 #include <cmath>
 

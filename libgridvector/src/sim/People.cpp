@@ -1,4 +1,4 @@
-#include <gridvector/sim/People.h>
+#include "sim/People.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include <gridvector/sim/Random.h>
+#include "sim/Random.h"
 
 #include <cmath>
 #include <vector>

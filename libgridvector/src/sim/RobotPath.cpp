@@ -1,5 +1,5 @@
-#include <gridvector/sim/OdometryNoise.h>
-#include <gridvector/sim/RobotPath.h>
+#include "sim/OdometryNoise.h"
+#include "sim/RobotPath.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
-#include <gridvector/sim/BuiltinWorlds.h>
-#include <gridvector/sim/SimOptions.h>
+#include "sim/BuiltinWorlds.h"
+#include "sim/SimOptions.h"
 
 #include <algorithm>
 #include <cmath>

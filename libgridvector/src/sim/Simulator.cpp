@@ -1,9 +1,9 @@
-#include <gridvector/sim/BuiltinWorlds.h>
-#include <gridvector/sim/OdometryNoise.h>
-#include <gridvector/sim/People.h>
-#include <gridvector/sim/RobotPath.h>
-#include <gridvector/sim/Simulator.h>
-#include <gridvector/sim/WalkGraph.h>
+#include "sim/BuiltinWorlds.h"
+#include "sim/OdometryNoise.h"
+#include "sim/People.h"
+#include "sim/RobotPath.h"
+#include "sim/Simulator.h"
+#include "sim/WalkGraph.h"
 
 #include <algorithm>
 #include <cmath>

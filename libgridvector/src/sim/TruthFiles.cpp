@@ -1,9 +1,9 @@
-#include <gridvector/io/AtomicFile.h>
-#include <gridvector/io/Counted.h>
-#include <gridvector/io/CarmenWriter.h>
-#include <gridvector/io/FileBytes.h>
-#include <gridvector/io/TextParsing.h>
-#include <gridvector/sim/TruthFiles.h>
+#include "io/AtomicFile.h"
+#include "io/Counted.h"
+#include "io/CarmenWriter.h"
+#include "io/FileBytes.h"
+#include "io/TextParsing.h"
+#include "sim/TruthFiles.h"
 
 #include <cstdio>
 #include <filesystem>

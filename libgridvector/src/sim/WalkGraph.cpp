@@ -1,4 +1,4 @@
-#include <gridvector/sim/WalkGraph.h>
+#include "sim/WalkGraph.h"
 
 #include <algorithm>
 #include <cmath>

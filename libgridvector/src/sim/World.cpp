@@ -1,4 +1,4 @@
-#include <gridvector/sim/World.h>
+#include "sim/World.h"
 
 namespace gridvector::sim
 {

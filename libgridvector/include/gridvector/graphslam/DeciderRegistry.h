@@ -1,10 +1,12 @@
 // graphslam-engine's decider/optimizer registry, with the grid-vector deciders added.
 #pragma once
 
-#include <gridvector/graphslam/CGridVectorERD.h>
-#include <gridvector/graphslam/CGridVectorNRD.h>
 
 #include <mrpt/config/CConfigFile.h>  // MRPT 2.5's decider headers use it without including it
+#include <mrpt/graphs/CNetworkOfPoses.h>
+// before TUserOptionsChecker.h: MRPT 2.5's loop-closer header needs what these bring in
+#include <mrpt/graphslam/interfaces/CEdgeRegistrationDecider.h>
+#include <mrpt/graphslam/interfaces/CNodeRegistrationDecider.h>
 #include <mrpt/graphslam/apps_related/TUserOptionsChecker.h>
 
 namespace gridvector::graphslam

@@ -1,15 +1,22 @@
 // gridvector: the grid vector map (Wang, Xiong, Chu 2011) as an MRPT metric map.
 #pragma once
 
-#include <gridvector/GlobalMap.h>
+#include <gridvector/GridVector.h>
 #include <gridvector/GridVectorConfig.h>
-#include <gridvector/StaticStretchCache.h>
-#include <gridvector/VectorExtractor.h>
+#include <gridvector/LocalScan.h>
 
 #include <mrpt/config/CLoadableOptions.h>
 #include <mrpt/maps/COccupancyGridMap2D.h>
 #include <mrpt/maps/CMetricMap.h>
 #include <mrpt/obs/CObservation2DRangeScan.h>
+
+#include <memory>
+#include <vector>
+
+namespace gridvector
+{
+class GlobalMap;  // the library's internals (libgridvector/src/map/GlobalMap.h)
+}
 
 namespace mrpt::maps
 {
@@ -47,6 +54,11 @@ class CGridVectorMap : public CMetricMap
 
    public:
 	explicit CGridVectorMap(const gridvector::GridVectorConfig& cfg = {});
+	CGridVectorMap(const CGridVectorMap& o);
+	CGridVectorMap(CGridVectorMap&& o);
+	CGridVectorMap& operator=(const CGridVectorMap& o);
+	CGridVectorMap& operator=(CGridVectorMap&& o) noexcept;
+	~CGridVectorMap() override;
 
 	/** Parameters of computeObservationLikelihood(): a likelihood field over
 	 * the vectors, each weighted by its occupancy. */
@@ -62,10 +74,12 @@ class CGridVectorMap : public CMetricMap
 	} likelihoodOptions;
 
 	// --- access ---
-	const gridvector::GlobalMap& globalMap() const { return map_; }
-	gridvector::GlobalMap& globalMap() { return map_; }
-	const std::vector<gridvector::GridVector>& vectors() const { return map_.vectors(); }
-	const gridvector::GridVectorConfig& config() const { return map_.config(); }
+	/** The map's internals (the library's own code, its tests and apps). */
+	const gridvector::GlobalMap& globalMap() const;
+	gridvector::GlobalMap& globalMap();
+	/** The map's vectors, world frame (state, p_static and the cells in each). */
+	const std::vector<gridvector::GridVector>& vectors() const;
+	const gridvector::GridVectorConfig& config() const;
 	void setConfig(const gridvector::GridVectorConfig& cfg);
 	size_t insertedScans() const { return insertedScans_; }
 
@@ -126,11 +140,11 @@ class CGridVectorMap : public CMetricMap
 		const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const override;
 	bool internal_canComputeObservationLikelihood(const mrpt::obs::CObservation& obs) const override;
 
-	gridvector::GlobalMap map_;
-	gridvector::VectorExtractor extractor_;
+	/** The global map, the extractor and the matching calls' static stretches (kept while the
+	 * map does not change: GlobalMap::revision()); libgridvector/src/mrpt/CGridVectorMapImpl.h. */
+	struct Impl;
+	std::unique_ptr<Impl> impl_;
 	size_t insertedScans_ = 0;
-	/** The matching calls' static stretches while the map does not change (map_.revision()). */
-	gridvector::StaticStretchCache stretches_;
 };
 
 }  // namespace mrpt::maps

@@ -1,0 +1,198 @@
+// CGridVectorMap: serialization (versioned) and text/SVG representation.
+#include "map/MapExport.h"
+#include "io/AtomicFile.h"
+#include <mrpt/io/CFileGZOutputStream.h>
+#include "mrpt/CGridVectorMapImpl.h"
+#include <mrpt/maps/CGridVectorMap.h>
+#include <mrpt/serialization/CArchive.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <stdexcept>
+
+using namespace mrpt::maps;
+using gridvector::GridCell;
+using gridvector::GridVector;
+
+IMPLEMENTS_SERIALIZABLE(CGridVectorMap, CMetricMap, mrpt::maps)
+
+namespace
+{
+// Version 0 (frozen): the key count, then every config value in visit() order.
+uint32_t countKeys(const gridvector::GridVectorConfig& cfg) { return uint32_t(cfg.namedValues().size()); }
+
+gridvector::GridVectorConfig readConfigV0(mrpt::serialization::CArchive& in)
+{
+	gridvector::GridVectorConfig c;
+	uint32_t nkeys = 0;
+	in >> nkeys;
+	const uint32_t expected = countKeys(c);
+	if (nkeys != expected)
+		throw std::runtime_error("CGridVectorMap: stored config has " + std::to_string(nkeys) +
+								 " keys, this version expects " + std::to_string(expected) +
+								 " (a version-0 .gvmap stores its config by position)");
+	c.visitGroups([&](const char*, auto& g) {
+		g.visit([&](const char*, auto& field, const char*) { in >> field; });
+	});
+	return c;
+}
+
+// Version 1: (name, value) pairs, "group.key" as a uint8 length + bytes, the value as a double.
+constexpr uint32_t kMaxStoredKeys = 4096;
+
+void writeConfigV1(mrpt::serialization::CArchive& out, const gridvector::GridVectorConfig& cfg)
+{
+	const auto named = cfg.namedValues();
+	out << uint32_t(named.size());
+	for (const auto& [name, value] : named)
+	{
+		if (name.size() > 255) throw std::logic_error("CGridVectorMap: config key longer than 255 bytes: " + name);
+		out << uint8_t(name.size());
+		out.WriteBuffer(name.data(), name.size());
+		out << value;
+	}
+}
+
+// Keys missing from the stream keep their defaults; a key this version does not know is an error.
+gridvector::GridVectorConfig readConfigV1(mrpt::serialization::CArchive& in)
+{
+	gridvector::GridVectorConfig c;
+	uint32_t nkeys = 0;
+	in >> nkeys;
+	if (nkeys > kMaxStoredKeys)
+		throw std::runtime_error("CGridVectorMap: corrupt config record (" + std::to_string(nkeys) + " keys)");
+	for (uint32_t k = 0; k < nkeys; ++k)
+	{
+		uint8_t len = 0;
+		in >> len;
+		std::string name(len, '\0');
+		in.ReadBuffer(name.data(), len);
+		double value = 0;
+		in >> value;
+		for (char ch : name)
+			if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '.'))
+				throw std::runtime_error("CGridVectorMap: corrupt config record (key " + std::to_string(k) + ")");
+		bool known = false;
+		try
+		{
+			known = c.setNamedValue(name, value);
+		}
+		catch (const std::invalid_argument& e)
+		{
+			throw std::runtime_error(std::string("CGridVectorMap: stored config: ") + e.what());
+		}
+		if (!known)
+			throw std::runtime_error("CGridVectorMap: stored config key '" + name +
+									 "' is unknown to this version of gridvector (map written by a newer version?)");
+	}
+	try
+	{
+		c.validate();
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(std::string("CGridVectorMap: stored config: ") + e.what());
+	}
+	return c;
+}
+
+bool finite(const mrpt::math::TPoint2D& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+// The cells of one vector, read in chunks so that a corrupt column count fails at the end
+// of the data instead of allocating what it claims.
+std::vector<GridCell> readCells(mrpt::serialization::CArchive& in, size_t count)
+{
+	constexpr size_t kChunk = 1 << 16;
+	std::vector<GridCell> cells;
+	for (size_t done = 0; done < count;)
+	{
+		const size_t n = std::min(kChunk, count - done);
+		cells.resize(done + n);
+		in.ReadBuffer(cells.data() + done, n * sizeof(GridCell));
+		done += n;
+	}
+	return cells;
+}
+
+}  // namespace
+
+uint8_t CGridVectorMap::serializeGetVersion() const { return 1; }
+
+void CGridVectorMap::serializeTo(mrpt::serialization::CArchive& out) const
+{
+	writeConfigV1(out, impl_->map.config());
+	out << likelihoodOptions.sigma << likelihoodOptions.maxCorrDistance << likelihoodOptions.zRandom
+		<< int32_t(likelihoodOptions.decimation);
+	out << uint64_t(insertedScans_) << uint64_t(impl_->map.size());
+	for (const auto& v : impl_->map.vectors())
+	{
+		out << v.start().x << v.start().y << v.end().x << v.end().y;
+		out << int32_t(v.cols()) << int64_t(v.scanIndex) << v.timestamp << v.id << uint8_t(v.state)
+			<< v.mergedCount;
+		out.WriteBuffer(v.cells().data(), v.cells().size() * sizeof(GridCell));
+	}
+	out << genericMapParams;
+}
+
+// Versions 0 and 1 differ only in the config record; the rest is the same.
+void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version)
+{
+	if (version > 1) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+	const gridvector::GridVectorConfig cfg = version == 0 ? readConfigV0(in) : readConfigV1(in);
+	int32_t decimation = 1;
+	in >> likelihoodOptions.sigma >> likelihoodOptions.maxCorrDistance >> likelihoodOptions.zRandom >>
+		decimation;
+	likelihoodOptions.decimation = decimation;
+	uint64_t scans = 0, n = 0;
+	in >> scans >> n;
+	std::vector<GridVector> vectors;
+	vectors.reserve(size_t(std::min<uint64_t>(n, 1 << 16)));
+	for (uint64_t i = 0; i < n; ++i)
+	{
+		mrpt::math::TPoint2D s, e;
+		int32_t cols = 0;
+		int64_t scanIndex = 0;
+		uint8_t state = 0;
+		double t = 0;
+		uint64_t id = 0;
+		uint32_t merged = 1;
+		in >> s.x >> s.y >> e.x >> e.y >> cols >> scanIndex >> t >> id >> state >> merged;
+		// (the GridVector constructor sizes a grid from the length before fromParts replaces it)
+		const double lengthInCells = std::hypot(e.x - s.x, e.y - s.y) / cfg.grid.resolution;
+		if (cols < 1 || cols > 10'000'000 || state > 2 || !finite(s) || !finite(e) || !(lengthInCells < 1e6))
+			throw std::runtime_error("CGridVectorMap: corrupt vector record " + std::to_string(i));
+		std::vector<GridCell> cells = readCells(in, size_t(cfg.grid.halfWidth * 2 + 1) * size_t(cols));
+		GridVector v = GridVector::fromParts(s, e, cfg.grid, cols, std::move(cells));
+		v.scanIndex = scanIndex;
+		v.timestamp = t;
+		v.id = id;
+		v.state = gridvector::VectorState(state);
+		v.mergedCount = merged;
+		vectors.push_back(std::move(v));
+	}
+	in >> genericMapParams;
+	impl_->map.clear();
+	setConfig(cfg);
+	impl_->map.setVectors(std::move(vectors));
+	insertedScans_ = size_t(scans);
+}
+
+void CGridVectorMap::saveToFile(const std::string& path) const
+{
+	gridvector::io::AtomicFile f(path, gridvector::io::AtomicFile::Mode::External);
+	{
+		mrpt::io::CFileGZOutputStream gz;
+		if (!gz.open(f.tempPath())) throw std::runtime_error(path + ": cannot write");
+		auto a = mrpt::serialization::archiveFrom(gz);
+		a << *this;
+	}
+	f.commit();
+}
+
+void CGridVectorMap::saveMetricMapRepresentationToFile(const std::string& prefix) const
+{
+	gridvector::MapExport::writeVectorsText(impl_->map.vectors(), prefix + "_vectors.txt");
+	gridvector::MapExport::writeSvg(impl_->map.vectors(), prefix + "_vectors.svg");
+	gridvector::MapExport::writePng(getAsOccupancyGrid(), prefix + "_occupancy.png");
+}

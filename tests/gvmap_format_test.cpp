@@ -168,6 +168,14 @@ TEST(GvmapFormat, KeysMissingFromTheFileTakeTheirDefaults)
 	EXPECT_DOUBLE_EQ(m.likelihoodOptions.sigma, 0.07);
 }
 
+TEST(GvmapFormat, RetiredKeysOfEarlierVersionsLoadAndAreIgnored)
+{
+	mrpt::io::CMemoryStream buf;
+	writeVersion1(buf, {{"grid.resolution", 0.2}, {"estep.hysteresis", 0.1}, {"map.wipe_vectorless_beams", 1}});
+	const CGridVectorMap m = load(buf);
+	EXPECT_DOUBLE_EQ(m.config().grid.resolution, 0.2);
+}
+
 TEST(GvmapFormat, UnknownKeyIsAnErrorNamingTheKey)
 {
 	mrpt::io::CMemoryStream buf;
@@ -269,5 +277,46 @@ TEST(GvmapFormat, TruncatedGzipFileIsAnError)
 	auto a = mrpt::serialization::archiveFrom(f);
 	CGridVectorMap m;
 	EXPECT_THROW(a >> m, std::exception);
+	mrpt::system::deleteFile(path);
+}
+
+TEST(GvmapFormat, LoadFromFileReadsWhatSaveToFileWrote)
+{
+	const std::string path = mrpt::system::getTempFileName() + ".gvmap";
+	CGridVectorMap saved = mapOfRoom();
+	saved.likelihoodOptions.sigma = 0.08;
+	saved.saveToFile(path);
+	CGridVectorMap loaded;
+	loaded.loadFromFile(path);
+	EXPECT_EQ(loaded.insertedScans(), saved.insertedScans());
+	EXPECT_EQ(loaded.likelihoodOptions.sigma, 0.08);
+	EXPECT_EQ(loaded.config().namedValues(), saved.config().namedValues());
+	ASSERT_EQ(loaded.vectors().size(), saved.vectors().size());
+	for (size_t i = 0; i < saved.vectors().size(); ++i)
+	{
+		EXPECT_EQ(loaded.vectors()[i].start().x, saved.vectors()[i].start().x);
+		EXPECT_EQ(loaded.vectors()[i].end().y, saved.vectors()[i].end().y);
+		EXPECT_EQ(loaded.vectors()[i].cells().size(), saved.vectors()[i].cells().size());
+	}
+	mrpt::system::deleteFile(path);
+}
+
+TEST(GvmapFormat, LoadFromFileFailureLeavesTheMapAsItWas)
+{
+	CGridVectorMap m = mapOfRoom();
+	const size_t before = m.vectors().size();
+	try
+	{
+		m.loadFromFile("/no/such/map.gvmap");
+		FAIL() << "a missing file loaded";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_NE(std::string(e.what()).find("/no/such/map.gvmap"), std::string::npos) << e.what();
+	}
+	const std::string path = mrpt::system::getTempFileName() + ".gvmap";
+	std::ofstream(path) << "not a map";
+	EXPECT_THROW(m.loadFromFile(path), std::runtime_error);
+	EXPECT_EQ(m.vectors().size(), before);
 	mrpt::system::deleteFile(path);
 }

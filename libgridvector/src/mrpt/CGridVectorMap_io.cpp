@@ -1,6 +1,7 @@
 // CGridVectorMap: serialization (versioned) and text/SVG representation.
 #include "map/MapExport.h"
 #include "io/AtomicFile.h"
+#include "io/ObjectFile.h"
 #include <mrpt/io/CFileGZOutputStream.h>
 #include "mrpt/CGridVectorMapImpl.h"
 #include <mrpt/maps/CGridVectorMap.h>
@@ -9,7 +10,9 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <set>
 #include <stdexcept>
+#include <string>
 
 using namespace mrpt::maps;
 using gridvector::GridCell;
@@ -54,7 +57,20 @@ void writeConfigV1(mrpt::serialization::CArchive& out, const gridvector::GridVec
 	}
 }
 
-// Keys missing from the stream keep their defaults; a key this version does not know is an error.
+// Keys of earlier versions that are gone: deleted, or named constants now. A map written with one
+// loads; its value is not used (the map's vectors are what they were; new scans follow this version).
+const std::set<std::string>& retiredKeys()
+{
+	static const std::set<std::string> keys = {
+		"map.wipe_vectorless_beams", "estep.hysteresis", "matcher.degenerate_projection",
+		"matcher.angle_rotation_seeds", "posegraph.correlated_group_gap", "posegraph.correlated_group_rho",
+		"mstep.register_min_incidence_deg", "mstep.loop_search_candidate_spacing",
+		"doors.closed_leaf_hidden_ends", "doors.closed_leaf_to_latch"};
+	return keys;
+}
+
+// Keys missing from the stream keep their defaults; a retired key is skipped; a key this version
+// does not know is an error.
 gridvector::GridVectorConfig readConfigV1(mrpt::serialization::CArchive& in)
 {
 	gridvector::GridVectorConfig c;
@@ -73,6 +89,7 @@ gridvector::GridVectorConfig readConfigV1(mrpt::serialization::CArchive& in)
 		for (char ch : name)
 			if (!(std::isalnum(static_cast<unsigned char>(ch)) || ch == '_' || ch == '.'))
 				throw std::runtime_error("CGridVectorMap: corrupt config record (key " + std::to_string(k) + ")");
+		if (retiredKeys().count(name)) continue;
 		bool known = false;
 		try
 		{
@@ -188,6 +205,13 @@ void CGridVectorMap::saveToFile(const std::string& path) const
 		a << *this;
 	}
 	f.commit();
+}
+
+void CGridVectorMap::loadFromFile(const std::string& path)
+{
+	CGridVectorMap loaded;
+	gridvector::io::readObjectFile(path, loaded);
+	*this = std::move(loaded);
 }
 
 void CGridVectorMap::saveMetricMapRepresentationToFile(const std::string& prefix) const

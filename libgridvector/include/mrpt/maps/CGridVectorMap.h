@@ -97,6 +97,11 @@ class CGridVectorMap : public CMetricMap
 	/** Writes the serialized map, gzip-compressed (a `.gvmap`), atomically;
 	 * throws std::runtime_error("path: cannot write ..."). */
 	void saveToFile(const std::string& path) const;
+	/** Replaces this map by the one saveToFile() wrote at `path` (gzip-compressed or not): its
+	 * configuration, likelihood options, vectors and scan count. Throws std::runtime_error
+	 * ("path: no such file", "path: not a valid mrpt::maps::CGridVectorMap file (why)", ...) and
+	 * leaves this map unchanged on any error. */
+	void loadFromFile(const std::string& path);
 	std::string asString() const override;
 	/** Vectors as line segments coloured by p_static (blue static .. red dynamic). */
 	void getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const override;

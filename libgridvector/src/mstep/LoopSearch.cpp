@@ -14,6 +14,22 @@ using mrpt::math::TPose2D;
 namespace
 {
 constexpr double kDeg = M_PI / 180.0;
+/** Corners only from static vectors this long [m]: shorter ones give directions too noisy to turn by. */
+constexpr double kCornerMinLength = 0.3;
+/** A corner's two vectors differ in direction by at least this [deg] (else their lines meet ill-defined). */
+constexpr double kCornerMinAngleDeg = 30.0;
+/** ... and their lines meet within this of both segments [m] (a corner of the place, not of two far walls). */
+constexpr double kCornerMaxGap = 1.0;
+/** Two scans' corners pair into a hypothesis when their turns agree within this [deg] (extraction noise). */
+constexpr double kCornerTurnToleranceDeg = 10.0;
+/** Hypotheses closer than this [m] and turned less than kDuplicateDeg are one (the matcher refines both alike). */
+constexpr double kDuplicateDistance = 0.1;
+constexpr double kDuplicateDeg = 2.0;
+/** Hypotheses are ranked by the length matched under the final matcher gates widened by this (they are not refined yet). */
+constexpr double kScoreGateFactor = 2.0;
+/** Refined solutions further apart than this [m] or turned more than kDistinctDeg are distinct places (aliasing). */
+constexpr double kDistinctDistance = 0.3;
+constexpr double kDistinctDeg = 5.0;
 inline double wrap(double a) { return mrpt::math::wrapToPi(a); }
 
 // Indices of the `n` longest segments at least `minLength` long.
@@ -43,10 +59,10 @@ LoopSearch::LoopSearch(const MatcherOptions& matcher, const MStepOptions& opts)
 {
 }
 
-// Corners: two long vectors at least 30 deg apart whose lines meet near both.
+// Corners: two long vectors at least kCornerMinAngleDeg apart whose lines meet near both.
 std::vector<LoopSearch::Corner> LoopSearch::corners(const std::vector<MatchSegment>& s) const
 {
-	const auto idx = longest(s, size_t(std::max(2, opts_.loopSearchVectors)), opts_.loopCornerMinLength);
+	const auto idx = longest(s, size_t(std::max(2, opts_.loopSearchVectors)), kCornerMinLength);
 	std::vector<Corner> out;
 	for (size_t i = 0; i < idx.size(); ++i)
 		for (size_t j = 0; j < idx.size(); ++j)
@@ -55,12 +71,12 @@ std::vector<LoopSearch::Corner> LoopSearch::corners(const std::vector<MatchSegme
 			const MatchSegment &u = s[idx[i]], &v = s[idx[j]];
 			const Vector2d du = (u.e - u.s).normalized(), dv = (v.e - v.s).normalized();
 			const double cross = du.x() * dv.y() - du.y() * dv.x();
-			if (std::abs(cross) < std::sin(opts_.loopCornerMinAngleDeg * kDeg)) continue;
+			if (std::abs(cross) < std::sin(kCornerMinAngleDeg * kDeg)) continue;
 			// u.s + a du = v.s + b dv
 			const Vector2d w = v.s - u.s;
 			const double a = (w.x() * dv.y() - w.y() * dv.x()) / cross;
 			const Vector2d p = u.s + a * du;
-			if (toSegment(p, u.s, u.e) > opts_.loopCornerMaxGap || toSegment(p, v.s, v.e) > opts_.loopCornerMaxGap)
+			if (toSegment(p, u.s, u.e) > kCornerMaxGap || toSegment(p, v.s, v.e) > kCornerMaxGap)
 				continue;
 			Corner c;
 			c.p = p;
@@ -84,7 +100,7 @@ std::vector<TPose2D> LoopSearch::hypotheses(const std::vector<MatchSegment>& a,
 	};
 	std::vector<Scored> cand{{prior, 0}};
 	const auto ca = corners(a), cb = corners(b);
-	const double turnTol = opts_.loopCornerTurnToleranceDeg * kDeg;
+	const double turnTol = kCornerTurnToleranceDeg * kDeg;
 	for (const Corner& A : ca)
 		for (const Corner& B : cb)
 		{
@@ -96,15 +112,15 @@ std::vector<TPose2D> LoopSearch::hypotheses(const std::vector<MatchSegment>& a,
 			if (std::hypot(t.x() - prior.x, t.y() - prior.y) > w.translation) continue;
 			bool dup = false;
 			for (const Scored& h : cand)
-				if (std::hypot(h.pose.x - t.x(), h.pose.y - t.y()) < opts_.loopDuplicateDistance &&
-					std::abs(wrap(h.pose.phi - phi)) < opts_.loopDuplicateDeg * kDeg)
+				if (std::hypot(h.pose.x - t.x(), h.pose.y - t.y()) < kDuplicateDistance &&
+					std::abs(wrap(h.pose.phi - phi)) < kDuplicateDeg * kDeg)
 				{
 					dup = true;
 					break;
 				}
 			if (!dup) cand.push_back({TPose2D(t.x(), t.y(), phi), 0});
 		}
-	const MatchGates gates = matcher_.finalGates(opts_.loopScoreGateFactor);
+	const MatchGates gates = matcher_.finalGates(kScoreGateFactor);
 	for (Scored& h : cand) h.score = matcher_.correspondences(a, b, h.pose, gates, nullptr);
 	std::stable_sort(cand.begin(), cand.end(), [](const Scored& x, const Scored& y) { return x.score > y.score; });
 	std::vector<TPose2D> out;
@@ -140,8 +156,8 @@ std::vector<MatchResult> LoopSearch::solutions(const std::vector<MatchSegment>& 
 bool LoopSearch::ambiguous(const MatchResult& best, const std::vector<MatchResult>& others) const
 {
 	for (const MatchResult& r : others)
-		if ((std::hypot(r.pose.x - best.pose.x, r.pose.y - best.pose.y) > opts_.loopSearchDistinct ||
-			 std::abs(wrap(r.pose.phi - best.pose.phi)) > opts_.loopDistinctDeg * kDeg) &&
+		if ((std::hypot(r.pose.x - best.pose.x, r.pose.y - best.pose.y) > kDistinctDistance ||
+			 std::abs(wrap(r.pose.phi - best.pose.phi)) > kDistinctDeg * kDeg) &&
 			r.matchedLength >= opts_.loopSearchAmbiguity * best.matchedLength)
 			return true;
 	return false;

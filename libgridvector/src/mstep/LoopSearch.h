@@ -49,7 +49,7 @@ class LoopSearch
    private:
 	std::vector<MatchResult> solutions(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b,
 									   const mrpt::math::TPose2D& prior, const LoopWindow& w) const;
-	/** Does a distinct solution (loop_search_distinct away) match at least
+	/** Does a distinct solution (kDistinctDistance / kDistinctDeg away) match at least
 	 * loop_search_ambiguity of best's length? (aliasing: repeated doors, corridors) */
 	bool ambiguous(const MatchResult& best, const std::vector<MatchResult>& others) const;
 	struct Corner

@@ -1,0 +1,68 @@
+// Sec. 4.3, Eq. 24-25: the registration edges with what decides whether each is still valid —
+// the scans' signatures of their static children M_chd, the failed pairs, the replaced weak edges.
+#pragma once
+
+#include "mstep/Constraint.h"
+
+#include <gridvector/GridVectorConfig.h>
+
+#include <map>
+
+namespace gridvector
+{
+/** A failed pair is retried once its relative pose moved this share of the matcher's final gates (a smaller move
+ * repeats the same registration). */
+constexpr double kMovedGateShare = 0.5;
+
+/** The edges of the pose graph besides odometry, keyed (from, to), and their Eq. 24-25 bookkeeping. */
+class ConstraintSet
+{
+   public:
+	explicit ConstraintSet(const MatcherOptions& matcher) : matcher_(matcher) {}
+
+	std::map<EdgeKey, Constraint> edges;
+	std::map<EdgeKey, Constraint> replaced;  //!< weak edges a loop edge replaced, until it is verified
+
+	/** Start of an M-step: the ids whose M_chd the last E-step changed (sorted per scan; null: none) and the
+	 * scans' signatures from them. */
+	void beginStep(const Scans& scans, const std::vector<std::vector<uint64_t>>* changedChildren);
+
+	/** A constraint from a registration, stamped with both scans' signatures. */
+	Constraint make(const EdgeKey& key, EdgeKind kind, const MatchResult& r, const mrpt::math::TPose2D& checkedAt) const;
+	/** Eq. 25: the static children of both scans (their ids) as when the edge was registered? */
+	bool sameScans(const Constraint& c) const;
+	/** Eq. 25, Fig. 5: does a correspondence of the edge involve a vector whose children changed? */
+	bool childrenChanged(const Constraint& c) const;
+	/** The edge checked again at `rel` with both scans unchanged: re-stamped. */
+	void confirm(Constraint& c, const mrpt::math::TPose2D& rel) const;
+
+	/** A registered pair into the graph (no longer failed). */
+	void keep(const EdgeKey& key, Constraint c, MStepReport& rep);
+	/** A pair whose registration failed or was dropped, retried when something changed (retry()). */
+	void fail(const EdgeKey& key, const mrpt::math::TPose2D& rel);
+	/** Retry a failed registration? (poses moved or static vectors changed) */
+	bool retry(const EdgeKey& key, const mrpt::math::TPose2D& rel) const;
+	/** Has a relative pose moved enough since a failed attempt to retry it? */
+	bool movedSince(const mrpt::math::TPose2D& before, const mrpt::math::TPose2D& now) const;
+	/** Is there an edge (j, i) with j in [jlo, jhi]? */
+	bool hasEdgeNear(uint32_t i, uint32_t jlo, uint32_t jhi) const;
+
+	/** Per scan: signature of its static children (ids and the E-steps that changed one). */
+	const std::vector<uint64_t>& signatures() const { return sigs_; }
+
+   private:
+	void signScans(const Scans& scans);
+
+	MatcherOptions matcher_;
+	struct Failure
+	{
+		mrpt::math::TPose2D rel;  //!< relative pose tried
+		uint64_t sigFrom = 0, sigTo = 0;
+	};
+	std::map<EdgeKey, Failure> failed_;  //!< failed registrations, retried when something changed
+	std::vector<uint64_t> sigs_;  //!< per scan: signature of its static children (signScans)
+	std::vector<uint64_t> childChanges_;  //!< per scan: E-steps that changed one of its static children
+	std::vector<std::vector<uint64_t>> changed_;  //!< per scan: sorted ids whose M_chd changed
+};
+
+}  // namespace gridvector

@@ -1,0 +1,176 @@
+#include "mstep/LoopClosure.h"
+#include "mstep/Consistency.h"
+#include "mstep/PassFinder.h"
+#include "core/SE2.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridvector
+{
+using mrpt::math::TPose2D;
+
+LoopClosure::LoopClosure(const GridVectorConfig& cfg, ConstraintSet& book, const ProgressFn& progress)
+	: cfg_(cfg), book_(book), progress_(progress), loops_(cfg.matcher, cfg.mstep)
+{
+}
+
+void LoopClosure::setOdometry(const Poses& odometry)
+{
+	path_.assign(odometry.size(), 0.0);
+	for (size_t t = 1; t < odometry.size(); ++t) path_[t] = path_[t - 1] + se2::distance(odometry[t - 1], odometry[t]);
+}
+
+// Was pose i searched against a pose j of [jlo, jhi] from (nearly) the same relative pose?
+bool LoopClosure::searchedNear(uint32_t i, uint32_t jlo, uint32_t jhi, const Poses& poses) const
+{
+	for (auto it = searched_.lower_bound({jlo, 0}); it != searched_.end() && it->first.first <= jhi; ++it)
+	{
+		if (it->first.second != i) continue;
+		const TPose2D rel = se2::relative(poses[it->first.first], poses[i]);
+		if (se2::distance(it->second, rel) < kSearchedNearDistance &&
+			std::abs(mrpt::math::wrapToPi(it->second.phi - rel.phi)) < kSearchedNearDeg * M_PI / 180)
+			return true;
+	}
+	return false;
+}
+
+// Beyond the paper (Sec. 5.1: no loop detection): the loop-search window from the odometry model along the path.
+LoopWindow LoopClosure::windowOf(uint32_t from, uint32_t to) const
+{
+	const auto& o = cfg_.posegraph;
+	const double len = path_[to] - path_[from];
+	const double k = cfg_.mstep.loopSearchSigmas;
+	const double R = cfg_.mstep.loopSearchMaxRadius;
+	LoopWindow w;
+	w.translation = std::clamp(k * o.odometrySigmaXYPerM * len, std::min(kLoopWindowMinTranslation, R), R);
+	const double sr = o.odometrySigmaPhiPerM * len + o.odometrySigmaPhi * std::sqrt(double(to - from));
+	w.rotation = std::clamp(k * sr, kLoopWindowMinRotationDeg * M_PI / 180, M_PI);
+	return w;
+}
+
+// An overlap edge of this M-step not verified yet links the places only provisionally: verifyOverlaps may
+// still drop it, and then no edge would join the passes whose loop search it spared.
+LoopClosure::Link LoopClosure::linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi,
+									  const std::vector<EdgeKey>& unverified) const
+{
+	Link link = Link::None;
+	auto it = book_.edges.lower_bound({jlo, 0});
+	for (; it != book_.edges.end() && it->first.first <= jhi; ++it)
+	{
+		if (it->first.second < ilo || it->first.second > ihi || !fixesPlace(it->second)) continue;
+		if (std::find(unverified.begin(), unverified.end(), it->first) == unverified.end()) return Link::Verified;
+		link = Link::Unverified;
+	}
+	return link;
+}
+
+// A corridor-degenerate edge leaves the position along the corridor open, a rejected one
+// says nothing: with loop_search_weak_links such links do not spare a pair the loop search.
+bool LoopClosure::fixesPlace(const Constraint& c) const
+{
+	return !cfg_.mstep.loopSearchWeakLinks || (!c.rejected && c.degeneracy >= cfg_.matcher.degenerateRatio);
+}
+
+MatchResult LoopClosure::searchPair(const Scans& vectors, uint32_t j, uint32_t i, const Poses& poses,
+									MStepReport& rep) const
+{
+	++rep.registrations;
+	MatchResult r = loops_.search(vectors[j], vectors[i], se2::relative(poses[j], poses[i]), windowOf(j, i));
+	if (!r.ok()) ++rep.failedRegistrations;
+	return r;
+}
+
+bool LoopClosure::relabelled(uint32_t t, const Scans& scans) const
+{
+	auto length = [](const std::vector<MatchSegment>& s) {
+		double l = 0;
+		for (const auto& m : s) l += m.length;
+		return l;
+	};
+	return length(scans[t]) < length(all_[t]) - 1e-6;
+}
+
+// Loop search: for each pose, every earlier pass within the window (its pose nearest in view)
+// that no edge links to the pose's neighbourhood yet.
+std::vector<EdgeKey> LoopClosure::search(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& added,
+										 MStepReport& rep, std::vector<EdgeKey>* deferred,
+										 const std::vector<EdgeKey>* only)
+{
+	std::vector<EdgeKey> fresh;
+	const double R = cfg_.mstep.loopSearchMaxRadius;
+	if (!cfg_.mstep.loopSearch || R <= 0) return fresh;
+	const uint32_t gap = uint32_t(std::max(1, cfg_.mstep.sequentialWindow));
+	const uint32_t K = uint32_t(std::max(1, cfg_.mstep.overlapRunGap));
+	PassFinder finder(R, cfg_.mstep.passHeadingWeight);
+	std::vector<Constraint> found;
+	for (uint32_t i = 0; i < scans.size(); ++i)
+	{
+		reportProgress(progress_, "loop search", i, scans.size());
+		const auto& passes = finder.next(i, poses, gap, K, [&](uint32_t j) {
+			return se2::distance(poses[i], poses[j]) < windowOf(j, i).translation;
+		});
+		if (scans[i].empty()) continue;
+		for (const auto& p : passes)
+		{
+			if (only && std::find(only->begin(), only->end(), EdgeKey{p.nearest, i}) == only->end()) continue;
+			const Link link = linked(p.lo > K ? p.lo - K : 0, p.hi + K, i > K ? i - K : 0, i, added);
+			if (link == Link::Verified || (link == Link::Unverified && !deferred)) continue;
+			if (searchedNear(i, p.lo, p.hi, poses)) continue;
+			if (link == Link::Unverified)
+			{
+				deferred->push_back({p.nearest, i});  // searched if verifyOverlaps drops the edge
+				continue;
+			}
+			const uint32_t j = p.nearest;
+			searched_[{j, i}] = se2::relative(poses[j], poses[i]);
+			++rep.loopSearches;
+			MatchResult best = searchPair(scans, j, i, poses, rep);
+			if (!best.ok() && cfg_.mstep.loopSearchAllVectors && all_.size() == scans.size() &&
+				(relabelled(i, scans) || relabelled(j, scans)))
+				best = searchPair(all_, j, i, poses, rep);  // what the E-step made dynamic too
+			if (best.ok()) found.push_back(book_.make({j, i}, EdgeKind::Loop, best, se2::relative(poses[j], poses[i])));
+		}
+	}
+	return keep(found, added, rep);
+}
+
+std::vector<EdgeKey> LoopClosure::keep(std::vector<Constraint>& found, const std::vector<EdgeKey>& added,
+									   MStepReport& rep)
+{
+	std::vector<EdgeKey> fresh;
+	// added after the search, so that every pose near a found loop is searched too
+	// (its neighbours' edges then support it in verifyOverlaps)
+	for (Constraint& c : found)
+	{
+		const EdgeKey key{c.from, c.to};
+		auto old = book_.edges.find(key);
+		if (old != book_.edges.end())  // a weak edge of the same pair: replaced unless unverified
+		{
+			if (std::find(added.begin(), added.end(), key) == added.end())
+			{
+				book_.replaced[key] = std::move(old->second);
+				++rep.recomputed;
+				fresh.push_back(key);
+			}  // (else an overlap edge added in this step, already to be verified)
+			old->second = std::move(c);
+			continue;
+		}
+		fresh.push_back(key);
+		book_.edges[key] = std::move(c);
+		++rep.added;
+	}
+	return fresh;
+}
+
+// The order of the M-step: overlap edges, loop search, verifyOverlaps; a loop search that an overlap edge of
+// this step deferred runs now, where verifyOverlaps dropped the edge, and its edges are verified in turn.
+void LoopClosure::searchDeferred(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& deferred,
+								 MStepReport& rep)
+{
+	if (deferred.empty()) return;
+	const auto found = search(scans, poses, {}, rep, nullptr, &deferred);
+	verifyOverlaps(book_, cfg_.mstep, poses, found, rep);
+}
+
+}  // namespace gridvector

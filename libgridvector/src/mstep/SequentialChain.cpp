@@ -1,0 +1,91 @@
+#include "mstep/SequentialChain.h"
+#include "core/SE2.h"
+
+#include <Eigen/Cholesky>
+
+#include <algorithm>
+#include <cmath>
+
+namespace gridvector
+{
+using Eigen::Matrix3d;
+using Eigen::Vector3d;
+using mrpt::math::TPose2D;
+
+namespace
+{
+// Information of a relative measurement expressed in the frame of `frame` (rotated to the world).
+Matrix3d toWorld(const Matrix3d& info, double framePhi)
+{
+	Matrix3d R = Matrix3d::Identity();
+	R.topLeftCorner<2, 2>() << std::cos(framePhi), -std::sin(framePhi), std::sin(framePhi), std::cos(framePhi);
+	return R * info * R.transpose();
+}
+}  // namespace
+
+// First M-step: register each scan against its predecessors, chaining the fused poses.
+void SequentialChain::chain(const Scans& scans, Poses& poses, MStepReport& rep) const
+{
+	const size_t n = scans.size();
+	poses.assign(n, TPose2D(0, 0, 0));
+	if (n == 0) return;
+	poses[0] = odometry_[0];
+	for (size_t i = 1; i < n; ++i)
+	{
+		reportProgress(progress_, "sequential registration", i, n);
+		const TPose2D odo = se2::relative(odometry_[i - 1], odometry_[i]);
+		const TPose2D guess0 = se2::compose(poses[i - 1], odo);
+		// information-weighted fusion of the predictions, linearised at the odometry guess
+		Matrix3d sumI = toWorld(PoseGraph::odometryInformation(odo, cfg_.posegraph), poses[i - 1].phi);
+		Vector3d sumIx = Vector3d::Zero();
+		TPose2D guess = guess0;
+		const size_t lo = i > size_t(cfg_.mstep.sequentialWindow) ? i - cfg_.mstep.sequentialWindow : 0;
+		for (size_t j = i; j-- > lo;)
+		{
+			Constraint c;
+			if (!registerChained(uint32_t(j), uint32_t(i), scans, se2::relative(poses[j], guess), c, rep)) continue;
+			const TPose2D est = se2::compose(poses[j], c.z);
+			const Matrix3d Iw = toWorld(c.information, poses[j].phi);
+			const Vector3d d(est.x - guess0.x, est.y - guess0.y, mrpt::math::wrapToPi(est.phi - guess0.phi));
+			sumI += Iw;
+			sumIx += Iw * d;
+			const Vector3d x = sumI.ldlt().solve(sumIx);
+			guess = TPose2D(guess0.x + x.x(), guess0.y + x.y(), mrpt::math::wrapToPi(guess0.phi + x.z()));
+			book_.edges[{uint32_t(j), uint32_t(i)}] = std::move(c);
+			++rep.added;
+		}
+		poses[i] = guess;
+	}
+}
+
+// A sequential pair of the first M-step from the chained guess, else (mstep.sequential_odometry_guess) from the
+// odometry between its scans: a guess that does not pass through the predecessors' registered poses.
+bool SequentialChain::registerChained(uint32_t j, uint32_t i, const Scans& scans, const TPose2D& chained, Constraint& c,
+									  MStepReport& rep) const
+{
+	if (reg_.registerPair(j, i, EdgeKind::Sequential, scans, chained, c, rep)) return true;
+	if (!cfg_.mstep.sequentialOdometryGuess) return false;
+	const TPose2D odo = se2::relative(odometry_[j], odometry_[i]);
+	return book_.movedSince(chained, odo) && reg_.registerPair(j, i, EdgeKind::Sequential, scans, odo, c, rep);
+}
+
+// Later M-steps: sequential pairs not (or no longer) in the graph are retried.
+void SequentialChain::addMissing(const Scans& scans, const Poses& poses, MStepReport& rep) const
+{
+	const size_t w = size_t(std::max(1, cfg_.mstep.sequentialWindow));
+	for (size_t i = 1; i < scans.size(); ++i)
+		for (size_t j = i > w ? i - w : 0; j < i; ++j)
+		{
+			const EdgeKey key{uint32_t(j), uint32_t(i)};
+			if (book_.edges.count(key)) continue;
+			const TPose2D rel = se2::relative(poses[j], poses[i]);
+			if (!book_.retry(key, rel)) continue;
+			Constraint c;
+			if (reg_.registerPair(key.first, key.second, EdgeKind::Sequential, scans, rel, c, rep))
+				book_.keep(key, std::move(c), rep);
+			else
+				book_.fail(key, rel);
+		}
+}
+
+}  // namespace gridvector

@@ -1,3 +1,4 @@
+#include "posegraph/CeresSolve.h"
 #include "posegraph/NormalEquations.h"
 #include "posegraph/PoseGraph.h"
 #include "posegraph/SparseCholesky.h"
@@ -11,6 +12,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
 
 namespace gridvector
 {
@@ -21,7 +24,7 @@ constexpr int kGraduationIterations = 8;  // LM steps per graduation stage befor
 constexpr double kGraduationTolerance = 1e-3;  // relative cost change ending a stage before the last
 constexpr double kTolerance = 1e-6;  // relative cost change ending the last stage and each re-optimisation
 constexpr double kLmInitialLambda = 1e-4;  // LM damping at each stage's start: nearly Gauss-Newton from a good start
-constexpr double kLmMinLambda = 1e-9;  // Nielsen's update never damps below this (keeps H + lambda I factorisable)
+constexpr double kLmMinLambda = 1e-9;  // Nielsen's update never damps below this: a floor far under any H diagonal
 constexpr double kLmMaxLambda = 1e8;  // a stage gives up once rejected steps raised the damping this far (steps ~0)
 }  // namespace
 
@@ -243,6 +246,14 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 	OptimizeStats st;
 	const size_t n = nodes_.size();
 	if (n < 2) return st;
+	static const bool ceres = std::getenv("GV_POSEGRAPH_SOLVER") && !std::strcmp(std::getenv("GV_POSEGRAPH_SOLVER"), "ceres");
+	if (ceres)  // experiment: the same stage by Ceres
+	{
+		st.initialError = updateResiduals(nodes_, true);
+		st.iterations = solveWithCeres(nodes_, edges_, levelsByDof(phi_), true, maxIterations, minRelativeDecrease);
+		st.finalError = updateResiduals(nodes_, true);
+		return st;
+	}
 	auto col = [](uint32_t node) { return int(node) * 3 - 3; };  // node 0 is fixed
 	std::vector<std::pair<uint32_t, uint32_t>> pairs;  // H's pattern: fixed while the active edges are
 	std::vector<const PoseEdge*> active;

@@ -1,4 +1,3 @@
-#include "posegraph/CeresSolve.h"
 #include "posegraph/NormalEquations.h"
 #include "posegraph/PoseGraph.h"
 #include "posegraph/SparseCholesky.h"
@@ -12,8 +11,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
-#include <cstring>
 
 namespace gridvector
 {
@@ -246,14 +243,6 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 	OptimizeStats st;
 	const size_t n = nodes_.size();
 	if (n < 2) return st;
-	static const bool ceres = std::getenv("GV_POSEGRAPH_SOLVER") && !std::strcmp(std::getenv("GV_POSEGRAPH_SOLVER"), "ceres");
-	if (ceres)  // experiment: the same stage by Ceres
-	{
-		st.initialError = updateResiduals(nodes_, true);
-		st.iterations = solveWithCeres(nodes_, edges_, levelsByDof(phi_), true, maxIterations, minRelativeDecrease);
-		st.finalError = updateResiduals(nodes_, true);
-		return st;
-	}
 	auto col = [](uint32_t node) { return int(node) * 3 - 3; };  // node 0 is fixed
 	std::vector<std::pair<uint32_t, uint32_t>> pairs;  // H's pattern: fixed while the active edges are
 	std::vector<const PoseEdge*> active;

@@ -54,7 +54,9 @@ struct OptimizeStats
  * optimize_graph_spa_levmarq; both then deactivate edges whose chi2 stays
  * above reject_chi2 and re-optimise. The paper minimises Eq. 22 by stochastic
  * gradient descent (Eq. 23) on a tree parameterisation (Sec. 4.3); a sparse
- * Cholesky step solves the same least-squares problem exactly. */
+ * Cholesky step solves the same least-squares problem exactly. Ceres' Levenberg-Marquardt on the
+ * same residuals, kernel and graduation was no more accurate and 3-10x slower in the optimiser
+ * (doc/benchmarks-history.md), so the built-in one stays. */
 class PoseGraph
 {
    public:

@@ -18,6 +18,12 @@ using mrpt::math::TPose2D;
 namespace
 {
 constexpr double kDeg = M_PI / 180.0;
+constexpr int kMaxIterations = 25;  // the gates reach their final values in 5 iterations; Gauss-Newton then converges in a few
+constexpr double kGateShrink = 0.7;  // the gates' factor per iteration: final (0.12 m, 6 deg) from initial (0.6 m, 20 deg) in 5
+constexpr double kSigmaFloor = 0.03;  // residual std. dev. floor [m]: a perfect fit must not claim more than the laser's noise
+constexpr double kConvergenceTranslation = 1e-4;  // a step under 0.1 mm: far below the laser's noise [m]
+constexpr double kConvergenceRotation = 1e-5;  // ... and under 0.0006 deg [rad]
+constexpr double kRobustScaleGateShare = 0.5;  // Cauchy scale = half the current line-offset gate: a pair at the gate weighs 1/5
 inline double wrap(double a) { return mrpt::math::wrapToPi(a); }
 inline Vector2d leftOf(const Vector2d& d) { return {-d.y(), d.x()}; }
 }  // namespace
@@ -32,17 +38,6 @@ const char* toString(MatchStatus s)
 		case MatchStatus::Degenerate: return "degenerate";
 	}
 	return "?";
-}
-
-// Schur complement of the information onto the directions independent of u = (along, 0).
-Matrix3d marginaliseTranslation(const Matrix3d& information, const Vector2d& along)
-{
-	const Vector3d u(along.x(), along.y(), 0.0);
-	const Vector3d Iu = information * u;
-	const double uIu = u.dot(Iu);
-	if (!(uIu > 0)) return information;  // u already unconstrained
-	Matrix3d out = information - Iu * Iu.transpose() / uIu;
-	return 0.5 * (out + out.transpose());
 }
 
 MatchSegment MatchSegment::from(const GridVector& v)
@@ -77,7 +72,7 @@ MatchGates VectorMatcher::finalGates(double factor) const
 // Gates start wide and shrink geometrically to their final values.
 MatchGates VectorMatcher::gatesAt(int iteration) const
 {
-	const double k = std::pow(std::clamp(opts_.gateShrink, MatcherOptions::kMinGateShrink, 1.0), iteration);
+	const double k = std::pow(kGateShrink, iteration);
 	MatchGates g;
 	g.psi = std::max(opts_.gatePsiFinalDeg, opts_.gatePsiInitialDeg * k) * kDeg;
 	g.rho = std::max(opts_.gateRhoFinal, opts_.gateRhoInitial * k);
@@ -249,7 +244,7 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 	Vector3d g;
 	double sumW = 0, sumWr2 = 0;
 	int it = 0;
-	for (; it < opts_.maxIterations; ++it)
+	for (; it < kMaxIterations; ++it)
 	{
 		const MatchGates gates = gatesAt(it);
 		transformB(b, T);
@@ -257,11 +252,9 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 		if (int(pairs_.size()) < opts_.minMatches) break;
 		for (Pair& p : pairs_) p.weight = 1.0;
 		const bool tight = gates.rho <= fin.rho + 1e-12 && gates.psi <= fin.psi + 1e-12;
-		// rotation from weighted angle differences (matcher.angle_rotation_seeds: only while the gates tighten)
-		const double dphi = opts_.angleRotationSeeds && tight ? 0.0 : rotateAboutMatchedCentre(T);
+		const double dphi = rotateAboutMatchedCentre(T);  // rotation from weighted angle differences
 		// joint Gauss-Newton step on point-to-line distances (translation and rotation)
-		normalEquations(b, T, std::max(opts_.sigmaFloor, opts_.robustScaleGateShare * gates.rho), H, g, sumW,
-						sumWr2);
+		normalEquations(b, T, std::max(kSigmaFloor, kRobustScaleGateShare * gates.rho), H, g, sumW, sumWr2);
 		const double damp = 1e-6 * std::max(1e-12, H.trace());
 		Vector3d delta = -(H + damp * Matrix3d::Identity()).ldlt().solve(g);
 		if (!delta.allFinite()) break;
@@ -269,8 +262,8 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 		T.x += delta.x();
 		T.y += delta.y();
 		T.phi = wrap(T.phi + delta.z());
-		if (tight && delta.head<2>().norm() < opts_.convergenceTranslation &&
-			std::abs(delta.z()) + std::abs(dphi) < opts_.convergenceRotation)
+		if (tight && delta.head<2>().norm() < kConvergenceTranslation &&
+			std::abs(delta.z()) + std::abs(dphi) < kConvergenceRotation)
 		{
 			++it;
 			break;
@@ -282,7 +275,7 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 	transformB(b, T);
 	gather(fin);
 	for (Pair& p : pairs_) p.weight = 1.0;
-	normalEquations(b, T, opts_.sigmaFloor, H, g, sumW, sumWr2);
+	normalEquations(b, T, kSigmaFloor, H, g, sumW, sumWr2);
 	double totalA = 0, totalB = 0;
 	for (const auto& s : a) totalA += s.length;
 	for (const auto& s : b) totalB += s.length;
@@ -294,7 +287,7 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 	std::sort(res.pairs.begin(), res.pairs.end());
 	res.matchedShare = std::min(1.0, res.matchedLength / std::max(1e-9, std::min(totalA, totalB)));
 	res.rms = sumW > 0 ? std::sqrt(sumWr2 / sumW) : 0;
-	const double var = std::max(opts_.sigmaFloor * opts_.sigmaFloor, res.rms * res.rms);
+	const double var = std::max(kSigmaFloor * kSigmaFloor, res.rms * res.rms);
 	res.information = H / var;
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(H.topLeftCorner<2, 2>());
 	const double lmax = es.eigenvalues()(1);
@@ -303,14 +296,7 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
 	// crosswise lines) is where wrong associations slide: its information falls
 	// off quadratically below degenerate_ratio of the strongest direction.
 	const double eps = opts_.degenerateRatio;
-	const bool weak = eps > 0 && res.translationDegeneracy < eps && lmax > 0;
-	if (weak && opts_.degenerateProjection)
-	{
-		// what the registration observes: nothing along the weak direction, all else as measured
-		res.information = marginaliseTranslation(res.information, es.eigenvectors().col(0));
-		res.dof = 2;
-	}
-	else if (weak)
+	if (eps > 0 && res.translationDegeneracy < eps && lmax > 0)
 	{
 		const double k = std::sqrt(res.translationDegeneracy / eps);  // information x k^2
 		const Eigen::Vector2d v = es.eigenvectors().col(0);

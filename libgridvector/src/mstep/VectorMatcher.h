@@ -54,8 +54,8 @@ struct MatchResult
 	double matchedShare = 0;  //!< matchedLength / shorter scan's total length (<= 1)
 	double rms = 0;  //!< length-weighted RMS point-to-line residual [m]
 	double translationDegeneracy = 1;  //!< smallest / largest eigenvalue of the translation block
-	/** Degrees of freedom `information` constrains: 3, or 2 when the weak translation
-	 * direction was marginalised out (matcher.degenerate_projection). */
+	/** Degrees of freedom `information` constrains (the pose graph's kernel and chi2 test
+	 * compare an edge's chi2 at its own dof): always 3, the weak direction is scaled down. */
 	int dof = 3;
 	int iterations = 0;
 	bool ok() const { return status == MatchStatus::Ok; }
@@ -69,12 +69,6 @@ struct MatchGates
 	double minOverlap = 0.1;  //!< overlap along the line [m]
 };
 
-/** The information of (x, y, phi) with the pure translation along `along` (a unit vector)
- * marginalised out: I - I u u^T I / (u^T I u), u = (along, 0), so that I' u = 0 and what
- * I says about every direction independent of u is kept (the weak direction of a corridor
- * match, which a rotation about the earlier scan's origin is coupled to). */
-Eigen::Matrix3d marginaliseTranslation(const Eigen::Matrix3d& information, const Eigen::Vector2d& along);
-
 /** Registers the static vectors of two scans.
  *
  * Each iteration: transform B by the current estimate; correspondences by the
@@ -82,9 +76,7 @@ Eigen::Matrix3d marginaliseTranslation(const Eigen::Matrix3d& information, const
  * than half the summed lengths) with gates that start wide and tighten;
  * rotation from the overlap-weighted angle differences; then a Gauss-Newton
  * step on point-to-line distances of the overlap-clipped segments (integrated
- * exactly along each segment by Simpson's rule) with Cauchy weights. With
- * matcher.angle_rotation_seeds the angle step only seeds (while the gates
- * tighten) and the Gauss-Newton step alone iterates to its fixed point.
+ * exactly along each segment by Simpson's rule) with Cauchy weights.
  * One workspace per matcher, written by its const members: one matcher per
  * thread. MStep, LoopSearch and the graphslam deciders each own one and call it
  * from the one thread that drives them; CGridVectorMap's const members use none.

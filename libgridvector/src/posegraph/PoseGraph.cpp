@@ -1,4 +1,3 @@
-#include "posegraph/CorrelatedEdges.h"
 #include "posegraph/NormalEquations.h"
 #include "posegraph/PoseGraph.h"
 #include "posegraph/SparseCholesky.h"
@@ -15,6 +14,17 @@
 
 namespace gridvector
 {
+namespace
+{
+constexpr double kGraduationPercentile = 95.0;  // a start fits when 19 of 20 registrations fit (a few outliers may not)
+constexpr int kGraduationIterations = 8;  // LM steps per graduation stage before the last: each stage only follows the kernel
+constexpr double kGraduationTolerance = 1e-3;  // relative cost change ending a stage before the last
+constexpr double kTolerance = 1e-6;  // relative cost change ending the last stage and each re-optimisation
+constexpr double kLmInitialLambda = 1e-4;  // LM damping at each stage's start: nearly Gauss-Newton from a good start
+constexpr double kLmMinLambda = 1e-9;  // Nielsen's update never damps below this: a floor far under any H diagonal
+constexpr double kLmMaxLambda = 1e8;  // a stage gives up once rejected steps raised the damping this far (steps ~0)
+}  // namespace
+
 using Eigen::Matrix3d;
 using Eigen::Vector3d;
 using mrpt::math::TPose2D;
@@ -112,7 +122,7 @@ double PoseGraph::updateResiduals(const std::vector<TPose2D>& x, bool robust)
 	{
 		if (!e.active) continue;
 		const Vector3d r = error(x[e.from], x[e.to], e.z);
-		e.chi2 = e.share * r.dot(e.information * r);
+		e.chi2 = r.dot(e.information * r);
 		e.scale = 1;
 		const double phi = phiByDof[std::clamp(e.dof, 1, 3)];
 		if (robust && e.kind != EdgeKind::Odometry && phi > 0)
@@ -132,19 +142,11 @@ size_t PoseGraph::rejectOutliers()
 	return n;
 }
 
-// Each edge's share of its correlated group among the active edges (1 with the key off).
-void PoseGraph::updateShares()
-{
-	const std::vector<double> w = correlatedEdgeWeights(edges_, opts_.correlatedGroupGap, opts_.correlatedGroupRho);
-	for (size_t k = 0; k < edges_.size(); ++k) edges_[k].share = w[k];
-}
-
 // Eq. 22 (robust kernel and chi2 rejection beyond the paper) by the built-in LM or MRPT's, in place of Eq. 23.
 OptimizeStats PoseGraph::optimize()
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	phi_ = opts_.robustKernelWidth;
-	updateShares();
 	OptimizeStats st = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
 	// Iterative edge rejection by chi2, then re-optimisation from the robust solution.
 	for (int round = 0; round < opts_.rejectRounds; ++round)
@@ -153,10 +155,9 @@ OptimizeStats PoseGraph::optimize()
 		const size_t rej = rejectOutliers();
 		if (!rej) break;
 		st.rejected += rej;
-		updateShares();  // a group that lost members is shared by fewer
 		phi_ = opts_.robustKernelWidth;
 		const OptimizeStats again =
-			opts_.useMrptOptimizer ? optimizeMrpt() : levenbergMarquardt(opts_.maxIterations, opts_.tolerance);
+			opts_.useMrptOptimizer ? optimizeMrpt() : levenbergMarquardt(opts_.maxIterations, kTolerance);
 		st.iterations += again.iterations;
 		st.finalError = again.finalError;
 	}
@@ -187,7 +188,7 @@ OptimizeStats PoseGraph::optimizeGaussNewton()
 	double pct = 0;  // the chi2 at graduation_percentile
 	if (!chi.empty())
 	{
-		auto k = chi.begin() + long(double(chi.size()) * opts_.graduationPercentile / 100);
+		auto k = chi.begin() + long(double(chi.size()) * kGraduationPercentile / 100);
 		k = std::min(k, chi.end() - 1);
 		std::nth_element(chi.begin(), k, chi.end());
 		pct = *k;
@@ -197,8 +198,8 @@ OptimizeStats PoseGraph::optimizeGaussNewton()
 	{
 		phi_ = phi;
 		const bool last = phi <= target;
-		const OptimizeStats s = levenbergMarquardt(last ? opts_.maxIterations : opts_.graduationIterations,
-												   last ? opts_.tolerance : opts_.graduationTolerance);
+		const OptimizeStats s = levenbergMarquardt(last ? opts_.maxIterations : kGraduationIterations,
+												   last ? kTolerance : kGraduationTolerance);
 		if (first) st.initialError = s.initialError, first = false;
 		st.iterations += s.iterations;
 		st.finalError = s.finalError;
@@ -231,7 +232,7 @@ void linearise(const std::vector<TPose2D>& x, const std::vector<const PoseEdge*>
 		A(2, 2) = -1;
 		B.topLeftCorner<2, 2>() = RzT * RiT;
 		B(2, 2) = 1;
-		eq.add(k, A, B, e.scale * e.scale * e.share * e.information, r);
+		eq.add(k, A, B, e.scale * e.scale * e.information, r);
 	}
 }
 }  // namespace
@@ -250,7 +251,7 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 	NormalEquations eq(n, pairs);
 	SparseCholesky solver;
 	solver.analyze(eq.H());
-	double lambda = opts_.lmInitialLambda, nu = 2;
+	double lambda = kLmInitialLambda, nu = 2;
 	double err = updateResiduals(nodes_, true);
 	st.initialError = err;
 	bool linearised = false;  // H and b are at nodes_ (a rejected step changes only lambda)
@@ -278,7 +279,7 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 			const double rel = (err - cerr) / std::max(1e-12, err);
 			const double predicted = dx.dot(lambda * dx - eq.b());  // r^T W r minus the linear model's
 			const double rho = predicted > 0 ? (err - cerr) / predicted : 1;
-			lambda = std::max(opts_.lmMinLambda, lambda * std::max(1.0 / 3, 1 - std::pow(2 * rho - 1, 3)));
+			lambda = std::max(kLmMinLambda, lambda * std::max(1.0 / 3, 1 - std::pow(2 * rho - 1, 3)));
 			nu = 2;
 			nodes_.swap(cand);
 			err = cerr;
@@ -291,7 +292,7 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 			// converged as for an accepted step: the cost changes by less than the tolerance
 			if ((cerr - err) / std::max(1e-12, err) < minRelativeDecrease) break;
 			lambda *= nu, nu *= 2;
-			if (lambda > opts_.lmMaxLambda) break;
+			if (lambda > kLmMaxLambda) break;
 		}
 	}
 	st.finalError = err;
@@ -308,7 +309,7 @@ mrpt::graphs::CNetworkOfPoses2DInf PoseGraph::toMrpt(bool activeOnly) const
 		if (activeOnly && !e.active) continue;
 		mrpt::math::CMatrixDouble33 inf;
 		for (int r = 0; r < 3; ++r)
-			for (int c = 0; c < 3; ++c) inf(r, c) = e.share * e.information(r, c);
+			for (int c = 0; c < 3; ++c) inf(r, c) = e.information(r, c);
 		g.insertEdge(e.from, e.to, mrpt::poses::CPosePDFGaussianInf(mrpt::poses::CPose2D(e.z), inf));
 	}
 	return g;

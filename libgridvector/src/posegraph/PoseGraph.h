@@ -37,10 +37,6 @@ struct PoseEdge
 	bool active = true;  //!< false once rejected by its residual
 	double chi2 = 0;  //!< e^T Omega e at the last optimisation
 	double scale = 1;  //!< robust (DCS) scale at the last optimisation
-	/** Its share of the evidence of its group of correlated registrations (correlatedEdgeWeights,
-	 * posegraph.correlated_group_gap; 1: independent): the optimiser uses share x information,
-	 * and chi2 is taken with it. */
-	double share = 1;
 };
 
 struct OptimizeStats
@@ -56,10 +52,11 @@ struct OptimizeStats
  * built-in sparse Gauss-Newton/Levenberg-Marquardt (CHOLMOD supernodal LL^T,
  * dynamic covariance scaling on registration edges) or with MRPT's
  * optimize_graph_spa_levmarq; both then deactivate edges whose chi2 stays
- * above reject_chi2 and re-optimise. With posegraph.correlated_group_gap, registrations
- * that share a scan count as one piece of evidence (CorrelatedEdges.h). The paper minimises Eq. 22 by stochastic
+ * above reject_chi2 and re-optimise. The paper minimises Eq. 22 by stochastic
  * gradient descent (Eq. 23) on a tree parameterisation (Sec. 4.3); a sparse
- * Cholesky step solves the same least-squares problem exactly. */
+ * Cholesky step solves the same least-squares problem exactly. Ceres' Levenberg-Marquardt on the
+ * same residuals, kernel and graduation was no more accurate and 3-10x slower in the optimiser
+ * (doc/benchmarks-history.md), so the built-in one stays. */
 class PoseGraph
 {
    public:
@@ -101,7 +98,6 @@ class PoseGraph
 	OptimizeStats optimizeMrpt();
 	double updateResiduals(const std::vector<mrpt::math::TPose2D>& x, bool robust);
 	size_t rejectOutliers();
-	void updateShares();
 
 	PoseGraphOptions opts_;
 	std::vector<mrpt::math::TPose2D> nodes_;

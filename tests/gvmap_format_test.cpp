@@ -198,7 +198,7 @@ TEST(GvmapFormat, Version0LoadsWhenItsKeyCountMatches)
 		c.map.wipeCountsBeams = false;
 		beginObject(a, 0);
 		a << uint32_t(c.namedValues().size() + extraKeys);
-		c.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto& field, const char*) { a << field; }); });
+		c.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto& field, const char*, const gridvector::Range&) { a << field; }); });
 		writeRest(a, 3);
 		endObject(a);
 	};

@@ -725,7 +725,7 @@ FirstMStep benchmarkFirstMStep(const std::string& log, int seed, const GridVecto
 
 AcesSeed8 acesSeed8FirstMStep(bool reregisterMoved)
 {
-	GridVectorConfig cfg = EmSlam::defaultConfig();
+	GridVectorConfig cfg;
 	cfg.mstep.overlapReregisterMoved = reregisterMoved;
 	cfg.matcher.stepWithinGates = false;  // the re-registration alone (gv-em-slam's profile has these on)
 	cfg.mstep.sequentialOdometryGuess = false;  // (with it the chain has 149-309 right and no alias to redo)
@@ -779,7 +779,7 @@ TEST(MStep, ASequentialPairFailedFromTheChainedGuessIsTriedFromTheOdometry)
 {
 	ASSERT_FALSE(MStepOptions{}.sequentialOdometryGuess);
 	auto intoScan43 = [](bool on) {
-		GridVectorConfig cfg = EmSlam::defaultConfig();
+		GridVectorConfig cfg;
 		cfg.mstep.sequentialOdometryGuess = on;
 		const FirstMStep a = benchmarkFirstMStep("csail", 8, cfg);
 		std::vector<double> errDeg;  // sequential edges (j, 43): heading error against the reference
@@ -899,7 +899,7 @@ TEST(MStep, AVectorSeenOnlyAlongItsLineDoesNotPlaceARegistration)
 {
 	ASSERT_EQ(MStepOptions{}.registerMinIncidenceDeg, 0.0);
 	auto aliased = [](double minDeg) {
-		GridVectorConfig cfg = EmSlam::defaultConfig();
+		GridVectorConfig cfg;
 		cfg.mstep.registerMinIncidenceDeg = minDeg;
 		const FirstMStep a = emFirstMStep("intel", 8, cfg);
 		size_t n = 0;  // active edges from the pass beside the wall into the corridor pass, > 0.15 m off

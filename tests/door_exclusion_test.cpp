@@ -67,7 +67,7 @@ std::vector<uint64_t> flat(const std::vector<std::vector<uint64_t>>& ids)
 
 TEST(DoorExclusion, ALeafKeptStaticByEq6IsKeptOutOfTheMStep)
 {
-	GridVectorConfig cfg = EmSlam::defaultConfig();
+	GridVectorConfig cfg;
 	const EStep estep(cfg.estep, cfg.grid);
 	DoorExclusion ex(cfg, estep);
 	const auto children = doorWorld();
@@ -99,7 +99,7 @@ TEST(DoorExclusion, ALeafKeptStaticByEq6IsKeptOutOfTheMStep)
 
 TEST(DoorExclusion, DoorsAccumulateAndCutAWallAlongAState)
 {
-	GridVectorConfig cfg = EmSlam::defaultConfig();
+	GridVectorConfig cfg;
 	const EStep estep(cfg.estep, cfg.grid);
 	DoorExclusion ex(cfg, estep);
 	std::vector<std::vector<uint64_t>> changed(4);
@@ -183,7 +183,7 @@ std::vector<size_t> registered(const GridVectorConfig& cfg, const std::vector<Lo
 // less the door states found on that E-step's map; without it, every static child.
 TEST(DoorExclusion, TheMStepNoLongerRegistersDoorStates)
 {
-	GridVectorConfig cfg = EmSlam::defaultConfig();
+	GridVectorConfig cfg;
 	std::vector<LocalScan> scans;
 	std::vector<TPose2D> odo;
 	simulatedCorridor(scans, odo, cfg);

@@ -27,7 +27,7 @@ TEST(EmSlam, ConvergesToTheTrueTrajectoryAndFindsTheTransientObject)
 	}
 	// later scans see through the box's place: the walls behind it are visible, and the
 	// wipe triangles of the scans of the second lap pass where the box stood
-	GridVectorConfig cfg = EmSlam::defaultConfig();
+	GridVectorConfig cfg;
 	std::vector<int> perIteration;
 	const EmResult r = EmSlam(cfg).run(scans, odo, [&](const EmIteration& it, const std::vector<TPose2D>&) {
 		perIteration.push_back(it.index);

@@ -98,21 +98,16 @@ TEST(EStep, ChildrenAreSubGridsOfTheParent)
 	EXPECT_NEAR(a.y, b.y, 1e-6);
 }
 
-TEST(EStep, UnobservedColumnsStayStaticAndHysteresisHolds)
+TEST(EStep, UnobservedColumnsStayStatic)
 {
 	EStepOptions o;
 	o.minVisits = 3;
-	o.hysteresis = 0.1;
 	const EStep e(o);
 	// never re-observed (prior only): static
 	GridVector fresh(TPoint2D(0, 0), TPoint2D(2, 0), GridOptions{});
 	EXPECT_EQ(e.split(fresh)[0].state, VectorState::Static);
-	// a column at 0.45: dynamic on its own, static if it was static before
-	const GridVector v = withProfile(runs({{10, 0.45}}));
-	EXPECT_EQ(e.split(v)[0].state, VectorState::Dynamic);
-	EXPECT_EQ(e.split(v, {ProfilePiece{0, 10, true}})[0].state, VectorState::Static);
-	const GridVector w = withProfile(runs({{10, 0.3}}));
-	EXPECT_EQ(e.split(w, {ProfilePiece{0, 10, true}})[0].state, VectorState::Dynamic);
+	// a column observed at 0.45: dynamic
+	EXPECT_EQ(e.split(withProfile(runs({{10, 0.45}})))[0].state, VectorState::Dynamic);
 }
 
 // Sec. 3.1's counting model starts every cell at n_occupy = 1/2, n_visit = 1: min_visits compares
@@ -445,23 +440,18 @@ TEST(EStep, PeakRowProfileReadsCellsWithoutCountsAsThePrior)
 	}
 }
 
-// Sec. 4.1: each E-step computes p(c_i | M^[k]) from the current map alone; the hysteresis that
-// keeps a column's last state is beyond the paper and off by default (doc/paper-fidelity.md,
-// finding 10). A wall piece the first E-step made static (0.9) that the next map reads at 0.45
-// is dynamic at the second E-step, as at any first one.
-TEST(EStep, EachEStepClassifiesFromTheMapAloneByDefault)
+// Sec. 4.1: each E-step computes p(c_i | M^[k]) from the current map alone. A wall piece the
+// first E-step made static (0.9) that the next map reads at 0.45 is dynamic at the second E-step.
+TEST(EStep, EachEStepClassifiesFromTheMapAlone)
 {
 	const EStep e;
-	EXPECT_EQ(EStepOptions{}.hysteresis, 0.0);
 	const GridVector before = withProfile(runs({{10, 0.9}}));
 	std::vector<ProfilePiece> first;
-	ASSERT_EQ(e.split(before, {}, &first)[0].state, VectorState::Static);
+	ASSERT_EQ(e.split(before, &first)[0].state, VectorState::Static);
 	const GridVector now = withProfile(runs({{10, 0.45}}));
-	EXPECT_EQ(e.split(now, first)[0].state, VectorState::Dynamic);  // was static: 0.45 + 0.1 held it
 	EXPECT_EQ(e.split(now)[0].state, VectorState::Dynamic);
-	// run(): the same through the previous E-step's result
 	const EStepResult r1 = e.run({before});
-	const EStepResult r2 = e.run({now}, &r1);
+	const EStepResult r2 = e.run({now});
 	ASSERT_EQ(r2.children.size(), 1u);
 	EXPECT_EQ(r2.children[0].state, VectorState::Dynamic);
 	EXPECT_TRUE(EStep::changedChildren(r2, &r1)[0]);  // Eq. 25: its M_chd changed

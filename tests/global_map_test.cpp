@@ -361,10 +361,7 @@ TEST(GlobalMap, SetVectorsRebuildsTheIndex)
 	map.insertVector(GridVector({1, 0.0}, {3, 0.0}, GridOptions{}));
 	EXPECT_EQ(map.size(), 2u);  // merged into the first
 	EXPECT_EQ(map.index().size(), 2u);
-	GridVectorConfig cfg;
-	cfg.map.indexCellSize = 0.5;
-	map.setConfig(cfg);
-	EXPECT_EQ(map.index().cellSize(), 0.5);
+	EXPECT_EQ(map.index().cellSize(), VectorIndex::kCellSize);
 	EXPECT_EQ(map.correspondents(GridVector({50.5, 0}, {51, 0}, GridOptions{})).size(), 1u);
 	map.clear();
 	EXPECT_TRUE(map.empty());
@@ -477,13 +474,11 @@ TEST(GlobalMap, MergeAllGroupRoundsLetAGrownSpanReachFurther)
 	ASSERT_FALSE(corresponds(in[2], in[0], opt));
 	ASSERT_TRUE(corresponds(in[2], in[1], opt));
 	auto sourcesWith = [&](int rounds) {
-		GridVectorConfig cfg;
-		cfg.map.mergeGroupRounds = rounds;
-		std::vector<std::vector<uint64_t>> s = GlobalMap::mergeAll(in, cfg).sources;
+		std::vector<std::vector<uint64_t>> s = GlobalMap::mergeAll(in, GridVectorConfig(), rounds).sources;
 		std::sort(s.begin(), s.end());
 		return s;
 	};
-	EXPECT_EQ(GridVectorConfig().map.mergeGroupRounds, 16);
+	EXPECT_EQ(GlobalMap::kMergeGroupRounds, 16);
 	EXPECT_EQ(sourcesWith(1), (std::vector<std::vector<uint64_t>>{{1}, {2, 3}}));
 	EXPECT_EQ(sourcesWith(16), (std::vector<std::vector<uint64_t>>{{1, 2, 3}}));
 	EXPECT_EQ(sourcesWith(2), sourcesWith(16));

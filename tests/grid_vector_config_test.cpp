@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <set>
+#include <type_traits>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -21,6 +23,69 @@ TEST(GridVectorConfig, DefaultsAreThePapers)
 	EXPECT_DOUBLE_EQ(c.grid.priorVisit, 1.0);
 	EXPECT_DOUBLE_EQ(c.grid.resolution, 0.1);  // Table 1 compares with a 10 cm grid
 	EXPECT_NO_THROW(c.validate());
+}
+
+// One set of defaults: gv-em-slam's measured values are the library's (doc/benchmarks.md).
+TEST(GridVectorConfig, DefaultsAreGvEmSlamsMeasuredValues)
+{
+	const GridVectorConfig c;
+	EXPECT_EQ(c.extraction.minPoints, 3);
+	EXPECT_DOUBLE_EQ(c.extraction.minLength, 0.12);
+	EXPECT_DOUBLE_EQ(c.extraction.maxPointGap, 1.0);
+	EXPECT_FALSE(c.map.wipeCountsBeams);  // Fig. 2's unit
+	EXPECT_TRUE(c.matcher.stepWithinGates);
+	EXPECT_TRUE(c.mstep.overlapReregisterMoved);
+	EXPECT_TRUE(c.mstep.sequentialOdometryGuess);
+	EXPECT_DOUBLE_EQ(c.posegraph.odometrySigmaXYPerM, 0.06);
+}
+
+// Every key: one short help string, a range with finite bounds that holds its default
+// (bools: true/false); a help string is said once (estep.static_threshold once carried
+// matching.static_threshold's).
+TEST(GridVectorConfig, EveryKeyHasOneShortHelpAndAFiniteRangeHoldingItsDefault)
+{
+	GridVectorConfig c;
+	std::set<std::string> helps;
+	size_t keys = 0;
+	c.visitGroups([&](const char* group, auto& g) {
+		g.visit([&](const char* key, auto& field, const char* help, const gridvector::Range& range) {
+			const std::string name = std::string(group) + "." + key, h = help;
+			++keys;
+			EXPECT_FALSE(h.empty()) << name;
+			EXPECT_LE(h.size(), 160u) << name << ": " << h;
+			EXPECT_TRUE(helps.insert(h).second) << name << ": the same help as another key";
+			using T = std::decay_t<decltype(field)>;
+			EXPECT_EQ(range.flag, (std::is_same_v<T, bool>)) << name;
+			EXPECT_TRUE(std::isfinite(range.lo) && std::isfinite(range.hi) && range.lo < range.hi) << name;
+			EXPECT_TRUE(range.contains(double(field))) << name << " = " << double(field) << " not in " << range.text();
+		});
+	});
+	EXPECT_EQ(keys, c.namedValues().size());
+	// the Eq. 14 threshold is described as such, not as the ICP's
+	std::string estep, matching;
+	c.estep.visit([&](const char* k, auto&, const char* h, const gridvector::Range&) {
+		if (std::string(k) == "static_threshold") estep = h;
+	});
+	c.matching.visit([&](const char* k, auto&, const char* h, const gridvector::Range&) {
+		if (std::string(k) == "static_threshold") matching = h;
+	});
+	EXPECT_NE(estep.find("Eq. 14"), std::string::npos) << estep;
+	EXPECT_EQ(estep.find("ICP"), std::string::npos) << estep;
+	EXPECT_NE(matching.find("ICP"), std::string::npos) << matching;
+}
+
+TEST(GridVectorConfig, RangeTextAndBounds)
+{
+	using gridvector::Range;
+	EXPECT_EQ(Range::closed(0, 1).text(), "[0, 1]");
+	EXPECT_EQ(Range::above(0, 10).text(), "(0, 10]");
+	EXPECT_EQ(Range::open(0, 90).text(), "(0, 90)");
+	EXPECT_EQ(Range::boolean().text(), "true/false");
+	EXPECT_TRUE(Range::closed(0, 1).contains(0) && Range::closed(0, 1).contains(1));
+	EXPECT_FALSE(Range::above(0, 1).contains(0));
+	EXPECT_TRUE(Range::above(0, 1).contains(1));
+	EXPECT_FALSE(Range::open(0, 1).contains(1));
+	EXPECT_FALSE(Range::closed(0, 1).contains(std::nan("")));
 }
 
 TEST(GridVectorConfig, LoadsKeysFromIniSections)
@@ -170,45 +235,48 @@ TEST(GridVectorConfig, NonFiniteValueSetFromCodeIsRejected)
 TEST(GridVectorConfig, OutOfRangeValuesAreErrorsNamingFileSectionKeyValueAndWhy)
 {
 	const std::vector<std::pair<std::string, std::string>> bad = {
-		{"[gridvector_estep]\nmin_visits = -1\n", "my.ini: [gridvector_estep] min_visits = '-1' must be >= 0"},
-		{"[gridvector_estep]\nhysteresis = 1.5\n", "my.ini: [gridvector_estep] hysteresis = '1.5' must be in [0, 1]"},
+		{"[gridvector_estep]\nmin_visits = -1\n", "my.ini: [gridvector_estep] min_visits = '-1' must be in [0, 1000]"},
+		{"[gridvector_estep]\nstatic_threshold = 1\n", "my.ini: [gridvector_estep] static_threshold = '1' must be in (0, 1)"},
 		{"[gridvector_estep]\nfinal_static_threshold = 1.2\n",
 		 "my.ini: [gridvector_estep] final_static_threshold = '1.2' must be in [0, 1]"},
-		{"[gridvector_extraction]\nmin_range = -0.5\n", "my.ini: [gridvector_extraction] min_range = '-0.5' must be >= 0"},
+		{"[gridvector_extraction]\nmin_range = -0.5\n", "my.ini: [gridvector_extraction] min_range = '-0.5' must be in [0, 10]"},
 		{"[gridvector_extraction]\nbreak_angle_deg = 0\n",
 		 "my.ini: [gridvector_extraction] break_angle_deg = '0' must be in (0, 90)"},
-		{"[gridvector_extraction]\nmax_point_gap = 0\n", "my.ini: [gridvector_extraction] max_point_gap = '0' must be > 0"},
+		{"[gridvector_extraction]\nmax_point_gap = 0\n", "my.ini: [gridvector_extraction] max_point_gap = '0' must be in (0, 10]"},
 		{"[gridvector_grid]\nprior_occupy = 2\n", "my.ini: [gridvector_grid] prior_occupy = '2' must be <= prior_visit (1)"},
-		{"[gridvector_map]\nmax_rho_diff = -0.1\n", "my.ini: [gridvector_map] max_rho_diff = '-0.1' must be >= 0"},
+		{"[gridvector_map]\nmax_rho_diff = -0.1\n", "my.ini: [gridvector_map] max_rho_diff = '-0.1' must be in [0, 10]"},
 		{"[gridvector_map]\nmax_direction_diff_deg = 200\n",
 		 "my.ini: [gridvector_map] max_direction_diff_deg = '200' must be in [0, 180]"},
 		{"[gridvector_matcher]\ngate_rho_final = 1\n",
 		 "my.ini: [gridvector_matcher] gate_rho_final = '1' must be <= gate_rho_initial (0.6)"},
 		{"[gridvector_matcher]\ndegenerate_ratio = 2\n", "my.ini: [gridvector_matcher] degenerate_ratio = '2' must be in [0, 1]"},
-		{"[gridvector_matcher]\nmax_rms = 0\n", "my.ini: [gridvector_matcher] max_rms = '0' must be > 0"},
+		{"[gridvector_matcher]\nmax_rms = 0\n", "my.ini: [gridvector_matcher] max_rms = '0' must be in (0, 1]"},
 		{"[gridvector_posegraph]\nodometry_sigma_xy_min = 0\n",
-		 "my.ini: [gridvector_posegraph] odometry_sigma_xy_min = '0' must be > 0"},
-		{"[gridvector_posegraph]\nreject_chi2 = -3\n", "my.ini: [gridvector_posegraph] reject_chi2 = '-3' must be > 0"},
-		{"[gridvector_mstep]\noverlap_run_gap = 0\n", "my.ini: [gridvector_mstep] overlap_run_gap = '0' must be >= 1"},
-		{"[gridvector_mstep]\nreconsider_limit = -1\n", "my.ini: [gridvector_mstep] reconsider_limit = '-1' must be >= 0"},
+		 "my.ini: [gridvector_posegraph] odometry_sigma_xy_min = '0' must be in (0, 10]"},
+		{"[gridvector_posegraph]\nreject_chi2 = -3\n", "my.ini: [gridvector_posegraph] reject_chi2 = '-3' must be in (0, 1e+09]"},
+		{"[gridvector_mstep]\noverlap_run_gap = 0\n", "my.ini: [gridvector_mstep] overlap_run_gap = '0' must be in [1, 1e+06]"},
+		{"[gridvector_mstep]\nreconsider_limit = -1\n", "my.ini: [gridvector_mstep] reconsider_limit = '-1' must be in [0, 1000]"},
 		{"[gridvector_mstep]\noverlap_min_share = 1.25\n",
 		 "my.ini: [gridvector_mstep] overlap_min_share = '1.25' must be in [0, 1]"},
 		{"[gridvector_mstep]\nrecheck_gate_factor = 0.5\n",
-		 "my.ini: [gridvector_mstep] recheck_gate_factor = '0.5' must be >= 1"},
+		 "my.ini: [gridvector_mstep] recheck_gate_factor = '0.5' must be in [1, 100]"},
 		{"[gridvector_mstep]\nloop_search_hypotheses = 0\n",
-		 "my.ini: [gridvector_mstep] loop_search_hypotheses = '0' must be >= 1"},
+		 "my.ini: [gridvector_mstep] loop_search_hypotheses = '0' must be in [1, 1000]"},
 		{"[gridvector_doors]\nmax_door_length = 0.5\n",
 		 "my.ini: [gridvector_doors] max_door_length = '0.5' must be >= min_door_length (0.6)"},
 		{"[gridvector_doors]\nmin_open_deg = 120\n", "my.ini: [gridvector_doors] min_open_deg = '120' must be in [0, 90]"},
-		{"[gridvector_occupancy]\nmargin = -1\n", "my.ini: [gridvector_occupancy] margin = '-1' must be >= 0"}};
+		{"[gridvector_occupancy]\nmargin = -1\n", "my.ini: [gridvector_occupancy] margin = '-1' must be in [0, 100]"},
+		// every number that sizes a loop, an allocation or a geometry has an upper bound
+		{"[gridvector_matcher]\nmax_iterations = 100000\n", "my.ini: [gridvector_matcher] max_iterations = '100000' must be in [1, 1000]"},
+		{"[gridvector_grid]\nresolution = 5\n", "my.ini: [gridvector_grid] resolution = '5' must be in (0, 1]"}};
 	for (const auto& [text, expected] : bad) EXPECT_EQ(loadFailure(text), expected);
 	mrpt::config::CConfigFileMemory ini(bad[0].first);
 	EXPECT_THROW(GridVectorConfig().loadFromConfigFile(ini), std::invalid_argument);
 	// a map's sections carry its own prefix
 	EXPECT_EQ(loadFailure("[m_00_estep]\nmin_visits = -2\n", "m_00", "map.ini"),
-			  "map.ini: [m_00_estep] min_visits = '-2' must be >= 0");
+			  "map.ini: [m_00_estep] min_visits = '-2' must be in [0, 1000]");
 	// the edges of the ranges are valid
-	EXPECT_EQ(loadFailure("[gridvector_estep]\nmin_visits = 0\nhysteresis = 1\n[gridvector_matcher]\ngate_rho_final = 0.6\n"
+	EXPECT_EQ(loadFailure("[gridvector_estep]\nmin_visits = 0\nfinal_static_threshold = 1\n[gridvector_matcher]\ngate_rho_final = 0.6\n"
 						  "[gridvector_doors]\nmax_door_length = 0.6\n[gridvector_mstep]\nrecheck_gate_factor = 1\n"),
 			  "");
 }
@@ -248,7 +316,7 @@ TEST(GridVectorConfig, ParameterTableListsEveryKey)
 	const std::string md = GridVectorConfig::parameterTableMarkdown();
 	GridVectorConfig c;
 	c.visitGroups([&](const char*, auto& g) {
-		g.visit([&](const char* key, auto&, const char*) {
+		g.visit([&](const char* key, auto&, const char*, const gridvector::Range&) {
 			EXPECT_NE(md.find(std::string("`") + key + "`"), std::string::npos) << key;
 		});
 	});
@@ -262,7 +330,7 @@ TEST(GridVectorConfig, NamedValuesListEveryKeyAndSetThemBack)
 	a.extraction.minLength = 0.21;
 	const auto named = a.namedValues();
 	size_t keys = 0;
-	a.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto&, const char*) { ++keys; }); });
+	a.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto&, const char*, const gridvector::Range&) { ++keys; }); });
 	ASSERT_EQ(named.size(), keys);
 	EXPECT_EQ(named.front().first, "extraction.min_range");
 	GridVectorConfig b;

@@ -203,10 +203,10 @@ TEST(GvmapFormat, Version0LoadsWhenItsKeyCountMatches)
 		auto a = mrpt::serialization::archiveFrom(buf);
 		gridvector::GridVectorConfig c;
 		c.extraction.minLength = 0.42;
-		c.map.wipeCountsBeams = false;
+		c.map.wipeCountsBeams = true;  // not the default
 		beginObject(a, 0);
 		a << uint32_t(c.namedValues().size() + extraKeys);
-		c.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto& field, const char*) { a << field; }); });
+		c.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto& field, const char*, const gridvector::Range&) { a << field; }); });
 		writeRest(a, 3);
 		endObject(a);
 	};
@@ -214,7 +214,7 @@ TEST(GvmapFormat, Version0LoadsWhenItsKeyCountMatches)
 	writeV0(same, 0);
 	const CGridVectorMap m = load(same);
 	EXPECT_DOUBLE_EQ(m.config().extraction.minLength, 0.42);
-	EXPECT_FALSE(m.config().map.wipeCountsBeams);
+	EXPECT_TRUE(m.config().map.wipeCountsBeams);
 	ASSERT_EQ(m.vectors().size(), 1u);
 	EXPECT_EQ(m.vectors()[0].scanIndex, 4);
 

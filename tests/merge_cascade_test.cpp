@@ -94,13 +94,11 @@ TEST(MergeCascade, NothingCorrespondingLeavesTheVectorAsItWas)
 }
 
 // a pool that offers one new overlapping piece of the same wall at each round; the
-// cascade stops after map.merge_cascade_rounds merges
+// cascade stops after maxMerges (kMergeCascadeRounds) merges
 namespace
 {
 size_t cascadeOverChain(int rounds, double& endX)
 {
-	GridVectorConfig cfg;
-	cfg.map.mergeCascadeRounds = rounds;
 	std::vector<GridVector> chain;
 	for (int k = 0; k < rounds + 4; ++k) chain.push_back(wallPiece({1.0 + k, 0}, {3.0 + k, 0}));
 	ListPool p(chain);
@@ -112,7 +110,7 @@ size_t cascadeOverChain(int rounds, double& endX)
 	auto absorb = pool.absorb;
 	pool.absorb = [&](const std::vector<MergeCandidate>& taken) { absorb(taken), ++next; };
 	GridVector v = wallPiece({0, 0}, {2, 0});
-	const MergeCascadeStats st = mergeCascade(VectorMerger(cfg), v, pool);
+	const MergeCascadeStats st = mergeCascade(VectorMerger(), v, pool, rounds);
 	endX = v.end().x;
 	return st.merges;
 }
@@ -120,8 +118,8 @@ size_t cascadeOverChain(int rounds, double& endX)
 
 TEST(MergeCascade, StopsAfterTheRoundBound)
 {
-	const int defaultRounds = GridVectorConfig().map.mergeCascadeRounds;
-	EXPECT_EQ(defaultRounds, 8);  // the value before it became a key
+	const int defaultRounds = kMergeCascadeRounds;
+	EXPECT_EQ(defaultRounds, 8);  // the value when it was a key
 	for (int rounds : {1, 3, defaultRounds})
 	{
 		double endX = 0;

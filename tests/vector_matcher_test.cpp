@@ -195,6 +195,7 @@ TEST(VectorMatcher, StepWithinGatesKeepsNearlyParallelPairsFromSendingTheRegistr
 	const auto a = observe(world, xa, 0.0, 1, 1), b = observe(world, xb, 0.0, 2, 100);
 	const TPose2D truth = relative(xa, xb);
 	MatcherOptions off, on;
+	off.stepWithinGates = false;  // the full step (on by default)
 	on.stepWithinGates = true;
 	const VectorMatcher full(off), bounded(on);
 	const TPose2D guess(truth.x + 0.8 * std::cos(M_PI / 8), truth.y + 0.8 * std::sin(M_PI / 8), truth.phi + 5 * M_PI / 180);

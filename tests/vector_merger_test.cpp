@@ -226,7 +226,7 @@ TEST(VectorMerger, DynamicBlobDoesNotPullTheLine)
 TEST(VectorMerger, ShortPartIntoALongWallKeepsTheWallsGrid)
 {
 	// A 20 m wall seen many times, and a new 1 m view of it 2 mm off: the refit
-	// line stays within merge_regrid_tolerance of the wall's grid, so the wall's
+	// line stays within VectorMerger::kRegridTolerance of the wall's grid, so the wall's
 	// cells stay where they are (Eq. 6 of the wall unchanged at every point) and
 	// only the new part's counts are moved into them.
 	GridVector a = wall({0, 0}, {20, 0}, 0.003, 1);
@@ -250,10 +250,8 @@ TEST(VectorMerger, ShortPartIntoALongWallKeepsTheWallsGrid)
 				EXPECT_EQ(m.cell(r, c).n_acc, a.cell(r, c).n_acc) << r << " " << c;
 			}
 	// the same merge with a new grid always built (tolerance 0) agrees to within it
-	GridVectorConfig exact;
-	exact.map.mergeRegridTolerance = 0;
-	const GridVector r = VectorMerger(exact).merge(a, b);
-	const double tol = GridVectorConfig{}.map.mergeRegridTolerance;
+	const GridVector r = VectorMerger(GridVectorConfig{}, 0).merge(a, b);
+	const double tol = VectorMerger::kRegridTolerance;
 	EXPECT_LT(std::hypot(r.start().x - m.start().x, r.start().y - m.start().y), tol);
 	EXPECT_LT(std::hypot(r.end().x - m.end().x, r.end().y - m.end().y), tol);
 	expectTotalsConserved({&a, &b}, r);

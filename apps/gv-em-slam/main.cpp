@@ -97,7 +97,7 @@ int run(const io::ArgParser& args)
 {
 	const auto t0 = Clock::now();
 	const bool quiet = args.has("quiet");
-	GridVectorConfig cfg = EmSlam::defaultConfig();
+	GridVectorConfig cfg;
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
 	if (args.has("max-iterations")) cfg.mstep.maxIterations = int(args.getInt("max-iterations", 10, 1, 1000));
 	const std::string input = args.get("input"), dir = args.get("out") + "/";
@@ -200,12 +200,12 @@ int main(int argc, char** argv)
 	io::ArgParser args("gv-em-slam", "--input LOG --out DIR [--config FILE.ini] [--init TRAJ] [--max-iterations N] [--quiet]");
 	args.option("input", "LOG", "CARMEN log (.log/.clf[.gz]) or MRPT rawlog", io::ArgParser::kRequired);
 	args.option("out", "DIR", "output directory (created if missing)", io::ArgParser::kRequired);
-	args.option("config", "FILE.ini", "parameters over the embedded EM-SLAM profile (see gv-config --profile em-slam)",
-				"none: the embedded profile");
+	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_*] sections)",
+				"the library's defaults (gv-config --ini)");
 	args.option("init", "TRAJ", "start from this 't x y theta' trajectory (e.g. gv-graphslam's) instead of raw odometry",
 				"none: raw odometry");
 	args.option("max-iterations", "N", "EM iterations at most (overrides [gridvector_mstep] max_iterations)",
-				std::to_string(EmSlam::defaultConfig().mstep.maxIterations));
+				std::to_string(GridVectorConfig().mstep.maxIterations));
 	args.flag("quiet", "no progress or summary output");
 	return io::runTool(
 		args, argc, argv,

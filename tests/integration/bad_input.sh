@@ -236,7 +236,6 @@ for tool in gv-map-info gv-config gv-bench-extract; do
   expect 2 "$tool: unknown option --frobnicate (see --help)" - -- "$B/$tool" --frobnicate
   "$B/$tool" --help | grep -q "^usage: $tool " || fail "$tool --help"
 done
-expect 2 "gv-config: unknown profile 'nope' (known: library, em-slam)" - -- "$B/gv-config" --profile nope --ini
 expect 2 "--repeat must be in 1..1000000, got 0" - -- "$B/gv-bench-extract" room.log --repeat 0
 expect 2 "--config applies to --from-simplemap only" - -- "$B/gv-map-info" ok/map.gvmap --config typo.ini
 # a .gvmap rewritten by --save loads again

@@ -9,9 +9,7 @@
 //  - the batch path (buildPerScan + mergeAll) used by the EM loop;
 //  - n_g/n_v as in Table 1 (final static map): the batch per-scan vectors
 //    classified by the E-step (Eq. 14-15) at these poses, the dynamic ones
-//    removed, the static ones merged (Eq. 4), as EmSlam's final static map;
-//  - the sequential agreement with map.wipe_vectorless_beams off and on
-//    (beyond the paper: beams that made no vector also update the map).
+//    removed, the static ones merged (Eq. 4), as EmSlam's final static map.
 //
 //   gv-bench-map [--config FILE.ini] [--max-scans N] [--band M] [--repeat R] LOG...
 #include "estep/EStep.h"
@@ -42,13 +40,6 @@ namespace
 {
 const double kBand = 0.2;  //!< --band [m]
 double seconds(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double>(b - a).count(); }
-template <class F>
-double timed(F&& f)
-{
-	const auto a = Clock::now();
-	f();
-	return seconds(a, Clock::now());
-}
 
 struct Agreement
 {
@@ -180,7 +171,6 @@ void benchLog(const std::string& path, const BenchOptions& o)
 	// Sec. 3.1 extraction (timed, part of inserting a scan into a grid vector map)
 	const VectorExtractor ex(cfg.extraction, cfg.grid);
 	std::vector<LocalScan> scans(n);
-	std::vector<ScanBeams> beams(n);  // the beams that made no vector (map.wipe_vectorless_beams)
 	std::vector<double> tExtract(n), tInsert(n), tMrpt(n);
 	std::vector<double> work(n), cellsWiped(n);  // deterministic work per scan (load-independent)
 	for (size_t t = 0; t < n; ++t)
@@ -189,8 +179,6 @@ void benchLog(const std::string& path, const BenchOptions& o)
 		scans[t] = ex.extract(*obs[t]);
 		scans[t].scanIndex = int64_t(t);
 		tExtract[t] = seconds(a, Clock::now());
-		if (cfg.map.wipeVectorlessBeams) tExtract[t] += timed([&] { beams[t] = ScanBeams::of(*obs[t], scans[t], cfg.extraction.minRange); });
-		else beams[t] = ScanBeams::of(*obs[t], scans[t], cfg.extraction.minRange);  // for the comparison below
 	}
 	// Sec. 3.2 sequential insertion
 	// (--repeat R: the whole sequence R times, each scan's fastest time kept,
@@ -203,7 +191,7 @@ void benchLog(const std::string& path, const BenchOptions& o)
 		for (size_t t = 0; t < n; ++t)
 		{
 			const auto a = Clock::now();
-			map.insertScan(poses[t], scans[t], beams[t]);
+			map.insertScan(poses[t], scans[t]);
 			const double dt = seconds(a, Clock::now());
 			tInsert[t] = rep ? std::min(tInsert[t], dt) : dt;
 			const auto& st = map.lastInsertStats();
@@ -212,11 +200,6 @@ void benchLog(const std::string& path, const BenchOptions& o)
 			progress.show(path + ": sequential insertion " + std::to_string(rep + 1) + "/" + std::to_string(o.repeat), t + 1, n);
 		}
 	}
-	// the same sequential map with map.wipe_vectorless_beams flipped (beyond the paper), for the agreement
-	GridVectorConfig flipped = cfg;
-	flipped.map.wipeVectorlessBeams = !cfg.map.wipeVectorlessBeams;
-	GlobalMap alt(flipped);
-	for (size_t t = 0; t < n; ++t) alt.insertScan(poses[t], scans[t], beams[t]);
 	// MRPT's occupancy grid from the same scans and poses
 	// (timed the same way: --repeat R fresh grids, each scan's fastest time)
 	mrpt::maps::COccupancyGridMap2D grid(-10, 10, -10, 10, float(cfg.grid.resolution));
@@ -260,9 +243,6 @@ void benchLog(const std::string& path, const BenchOptions& o)
 	const MemoryReport memS = MemoryAccounting::account(staticMap.vectors, 0.1);
 	const Agreement ag = agreement(map.vectors(), grid, o), agB = agreement(merged.vectors, grid, o);
 	const Agreement agM = mrptSelfAgreement(map.vectors(), grid, gridRev, band);
-	const Agreement agAlt = agreement(alt.vectors(), grid, o);
-	const Agreement& agOff = cfg.map.wipeVectorlessBeams ? agAlt : ag;
-	const Agreement& agOn = cfg.map.wipeVectorlessBeams ? ag : agAlt;
 	size_t perScanVectors = 0;
 	for (const auto& s : scans) perScanVectors += s.vectors.size();
 
@@ -276,9 +256,6 @@ void benchLog(const std::string& path, const BenchOptions& o)
 				memS.vectorCount, memS.vectorLength, split.dynamicLength, memS.ratio);
 	std::printf("agreement with MRPT grid (cells within %.2f m of a vector, known in both): sequential %.2f %% (%zu/%zu of %zu; occupied %zu/%zu), batch %.2f %% (%zu/%zu)\n",
 				band, ag.pct(), ag.same, ag.both, ag.band, ag.occSame, ag.occBoth, agB.pct(), agB.same, agB.both);
-	std::printf("agreement, sequential, map.wipe_vectorless_beams off / on (beyond the paper): %.2f %% (%zu/%zu) / %.2f %% (%zu/%zu; occupied %zu/%zu); %zu / %zu vectors\n",
-				agOff.pct(), agOff.same, agOff.both, agOn.pct(), agOn.same, agOn.both, agOn.occSame, agOn.occBoth,
-				(cfg.map.wipeVectorlessBeams ? alt : map).size(), (cfg.map.wipeVectorlessBeams ? map : alt).size());
 	std::printf("MRPT grid vs MRPT grid of the same scans inserted in reverse order, same cells: %.2f %% (%zu/%zu)\n",
 				agM.pct(), agM.same, agM.both);
 	std::printf("speed: extract %.0f scans/s, insertScan %.0f scans/s, extract+insert %.0f scans/s; MRPT grid %.0f scans/s; ratio (extract+insert)/MRPT %.2f\n",

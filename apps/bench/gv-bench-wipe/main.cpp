@@ -8,7 +8,7 @@
 //
 // TRAJ: `t x y theta` per scan (gv-em-slam's trajectory.txt). The scans are gv-em-slam's
 // keyframes (mstep.keyframe_distance / keyframe_rotation_deg on the log's odometry) and the
-// parameters gv-em-slam's defaults (EmSlam::defaultConfig), so the product is the one
+// parameters the library defaults gv-em-slam runs with, so the product is the one
 // gv-em-slam's E-step computes at that trajectory.
 #include "em/EmSlam.h"
 #include "map/GlobalMap.h"
@@ -46,7 +46,7 @@ std::vector<GridVector> scanByScan(const std::vector<TPose2D>& poses, const std:
 		for (const auto& v : scans[t].vectors) all.push_back(v.compose(poses[t]));
 	}
 	first.push_back(all.size());
-	VectorIndex index(cfg.map.indexCellSize);
+	VectorIndex index(VectorIndex::kCellSize);
 	for (size_t i = 0; i < all.size(); ++i) index.insert(uint32_t(i), Box2D::of(all[i]));
 	ScanWipe wiper(cfg.map.hitBand, cfg.map.wipeCountsBeams);
 	std::vector<ScanWipe::Segment> segs;
@@ -84,7 +84,7 @@ int run(const io::ArgParser& args)
 	args.requirePositional(2, 2);
 	const std::string log = args.positional()[0], trajPath = args.positional()[1];
 	const int repeat = int(args.getInt("repeat", kRepeat, 1, 1000));
-	GridVectorConfig cfg = EmSlam::defaultConfig();
+	GridVectorConfig cfg;
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
 	const bool quiet = args.has("quiet");
 	io::ReadOptions ro;

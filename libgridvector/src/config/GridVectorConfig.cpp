@@ -22,17 +22,16 @@ namespace
 template <class T>
 std::string toText(const T& value)
 {
-	std::ostringstream os;
-	if constexpr (std::is_same_v<T, bool>) os << (value ? "true" : "false");
-	else os << value;
-	return os.str();
+	if constexpr (std::is_same_v<T, bool>) return value ? "true" : "false";
+	else if constexpr (std::is_floating_point_v<T>) return io::shortestText(value);
+	else return std::to_string(value);
 }
 
 template <class Group>
 std::set<std::string> keysOf(Group& g)
 {
 	std::set<std::string> keys;
-	g.visit([&](const char* key, auto&, const char*) { keys.insert(key); });
+	g.visit([&](const char* key, auto&, const char*, const Range&) { keys.insert(key); });
 	return keys;
 }
 
@@ -71,7 +70,9 @@ void GridVectorConfig::loadFromConfigFile(
 		const std::string section = prefix + "_" + group;
 		if (!cfg.sectionExists(section)) return;
 		io::requireKnownKeys(cfg, section, keysOf(g), sourceName);
-		g.visit([&](const char* key, auto& field, const char*) { io::readIniValue(cfg, section, key, field, sourceName); });
+		g.visit([&](const char* key, auto& field, const char*, const Range&) {
+			io::readIniValue(cfg, section, key, field, sourceName);
+		});
 	});
 	try
 	{
@@ -108,8 +109,8 @@ void GridVectorConfig::dumpAsIni(std::ostream& out, const std::string& prefix) c
 	auto& self = const_cast<GridVectorConfig&>(*this);
 	self.visitGroups([&](const char* group, auto& g) {
 		out << "[" << prefix << "_" << group << "]\n";
-		g.visit([&](const char* key, auto& field, const char* doc) {
-			out << "; " << doc << "\n" << key << " = " << toText(field) << "\n";
+		g.visit([&](const char* key, auto& field, const char* doc, const Range& range) {
+			out << "; " << doc << " " << range.text() << "\n" << key << " = " << toText(field) << "\n";
 		});
 		out << "\n";
 	});
@@ -119,11 +120,11 @@ std::string GridVectorConfig::parameterTableMarkdown(const std::string& prefix)
 {
 	GridVectorConfig defaults;
 	std::ostringstream out;
-	out << "| section | key | default | meaning |\n|---|---|---|---|\n";
+	out << "| section | key | default | range | meaning |\n|---|---|---|---|---|\n";
 	defaults.visitGroups([&](const char* group, auto& g) {
-		g.visit([&](const char* key, auto& field, const char* doc) {
-			out << "| `[" << prefix << "_" << group << "]` | `" << key << "` | "
-				<< toText(field) << " | " << doc << " |\n";
+		g.visit([&](const char* key, auto& field, const char* doc, const Range& range) {
+			out << "| `[" << prefix << "_" << group << "]` | `" << key << "` | " << toText(field) << " | "
+				<< range.text() << " | " << doc << " |\n";
 		});
 	});
 	return out.str();
@@ -156,7 +157,7 @@ std::vector<std::pair<std::string, double>> GridVectorConfig::namedValues() cons
 	std::vector<std::pair<std::string, double>> out;
 	auto self = *this;
 	self.visitGroups([&](const char* group, auto& g) {
-		g.visit([&](const char* key, auto& field, const char*) {
+		g.visit([&](const char* key, auto& field, const char*, const Range&) {
 			out.emplace_back(std::string(group) + "." + key, double(field));
 		});
 	});
@@ -171,34 +172,121 @@ bool GridVectorConfig::setNamedValue(const std::string& name, double value)
 			name[std::strlen(group)] != '.')
 			return;
 		const std::string key = name.substr(std::strlen(group) + 1);
-		g.visit([&](const char* k, auto& field, const char*) {
+		g.visit([&](const char* k, auto& field, const char*, const Range&) {
 			if (!found && key == k) found = assignNamed(field, value, name);
 		});
 	});
 	return found;
 }
 
-std::string GridVectorConfig::toJson() const
+namespace
+{
+template <class T>
+std::string jsonValue(const T& field)
+{
+	if constexpr (std::is_same_v<T, bool>) return field ? "true" : "false";
+	else if (std::isfinite(double(field))) return io::shortestText(double(field));
+	else return "null";  // JSON has no inf/nan
+}
+
+std::string jsonString(const std::string& s)
+{
+	std::string out = "\"";
+	for (char ch : s)
+	{
+		if (ch == '"' || ch == '\\') out += '\\';
+		out += ch;
+	}
+	return out + "\"";
+}
+
+/** {"group": {"key": ENTRY(key, field, help, range), ...}, ...} */
+template <class Entry>
+std::string jsonOf(GridVectorConfig self, Entry&& entry)
 {
 	std::ostringstream out;
 	out << "{";
-	auto self = *this;
 	const char* groupSep = "";
 	self.visitGroups([&](const char* group, auto& g) {
 		out << groupSep << "\"" << group << "\": {";
 		groupSep = ", ";
 		const char* sep = "";
-		g.visit([&](const char* key, auto& field, const char*) {
-			out << sep << "\"" << key << "\": ";
-			if constexpr (std::is_same_v<std::decay_t<decltype(field)>, bool>) out << (field ? "true" : "false");
-			else if (std::isfinite(double(field))) out << io::shortestText(double(field));
-			else out << "null";  // JSON has no inf/nan
+		g.visit([&](const char* key, auto& field, const char* doc, const Range& range) {
+			out << sep << "\"" << key << "\": " << entry(field, doc, range);
 			sep = ", ";
 		});
 		out << "}";
 	});
 	out << "}";
 	return out.str();
+}
+}  // namespace
+
+std::string GridVectorConfig::toJson() const
+{
+	return jsonOf(*this, [](const auto& field, const char*, const Range&) { return jsonValue(field); });
+}
+
+std::string GridVectorConfig::parametersJson() const
+{
+	return jsonOf(*this, [](const auto& field, const char* doc, const Range& range) {
+		return "{\"value\": " + jsonValue(field) + ", \"range\": " + jsonString(range.text()) +
+			   ", \"help\": " + jsonString(doc) + "}";
+	});
+}
+
+std::string Range::text() const
+{
+	if (flag) return "true/false";
+	return std::string(loOpen ? "(" : "[") + io::shortestText(lo) + ", " + io::shortestText(hi) + (hiOpen ? ")" : "]");
+}
+
+namespace
+{
+/** "[<prefix>_<group>] key = 'value' must be ...". */
+template <class T>
+void require(const std::string& section, const char* key, T value, bool ok, const std::string& why)
+{
+	if (!ok) throw std::invalid_argument("[" + section + "] " + key + " = '" + toText(value) + "' " + why);
+}
+
+/** A minimum above its maximum: `key`'s value must not be below (or, strict, must be above) `loKey`'s. */
+template <class T>
+void notBelow(const std::string& section, const char* key, T value, const char* loKey, T lo, bool strict = false)
+{
+	require(section, key, value, strict ? value > lo : value >= lo,
+			std::string(strict ? "must be > " : "must be >= ") + loKey + " (" + toText(lo) + ")");
+}
+template <class T>
+void notAbove(const std::string& section, const char* key, T value, const char* hiKey, T hi)
+{
+	require(section, key, value, value <= hi, std::string("must be <= ") + hiKey + " (" + toText(hi) + ")");
+}
+}  // namespace
+
+void GridVectorConfig::validate(const std::string& prefix) const
+{
+	// every key finite and in its visit() range
+	const_cast<GridVectorConfig&>(*this).visitGroups([&](const char* group, auto& g) {
+		const std::string section = prefix + "_" + group;
+		g.visit([&](const char* key, auto& field, const char*, const Range& range) {
+			using T = std::decay_t<decltype(field)>;
+			if constexpr (std::is_floating_point_v<T>) require(section, key, field, std::isfinite(field), "must be finite");
+			if constexpr (!std::is_same_v<T, bool>)
+				require(section, key, field, range.contains(double(field)), "must be in " + range.text());
+		});
+	});
+	// a minimum above its maximum
+	const std::string g = prefix + "_grid", m = prefix + "_matcher", p = prefix + "_posegraph",
+					  s = prefix + "_mstep", d = prefix + "_doors";
+	notAbove(g, "prior_occupy", grid.priorOccupy, "prior_visit", grid.priorVisit);
+	notAbove(m, "gate_psi_final_deg", matcher.gatePsiFinalDeg, "gate_psi_initial_deg", matcher.gatePsiInitialDeg);
+	notAbove(m, "gate_rho_final", matcher.gateRhoFinal, "gate_rho_initial", matcher.gateRhoInitial);
+	notBelow(p, "lm_initial_lambda", posegraph.lmInitialLambda, "lm_min_lambda", posegraph.lmMinLambda);
+	notBelow(p, "lm_max_lambda", posegraph.lmMaxLambda, "lm_initial_lambda", posegraph.lmInitialLambda, true);
+	notAbove(s, "loop_window_min_translation", mstep.loopWindowMinTranslation, "loop_search_max_radius",
+			 mstep.loopSearchMaxRadius);
+	notBelow(d, "max_door_length", doors.maxDoorLength, "min_door_length", doors.minDoorLength);
 }
 
 }  // namespace gridvector

@@ -33,12 +33,16 @@ std::vector<std::vector<MatchSegment>> initialSegments(const std::vector<LocalSc
 	return out;
 }
 
-// Beyond the paper: the E-step is re-run only when the M-step moved a pose (estep.rerun_*).
-bool movedEnough(const std::vector<TPose2D>& a, const std::vector<TPose2D>& b, const EStepOptions& o)
+// Beyond the paper: the E-step is re-run only when the M-step moved a pose by more than this:
+// half a grid cell, a degree (below them the map, and so the E-step, barely changes).
+constexpr double kRerunTranslation = 0.05;  // [m]
+constexpr double kRerunRotationDeg = 1.0;  // [deg]
+
+bool movedEnough(const std::vector<TPose2D>& a, const std::vector<TPose2D>& b)
 {
 	for (size_t t = 0; t < a.size() && t < b.size(); ++t)
-		if (se2::distance(a[t], b[t]) > o.rerunTranslation ||
-			std::abs(mrpt::math::wrapToPi(a[t].phi - b[t].phi)) > o.rerunRotationDeg * M_PI / 180)
+		if (se2::distance(a[t], b[t]) > kRerunTranslation ||
+			std::abs(mrpt::math::wrapToPi(a[t].phi - b[t].phi)) > kRerunRotationDeg * M_PI / 180)
 			return true;
 	return a.size() != b.size();
 }
@@ -61,20 +65,6 @@ void rebase(std::vector<GridVector>& vs, const std::vector<TPose2D>& from, const
 }  // namespace
 
 EmSlam::EmSlam(const GridVectorConfig& cfg) : cfg_(cfg) {}
-
-GridVectorConfig EmSlam::defaultConfig()
-{
-	GridVectorConfig c;
-	c.extraction.minPoints = 3;
-	c.extraction.minLength = 0.12;
-	c.extraction.maxPointGap = 1.0;
-	c.map.wipeCountsBeams = false;  // Fig. 2's unit: one increment per cell and triangle
-	c.matcher.stepWithinGates = true;  // robustness on mkbench seeds 1-9 (doc/benchmarks.md, "Seeds beyond 1-3")
-	c.mstep.overlapReregisterMoved = true;  // with step_within_gates: no ACES / csail seed-alias failure on seeds 1-9
-	c.mstep.sequentialOdometryGuess = true;  // csail seed 8: no scan left without a sequential edge by one misplaced predecessor
-	c.posegraph.odometrySigmaXYPerM = 0.06;  // Eq. 21 Sigma_ji of the odometry (u_t) edges: closer to the residuals at the optimum (doc/benchmarks-history.md)
-	return c;
-}
 
 // Eq. 19-20: the M-step registers the static vectors only; dynamic ones are outliers.
 std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<GridVector>& children,
@@ -176,7 +166,7 @@ EStepResult expectation(const EStep& estep, const std::vector<LocalScan>& scans,
 	const auto perScan = GlobalMap::buildPerScan(poses, scans, cfg);
 	it.wipeSeconds = since(t0);
 	const auto tc = std::chrono::steady_clock::now();
-	EStepResult e = estep.run(perScan, previous);
+	EStepResult e = estep.run(perScan);
 	it.classifySeconds = since(tc);
 	const auto changed = EStep::changedChildren(e, previous);
 	it.changedVectors = size_t(std::count(changed.begin(), changed.end(), true));
@@ -273,7 +263,7 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		const bool converged = k > 1 && it.changedShare <= cfg_.mstep.minChangedShare &&
 							   !res.iterations.empty() && res.iterations.back().changedVectors == 0;
 		t0 = std::chrono::steady_clock::now();
-		if (converged || (k > 1 && !movedEnough(ePoses, res.poses, cfg_.estep)))
+		if (converged || (k > 1 && !movedEnough(ePoses, res.poses)))
 		{
 			keepLastSplit(it, res.iterations.back());
 			it.eSkipped = !converged;

@@ -55,12 +55,7 @@ struct EmResult
 class EmSlam
 {
    public:
-	explicit EmSlam(const GridVectorConfig& cfg = defaultConfig());
-
-	/** The library defaults with denser extraction (short vectors and 3-point
-	 * runs kept): registration in cluttered rooms needs the small features
-	 * (door frames, cabinets) that constrain motion along corridors. */
-	static GridVectorConfig defaultConfig();
+	explicit EmSlam(const GridVectorConfig& cfg = {});
 
 	/** Called after each iteration with its figures and the trajectory. */
 	using IterationCallback =

@@ -68,14 +68,6 @@ std::vector<double> EStep::profile(const GridVector& v) const
 	return prof;
 }
 
-// Hysteresis: a column keeps its previous state unless it crosses the threshold by the margin.
-void EStep::applyHysteresis(std::vector<double>& prof, const std::vector<ProfilePiece>& previous) const
-{
-	for (const ProfilePiece& p : previous)
-		for (int c = std::max(0, p.first); c < std::min(int(prof.size()), p.last); ++c)
-			prof[size_t(c)] += p.isStatic ? opts_.hysteresis : -opts_.hysteresis;
-}
-
 // Eq. 14's child: the parent's columns [first, last) with their cells unchanged (Eq. 5's posterior kept).
 GridVector EStep::subVector(const GridVector& parent, const ProfilePiece& p) const
 {
@@ -110,24 +102,20 @@ uint64_t EStep::childId(uint64_t parentId, size_t k)
 }
 
 // Eq. 14 by Fig. 4's split-and-merge of one vector's profile.
-std::vector<GridVector> EStep::split(const GridVector& parent,
-									 const std::vector<ProfilePiece>& previous,
-									 std::vector<ProfilePiece>* piecesOut) const
+std::vector<GridVector> EStep::split(const GridVector& parent, std::vector<ProfilePiece>* piecesOut) const
 {
-	std::vector<GridVector> out = pieceVectors(parent, previous, piecesOut);
+	std::vector<GridVector> out = pieceVectors(parent, piecesOut);
 	for (size_t k = 0; k < out.size(); ++k) out[k].id = childId(parent.id, k);
 	return out;
 }
 
-// Fig. 4 and Eq. 14: the profile (with hysteresis), its pieces, one child per piece.
-std::vector<GridVector> EStep::pieceVectors(const GridVector& parent, const std::vector<ProfilePiece>& previous,
-											std::vector<ProfilePiece>* piecesOut) const
+// Fig. 4 and Eq. 14: the profile, its pieces, one child per piece.
+std::vector<GridVector> EStep::pieceVectors(const GridVector& parent, std::vector<ProfilePiece>* piecesOut) const
 {
 	const int minCols =
 		std::max(1, int(std::ceil(opts_.minPieceLength / parent.resolution() - 1e-9)));
 	std::vector<GridVector> out;
-	auto prof = profile(parent);
-	applyHysteresis(prof, previous);
+	const auto prof = profile(parent);
 	const auto ps = pieces(prof, opts_.staticThreshold, minCols);
 	if (piecesOut) *piecesOut = ps;
 	for (size_t k = 0; k < ps.size(); ++k)
@@ -144,17 +132,14 @@ std::vector<GridVector> EStep::pieceVectors(const GridVector& parent, const std:
 }
 
 // Sec. 4.1, Eq. 14-15: every m_{i,t} split into static and dynamic children.
-EStepResult EStep::run(const std::vector<GridVector>& parents, const EStepResult* previous) const
+EStepResult EStep::run(const std::vector<GridVector>& parents) const
 {
 	EStepResult r;
 	r.childrenOf.resize(parents.size());
-	std::vector<ProfilePiece> prev, ps;
+	std::vector<ProfilePiece> ps;
 	for (size_t k = 0; k < parents.size(); ++k)
 	{
-		prev.clear();
-		if (previous && k < previous->childrenOf.size())
-			for (uint32_t c : previous->childrenOf[k]) prev.push_back(previous->pieces[c]);
-		auto kids = split(parents[k], prev, &ps);
+		auto kids = split(parents[k], &ps);
 		for (size_t q = 0; q < kids.size(); ++q) r.pieces.push_back(ps[q]);
 		for (auto& c : kids)
 		{
@@ -219,7 +204,7 @@ std::vector<GridVector> EStep::finalSplit(const std::vector<GridVector>& childre
 			std::nth_element(prof.begin(), prof.begin() + long(prof.size() / 2), prof.end());
 			o.staticThreshold = std::max(o.staticThreshold, prof[prof.size() / 2] - opts_.finalRelativeDrop);
 		}
-		auto kids = EStep(o, grid_).pieceVectors(c, {}, nullptr);
+		auto kids = EStep(o, grid_).pieceVectors(c, nullptr);
 		for (auto& k : kids)
 		{
 			if (kids.size() > 1 && nextId == 0) throw std::overflow_error("EStep::finalSplit: no id left for a piece");

@@ -47,14 +47,10 @@ class EStep
 											int minColumns);
 	/** The occupancy profile along a vector (Fig. 4), one value per column. */
 	std::vector<double> profile(const GridVector& v) const;
-	/** The children of one vector; `previous`: its pieces at the last E-step
-	 * (hysteresis); `piecesOut`: the column range of each child. */
-	std::vector<GridVector> split(const GridVector& parent,
-								  const std::vector<ProfilePiece>& previous = {},
-								  std::vector<ProfilePiece>* piecesOut = nullptr) const;
-	/** The E-step over all vectors; `previous` (same parents, same order, possibly
-	 * moved) gives each column's last state for the hysteresis. */
-	EStepResult run(const std::vector<GridVector>& parents, const EStepResult* previous = nullptr) const;
+	/** The children of one vector; `piecesOut`: the column range of each child. */
+	std::vector<GridVector> split(const GridVector& parent, std::vector<ProfilePiece>* piecesOut = nullptr) const;
+	/** The E-step over all vectors, from the current map alone (Sec. 4.1). */
+	EStepResult run(const std::vector<GridVector>& parents) const;
 
 	/** Eq. 25: per parent of `now`, did its children M_chd differ from those of `before` (the
 	 * last E-step, same parents in the same order)? A difference is any change in the number
@@ -112,12 +108,10 @@ class EStep
 
    private:
 	/** split() without the ids (a single piece is the parent itself, id included). */
-	std::vector<GridVector> pieceVectors(const GridVector& parent, const std::vector<ProfilePiece>& previous,
-										 std::vector<ProfilePiece>* piecesOut) const;
+	std::vector<GridVector> pieceVectors(const GridVector& parent, std::vector<ProfilePiece>* piecesOut) const;
 	/** splitSpans' runs of `staticCols` (1 static, 0 dynamic), a cut static run shorter than
 	 * estep.min_piece_length turned dynamic (in `staticCols` too). */
 	std::vector<ProfilePiece> joinShortStatic(const GridVector& v, std::vector<double>& staticCols) const;
-	void applyHysteresis(std::vector<double>& prof, const std::vector<ProfilePiece>& previous) const;
 	GridVector subVector(const GridVector& parent, const ProfilePiece& p) const;
 
 	EStepOptions opts_;

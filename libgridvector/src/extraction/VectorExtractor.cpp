@@ -74,11 +74,15 @@ void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
 	}
 }
 
+/** Readings within this of the scanner's maxRange are "no hit": a float tolerance on the
+ * value scanners write for no return, not a model choice [m]. */
+constexpr double kMaxRangeMargin = 0.01;
+
 bool VectorExtractor::validBeam(const mrpt::obs::CObservation2DRangeScan& scan, size_t i) const
 {
 	const float r = scan.getScanRange(i);
 	return scan.getScanRangeValidity(i) && std::isfinite(r) && r > ext_.minRange &&
-		   r < scan.maxRange - ext_.maxRangeMargin;
+		   r < scan.maxRange - kMaxRangeMargin;
 }
 
 void VectorExtractor::scanToPoints(const mrpt::obs::CObservation2DRangeScan& scan, std::vector<TPoint2D>& pts,

@@ -10,7 +10,7 @@ namespace gridvector
 using mrpt::math::TPoint2D;
 
 GlobalMap::GlobalMap(const GridVectorConfig& cfg)
-	: cfg_(cfg), index_(cfg.map.indexCellSize), wiper_(cfg.map.hitBand, cfg.map.wipeCountsBeams), merger_(cfg)
+	: cfg_(cfg), index_(VectorIndex::kCellSize), wiper_(cfg.map.hitBand, cfg.map.wipeCountsBeams), merger_(cfg)
 {
 	modified();
 }
@@ -27,15 +27,9 @@ void GlobalMap::clear()
 void GlobalMap::setConfig(const GridVectorConfig& cfg)
 {
 	modified();
-	const bool reindex = cfg.map.indexCellSize != cfg_.map.indexCellSize;
 	cfg_ = cfg;
 	wiper_ = ScanWipe(cfg.map.hitBand, cfg.map.wipeCountsBeams);
 	merger_ = VectorMerger(cfg);
-	if (reindex)
-	{
-		index_ = VectorIndex(cfg.map.indexCellSize);
-		rebuildIndex();
-	}
 }
 
 void GlobalMap::setVectors(std::vector<GridVector> v)
@@ -198,18 +192,6 @@ void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan
 	stats_ = {};
 	HeldBack held;
 	stats_.wipe = wipeHolding(robotPose, scan, cfg_.map.mergeOnInsert, held);
-	insertVectors(robotPose, scan);
-	completeRefused(held);
-}
-
-void GlobalMap::insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, const ScanBeams& beams)
-{
-	modified();
-	stats_ = {};
-	HeldBack held;
-	stats_.wipe = wipeHolding(robotPose, scan, cfg_.map.mergeOnInsert, held);
-	if (cfg_.map.wipeVectorlessBeams)  // beyond the paper (BeamWipe)
-		stats_.beams = BeamWipe::apply(robotPose, beams, vectors_, index_, scan.scanIndex);
 	insertVectors(robotPose, scan);
 	completeRefused(held);
 }

@@ -1,7 +1,6 @@
 // Sec. 3.2: the global grid vector map M = {x_t (+) V_t}, merged (Eq. 4).
 #pragma once
 
-#include "map/BeamWipe.h"
 #include <gridvector/GridVector.h>
 #include <gridvector/GridVectorConfig.h>
 #include "map/ScanWipe.h"
@@ -64,11 +63,6 @@ class GlobalMap
 	 * gets the part c too, after the insertion, as with merging off.
 	 * New vectors get fresh ids; merged vectors get a fresh id and scanIndex -1. */
 	void insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan);
-	/** insertScan(robotPose, scan), and when map.wipe_vectorless_beams is set
-	 * (beyond the paper, see BeamWipe) the scan's beams that made no vector
-	 * are credited to the map vectors they cross, after Eq. 8 and before the
-	 * new vectors go in. */
-	void insertScan(const mrpt::math::TPose2D& robotPose, const LocalScan& scan, const ScanBeams& beams);
 
 	/** Eq. 8 alone: the scan's triangles applied to the map (parts b and c; not to
 	 * the vectors of the scan itself), nothing inserted. */
@@ -92,7 +86,6 @@ class GlobalMap
 		size_t merges = 0;  //!< Algorithm 2 runs
 		size_t absorbed = 0;  //!< map vectors merged away
 		size_t refused = 0;  //!< correspondents kept apart by the guard (map.merge_holds_wall)
-		BeamWipe::Stats beams;  //!< map.wipe_vectorless_beams
 	};
 	const InsertStats& lastInsertStats() const { return stats_; }
 	const VectorIndex& index() const { return index_; }
@@ -123,8 +116,14 @@ class GlobalMap
 	 * A group whose merge the guard refuses (map.merge_holds_wall: a curved
 	 * wall) is merged member by member instead, longest first, each into the
 	 * partial merges it corresponds to while they hold its wall, as the
-	 * sequential insertion does; it then yields several vectors. */
-	static MergeResult mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg);
+	 * sequential insertion does; it then yields several vectors.
+	 * groupRounds: a group absorbs the groups its grown span corresponds to at most this often
+	 * (beyond the paper; kMergeGroupRounds). */
+	static MergeResult mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg,
+								int groupRounds = kMergeGroupRounds);
+	/** mergeAll's bound on a group's growth rounds: a bound on the work of one group, not a
+	 * model choice (the value it had as the key map.merge_group_rounds). */
+	static constexpr int kMergeGroupRounds = 16;
 
    private:
 	/** What wipeHolding() held back: per new vector of the scan, its segment and

@@ -38,7 +38,7 @@ std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TP
 
 	std::vector<TPoint2D> sensors(scans.size());
 	for (size_t t = 0; t < scans.size(); ++t) sensors[t] = sensorPosition(poses[t], scans[t]);
-	WipeProduct(cfg.map.hitBand, cfg.map.wipeCountsBeams, cfg.map.indexCellSize).apply(sensors, first, all);
+	WipeProduct(cfg.map.hitBand, cfg.map.wipeCountsBeams, VectorIndex::kCellSize).apply(sensors, first, all);
 	return all;
 }
 
@@ -168,9 +168,9 @@ std::vector<Partial> mergeMemberwise(const std::vector<GridVector>& vectors, std
 }
 
 // Sec. 3.2: the inputs, longest first, grouped by the correspondence criteria; a group grows by
-// the earlier groups its grown span corresponds to (map.merge_group_rounds). The groups alive
+// the earlier groups its grown span corresponds to (at most `rounds` times). The groups alive
 // at the end, in the order of their first input.
-std::vector<Group> correspondingGroups(const std::vector<GridVector>& vectors, const MapOptions& opt)
+std::vector<Group> correspondingGroups(const std::vector<GridVector>& vectors, const MapOptions& opt, int rounds)
 {
 	std::vector<uint32_t> order(vectors.size());
 	std::iota(order.begin(), order.end(), 0u);
@@ -182,12 +182,12 @@ std::vector<Group> correspondingGroups(const std::vector<GridVector>& vectors, c
 
 	std::vector<Group> groups;
 	groups.reserve(vectors.size());
-	VectorIndex index(opt.indexCellSize);
+	VectorIndex index(VectorIndex::kCellSize);
 	std::vector<uint32_t> cand;
 	for (uint32_t pos : order)
 	{
 		Group g = groupOf(vectors[pos], pos);
-		for (int round = 0; round < opt.mergeGroupRounds; ++round)  // grown span: new correspondents
+		for (int round = 0; round < rounds; ++round)  // grown span: new correspondents
 		{
 			cand.clear();
 			const double len = std::hypot(g.e.x - g.s.x, g.e.y - g.s.y);
@@ -233,9 +233,9 @@ std::vector<Partial> mergeGroup(const std::vector<GridVector>& vectors, const Gr
 }  // namespace
 
 // Eq. 4: {m_{i,t}} -> {m_j}; groups by the Sec. 3.2 criteria, each merged once by Algorithm 2.
-MergeResult GlobalMap::mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg)
+MergeResult GlobalMap::mergeAll(const std::vector<GridVector>& vectors, const GridVectorConfig& cfg, int groupRounds)
 {
-	const std::vector<Group> groups = correspondingGroups(vectors, cfg.map);
+	const std::vector<Group> groups = correspondingGroups(vectors, cfg.map, groupRounds);
 	uint64_t nextId = 1;
 	for (const auto& v : vectors) nextId = std::max(nextId, v.id + 1);
 	const VectorMerger merger(cfg);

@@ -5,11 +5,11 @@
 namespace gridvector
 {
 // Algorithm 2, repeated while the merged vector finds correspondents (Sec. 3.2).
-MergeCascadeStats mergeCascade(const VectorMerger& merger, GridVector& v, const MergePool& pool)
+MergeCascadeStats mergeCascade(const VectorMerger& merger, GridVector& v, const MergePool& pool, int maxMerges)
 {
 	MergeCascadeStats st;
 	std::vector<uint64_t> refused;  // keys whose merge the guard refused
-	for (int round = 0; round < merger.config().map.mergeCascadeRounds; ++round)
+	for (int round = 0; round < maxMerges; ++round)
 	{
 		std::vector<MergeCandidate> corr = pool.correspondents(v);
 		corr.erase(std::remove_if(corr.begin(), corr.end(),

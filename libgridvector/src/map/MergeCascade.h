@@ -38,12 +38,16 @@ struct MergeCascadeStats
 	size_t refused = 0;  //!< correspondents kept apart by the guard (map.merge_holds_wall)
 };
 
+/** Beyond the paper (Algorithm 2 merges once): merges of one insertion at most, a bound on its
+ * work, not a model choice (the value it had as the key map.merge_cascade_rounds). */
+constexpr int kMergeCascadeRounds = 8;
+
 /** Algorithm 2 with every correspondent the guard allows (VectorMerger::mergeGreedy),
  * repeated with the merged vector while it has correspondents in the pool: a merge
  * moves and lengthens the vector, so it may now correspond to vectors the first one
- * did not. At most map.merge_cascade_rounds merges (of the merger's configuration):
- * a bound on the work of one insertion. A correspondent the guard refused is not offered again. `v` becomes the
+ * did not. At most `maxMerges` merges: a bound on the work of one insertion. A correspondent the guard refused is not offered again. `v` becomes the
  * last merge (unchanged if nothing merged; a merge has id 0, the caller numbers it). */
-MergeCascadeStats mergeCascade(const VectorMerger& merger, GridVector& v, const MergePool& pool);
+MergeCascadeStats mergeCascade(const VectorMerger& merger, GridVector& v, const MergePool& pool,
+							   int maxMerges = kMergeCascadeRounds);
 
 }  // namespace gridvector

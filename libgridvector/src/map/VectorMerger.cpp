@@ -218,7 +218,7 @@ int maxHalfWidth(const std::vector<const GridVector*>& parts)
 	return h;
 }
 
-GridVector mergeFitted(const GridVectorConfig& cfg, const std::vector<const GridVector*>& parts,
+GridVector mergeFitted(const GridVectorConfig& cfg, double regridTolerance, const std::vector<const GridVector*>& parts,
 					   const TempGrid& temp, const Line2D& line);
 
 /** Line 20 on the reference's own lattice: the new vector (s, e) lies within
@@ -276,7 +276,10 @@ void resample(const std::vector<const GridVector*>& parts, const Lattice& lat, c
 }
 }  // namespace
 
-VectorMerger::VectorMerger(const GridVectorConfig& cfg) : cfg_(cfg) {}
+VectorMerger::VectorMerger(const GridVectorConfig& cfg, double regridTolerance)
+	: cfg_(cfg), regridTolerance_(regridTolerance)
+{
+}
 
 // Algorithm 2 on two grid vectors.
 GridVector VectorMerger::merge(const GridVector& a, const GridVector& b) const
@@ -304,7 +307,7 @@ GridVector VectorMerger::merge(const std::vector<const GridVector*>& parts) cons
 	checkParts(parts);
 	if (parts.size() == 1) return *parts.front();
 	const TempGrid temp = buildTempGrid(parts);
-	return mergeFitted(cfg_, parts, temp, fitTemp(temp, referenceOf(parts), true));
+	return mergeFitted(cfg_, regridTolerance_, parts, temp, fitTemp(temp, referenceOf(parts), true));
 }
 
 // Algorithm 2, refused when the fitted line leaves the parts' wall (map.merge_holds_wall).
@@ -321,7 +324,7 @@ bool VectorMerger::tryMerge(const std::vector<const GridVector*>& parts, GridVec
 	if (cfg_.map.mergeHoldsWall &&
 		maxColumnOffset(temp, line) > (maxHalfWidth(parts) + 0.5) * parts.front()->resolution())
 		return false;
-	out = mergeFitted(cfg_, parts, temp, line);
+	out = mergeFitted(cfg_, regridTolerance_, parts, temp, line);
 	return true;
 }
 
@@ -356,7 +359,7 @@ std::vector<size_t> VectorMerger::mergeGreedy(const GridVector& base, const std:
 // Algorithm 2, lines 19-20, after the temporary grid (lines 1-11) and the fit (lines 12-18).
 namespace
 {
-GridVector mergeFitted(const GridVectorConfig& cfg, const std::vector<const GridVector*>& parts, const TempGrid& temp,
+GridVector mergeFitted(const GridVectorConfig& cfg, double regridTolerance, const std::vector<const GridVector*>& parts, const TempGrid& temp,
 					   const Line2D& line)
 {
 	const GridVector& ref = referenceOf(parts);
@@ -384,7 +387,7 @@ GridVector mergeFitted(const GridVectorConfig& cfg, const std::vector<const Grid
 	go.halfWidth = maxHalfWidth(parts);
 	double refLen = 0;
 	const bool keep = go.halfWidth == ref.halfWidth() &&
-					  onReferenceLattice(ref, s, e, cfg.map.mergeRegridTolerance, refLen) &&
+					  onReferenceLattice(ref, s, e, regridTolerance, refLen) &&
 					  ref.cols() <= columnsFor(refLen, go.resolution) + 1;
 	if (keep)  // the same grid up to the tolerance: the reference's start and axis
 	{

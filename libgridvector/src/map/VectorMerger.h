@@ -41,7 +41,7 @@ namespace gridvector
  * however often it is merged. The gravity centre of each cell's points moves
  * to the new cell containing it, at its exact position.
  *
- * Line 20 on the reference's lattice (map.merge_regrid_tolerance): when the
+ * Line 20 on the reference's lattice (kRegridTolerance): when the
  * new vector starts within the tolerance of the reference part's start and its
  * line stays within the tolerance of the reference's axis over its length,
  * the new grid is the reference's grid (extended at the end): the
@@ -69,7 +69,12 @@ namespace gridvector
 class VectorMerger
 {
    public:
-	explicit VectorMerger(const GridVectorConfig& cfg = {});
+	/** Algorithm 2 line 20 keeps the reference's grid when the new vector lies within this of it:
+	 * a numerical tolerance (half a centimetre, far below any cell), not a model choice [m]. */
+	static constexpr double kRegridTolerance = 0.005;
+
+	/** regridTolerance: kRegridTolerance; 0 always builds a new grid on the fitted line (line 19). */
+	explicit VectorMerger(const GridVectorConfig& cfg = {}, double regridTolerance = kRegridTolerance);
 
 	GridVector merge(const GridVector& a, const GridVector& b) const;
 	/** Merge any number (>= 1) of corresponding vectors of the same grid
@@ -103,6 +108,7 @@ class VectorMerger
 
    private:
 	GridVectorConfig cfg_;
+	double regridTolerance_ = kRegridTolerance;
 };
 
 }  // namespace gridvector

@@ -20,9 +20,6 @@ bool CGridVectorMap::internal_insertObservation(
 	const mrpt::math::TPose2D pose =
 		robotPose ? mrpt::math::TPose2D(robotPose->x(), robotPose->y(), robotPose->yaw())
 				  : mrpt::math::TPose2D(0, 0, 0);
-	if (impl_->map.config().map.wipeVectorlessBeams)  // beyond the paper: the beams that made no vector too
-		impl_->map.insertScan(pose, local, gridvector::ScanBeams::of(*scan, local, impl_->map.config().extraction.minRange));
-	else
-		impl_->map.insertScan(pose, local);  // m = x (+) v, Eq. 8, Algorithm 2
+	impl_->map.insertScan(pose, local);  // m = x (+) v, Eq. 8, Algorithm 2
 	return true;
 }

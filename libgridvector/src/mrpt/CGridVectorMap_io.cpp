@@ -36,7 +36,7 @@ gridvector::GridVectorConfig readConfigV0(mrpt::serialization::CArchive& in)
 								 " keys, this version expects " + std::to_string(expected) +
 								 " (a version-0 .gvmap stores its config by position)");
 	c.visitGroups([&](const char*, auto& g) {
-		g.visit([&](const char*, auto& field, const char*) { in >> field; });
+		g.visit([&](const char*, auto& field, const char*, const gridvector::Range&) { in >> field; });
 	});
 	return c;
 }

@@ -176,3 +176,39 @@ TEST(RunTool, NeverACrash)
 	EXPECT_EQ(r.out, "");
 	EXPECT_FALSE(r.bodyRan);
 }
+
+// What CLI11 decides under the adapter, pinned: the tools' words and their reading of a command line.
+TEST(ArgParser, ValuesFlagsAndNumbersAsTheToolsReadThem)
+{
+	const auto parsed = [](std::vector<const char*> argv) {
+		io::ArgParser a("tool", "ARG");
+		a.option("n", "N", "a number", "3");
+		a.flag("quiet", "quiet");
+		argv.insert(argv.begin(), "tool");
+		a.parse(int(argv.size()), argv.data());
+		return a;
+	};
+	EXPECT_EQ(parsed({"--n", "-1"}).get("n"), "-1") << "a negative number is a value";
+	EXPECT_EQ(parsed({"--n=--x"}).get("n"), "--x");
+	EXPECT_EQ(parsed({"--n", "1", "--n", "2"}).get("n"), "2") << "the last one given";
+	EXPECT_EQ(parsed({"-5", "-", "-2.5"}).positional(), (std::vector<std::string>{"-5", "-", "-2.5"}));
+	EXPECT_FALSE(parsed({}).has("n"));
+	EXPECT_EQ(parsed({}).get("n", "d"), "d");
+	const auto error = [&](std::vector<const char*> argv) {
+		try
+		{
+			parsed(argv);
+		}
+		catch (const io::UsageError& e)
+		{
+			return std::string(e.what());
+		}
+		return std::string("accepted");
+	};
+	EXPECT_EQ(error({"--quiet=true"}), "tool: option --quiet takes no value (see --help)");
+	EXPECT_EQ(error({"--n", "--quiet"}), "tool: option --n needs a value N (see --help)") << "an option is no value";
+	EXPECT_EQ(error({"--n="}), "tool: option --n needs a value N (see --help)");
+	EXPECT_EQ(error({"-q"}), "tool: unknown option -q (see --help)");
+	EXPECT_EQ(error({"--bogus=1", "x"}), "tool: unknown option --bogus (see --help)");
+	EXPECT_EQ(error({"x", "--", "--bogus"}), "accepted");
+}

@@ -2,15 +2,45 @@
 #include <gridvector/Version.h>
 #include "common/ArgParser.h"
 
-#include <cctype>
+#include <CLI/CLI.hpp>
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
-#include <sstream>
 
 namespace gridvector::io
 {
+namespace
+{
+/** --help's column of the option help: "  --name VALUE" padded to it, a longer one alone on its line. */
+constexpr size_t kHelpColumn = 26;
+/** What CLI11 records for a value option given without its value: each takes 0 or 1 values, so
+ * that the problem is reported in the tools' words ("needs a value") rather than CLI11's. */
+constexpr const char* kNoValue = "\x02no value";
+/** What CLI11 records for a flag given as --name: anything else is a value it takes none of. */
+constexpr const char* kFlagGiven = "\x03given";
+
+/** --help: "usage: PROG SYNOPSIS", "options:", one row per option as CLI11 lays it out. */
+class OptionTable : public CLI::Formatter
+{
+   public:
+	OptionTable() { column_width(kHelpColumn); }
+	std::string make_help(const CLI::App* app, std::string, CLI::AppFormatMode) const override
+	{
+		std::string out = "usage: " + app->get_name() + " " + app->get_description() + "\n\noptions:\n";
+		for (const CLI::Option* o : app->get_options([](const CLI::Option* o) { return !o->get_positional(); }))
+			out += make_option(o, false);
+		return out;
+	}
+	std::string make_option_name(const CLI::Option* o, bool) const override { return "--" + o->get_lnames().front(); }
+	std::string make_option_opts(const CLI::Option* o) const override
+	{
+		return o->get_items_expected_max() > 0 ? " " + o->get_type_name() : "";
+	}
+};
+}  // namespace
+
 ArgParser::ArgParser(std::string program, std::string synopsis)
 	: program_(std::move(program)), synopsis_(std::move(synopsis))
 {
@@ -21,69 +51,63 @@ ArgParser::ArgParser(std::string program, std::string synopsis)
 void ArgParser::option(const std::string& name, const std::string& valueName, const std::string& help,
 					   const std::string& def)
 {
-	specs_[name] = {valueName, help, def, true};
-	order_.push_back(name);
+	specs_.push_back({name, valueName, help + (def == kRequired ? " (required)" : " (default: " + def + ")"), true});
 }
 
-void ArgParser::flag(const std::string& name, const std::string& help)
-{
-	specs_[name] = {"", help, "", false};
-	order_.push_back(name);
-}
+void ArgParser::flag(const std::string& name, const std::string& help) { specs_.push_back({name, "", help, false}); }
 
 void ArgParser::fail(const std::string& msg) const { throw UsageError(program_ + ": " + msg + " (see --help)"); }
 
+/** The declared options as a CLI::App: unknown ones and the positionals kept for parse() to judge. */
+std::unique_ptr<CLI::App> ArgParser::app(std::vector<std::string>& positional) const
+{
+	auto app = std::make_unique<CLI::App>(synopsis_, program_);
+	app->set_help_flag();  // --help is an ordinary flag here: runTool answers it
+	app->allow_extras();
+	app->formatter(std::make_shared<OptionTable>());
+	for (const Spec& s : specs_)
+		if (s.takesValue)
+			app->add_option("--" + s.name, s.help)
+				->type_name(s.valueName)
+				->expected(0, 1)
+				->default_str(kNoValue)
+				->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+		else
+			app->add_flag("--" + s.name + "{" + kFlagGiven + "}", s.help);
+	app->add_option("positional", positional);
+	return app;
+}
+
 bool ArgParser::parse(int argc, const char* const* argv)
 {
-	bool optionsEnded = false;
-	for (int i = 1; i < argc; i++)
+	const auto cli = app(positional_);
+	try
 	{
-		const std::string a = argv[i];
-		if (optionsEnded || a.size() < 2 || a.compare(0, 2, "--") != 0)
-		{
-			if (!optionsEnded && a.size() > 1 && a[0] == '-' && !std::isdigit(static_cast<unsigned char>(a[1])))
-				fail("unknown option " + a);
-			positional_.push_back(a);
-			continue;
-		}
-		if (a == "--")
-		{
-			optionsEnded = true;
-			continue;
-		}
-		std::string name = a.substr(2), value;
-		const auto eq = name.find('=');
-		const bool inlineValue = eq != std::string::npos;
-		if (inlineValue) value = name.substr(eq + 1), name.resize(eq);
-		const auto it = specs_.find(name);
-		if (it == specs_.end()) fail("unknown option --" + name);
-		if (it->second.takesValue && !inlineValue)
-		{
-			if (i + 1 >= argc) fail("option --" + name + " needs a value " + it->second.valueName);
-			value = argv[++i];
-		}
-		else if (!it->second.takesValue && inlineValue)
-			fail("option --" + name + " takes no value");
-		values_[name] = value;
+		cli->parse(argc, argv);
+	}
+	catch (const CLI::ParseError& e)
+	{
+		fail(e.what());
+	}
+	for (const std::string& a : cli->remaining())
+		if (a != "--") fail("unknown option " + a.substr(0, a.find('=')));
+	for (const Spec& s : specs_)
+	{
+		const CLI::Option* o = cli->get_option("--" + s.name);
+		if (o->count() == 0) continue;
+		const std::string v = s.takesValue ? o->as<std::string>() : "";
+		if (s.takesValue && v == kNoValue) fail("option --" + s.name + " needs a value " + s.valueName);
+		for (const std::string& r : o->results())
+			if (!s.takesValue && r != kFlagGiven) fail("option --" + s.name + " takes no value");
+		values_[s.name] = v;
 	}
 	return !has("help") && !has("version");
 }
 
 std::string ArgParser::usage() const
 {
-	std::ostringstream os;
-	os << "usage: " << program_ << " " << synopsis_ << "\n\noptions:\n";
-	for (const auto& n : order_)
-	{
-		const Spec& s = specs_.at(n);
-		std::string left = "  --" + n + (s.takesValue ? " " + s.valueName : "");
-		if (left.size() < 26) left.resize(26, ' ');
-		else left += "\n" + std::string(26, ' ');
-		os << left << s.help;
-		if (s.takesValue) os << (s.def == kRequired ? " (required)" : " (default: " + s.def + ")");
-		os << "\n";
-	}
-	return os.str();
+	std::vector<std::string> unused;
+	return app(unused)->help();
 }
 
 std::string ArgParser::get(const std::string& name, const std::string& def) const

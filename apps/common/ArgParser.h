@@ -1,13 +1,20 @@
-// Command-line parsing for the tools: declared options only, every problem is
-// one clear line ("prog: unknown option --x (see --help)"); runTool is the main() they share.
+// Command-line parsing for the tools, over CLI11 (CLI::App parses, a CLI::Formatter prints the
+// option table): declared options only, every problem is one clear line
+// ("prog: unknown option --x (see --help)"); runTool is the main() they share.
 #pragma once
 
 #include <functional>
 #include <iosfwd>
 #include <map>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
+
+namespace CLI
+{
+class App;
+}
 
 namespace gridvector::io
 {
@@ -49,12 +56,13 @@ class ArgParser
    private:
 	struct Spec
 	{
-		std::string valueName, help, def;
+		std::string name, valueName, help;  //!< help with "(default: DEF)" or "(required)" for an option
 		bool takesValue;
 	};
+	std::unique_ptr<CLI::App> app(std::vector<std::string>& positional) const;
+
 	std::string program_, synopsis_;
-	std::map<std::string, Spec> specs_;
-	std::vector<std::string> order_;
+	std::vector<Spec> specs_;  //!< in declaration order, the order of --help
 	std::map<std::string, std::string> values_;
 	std::vector<std::string> positional_;
 };

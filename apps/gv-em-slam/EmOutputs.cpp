@@ -2,15 +2,15 @@
 
 #include <gridvector/Version.h>
 #include "io/AtomicFile.h"
+#include "io/JsonFile.h"
 
 #include "map/GlobalMap.h"
 #include <mrpt/maps/CGridVectorMap.h>
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <iomanip>
-#include <stdexcept>
 
 namespace gridvector::app
 {
@@ -103,74 +103,78 @@ void writeGvmap(const std::string& path, const GridVectorConfig& cfg, const std:
 
 namespace
 {
-/** s as a JSON string: quotes, backslashes and control bytes (a tab in a file name) escaped. */
-std::string jsonString(const std::string& s)
-{
-	std::string out = "\"";
-	for (const char c : s)
-	{
-		if (c == '"' || c == '\\') out += '\\', out += c;
-		else if (static_cast<unsigned char>(c) < 0x20)
-		{
-			char buf[8];
-			std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(static_cast<unsigned char>(c)));
-			out += buf;
-		}
-		else out += c;
-	}
-	return out + "\"";
-}
-
-void iterationJson(std::ostream& o, const EmIteration& it)
+nlohmann::ordered_json iterationJson(const EmIteration& it)
 {
 	const auto& m = it.mstep;
-	o << "    {\"iteration\": " << it.index << ", \"changed_share\": " << it.changedShare
-	  << ", \"constraints\": " << m.constraints << ", \"edges_active\": " << m.active
-	  << ", \"edges_sequential\": " << m.sequential << ", \"edges_overlap\": " << m.overlap
-	  << ", \"edges_loop\": " << m.loop << ", \"added\": " << m.added << ", \"removed\": " << m.removed
-	  << ", \"recomputed\": " << m.recomputed << ", \"registrations\": " << m.registrations
-	  << ", \"failed_registrations\": " << m.failedRegistrations << ", \"unverified\": " << m.unverified
-	  << ", \"rejected_by_residual\": " << m.optimisation.rejected
-	  << ", \"optimiser_iterations\": " << m.optimisation.iterations
-	  << ", \"static_vectors\": " << it.staticVectors << ", \"dynamic_vectors\": " << it.dynamicVectors
-	  << ", \"static_length_m\": " << it.staticLength << ", \"dynamic_length_m\": " << it.dynamicLength
-	  << ", \"changed_vectors\": " << it.changedVectors << ", \"m_seconds\": " << it.mSeconds
-	  << ", \"registration_seconds\": " << m.registrationSeconds
-	  << ", \"optimisation_seconds\": " << m.optimisation.seconds << ", \"e_seconds\": " << it.eSeconds
-	  << ", \"wipe_seconds\": " << it.wipeSeconds << ", \"classify_seconds\": " << it.classifySeconds
-	  << ", \"doors\": " << it.doors.doors << ", \"doors_found\": " << it.doors.found
-	  << ", \"door_vectors_excluded\": " << it.doors.excluded << ", \"door_vectors_cut\": " << it.doors.cut
-	  << ", \"door_seconds\": " << it.doors.seconds << "}";
+	return {{"iteration", it.index},
+			{"changed_share", it.changedShare},
+			{"constraints", m.constraints},
+			{"edges_active", m.active},
+			{"edges_sequential", m.sequential},
+			{"edges_overlap", m.overlap},
+			{"edges_loop", m.loop},
+			{"added", m.added},
+			{"removed", m.removed},
+			{"recomputed", m.recomputed},
+			{"registrations", m.registrations},
+			{"failed_registrations", m.failedRegistrations},
+			{"unverified", m.unverified},
+			{"rejected_by_residual", m.optimisation.rejected},
+			{"optimiser_iterations", m.optimisation.iterations},
+			{"static_vectors", it.staticVectors},
+			{"dynamic_vectors", it.dynamicVectors},
+			{"static_length_m", it.staticLength},
+			{"dynamic_length_m", it.dynamicLength},
+			{"changed_vectors", it.changedVectors},
+			{"m_seconds", it.mSeconds},
+			{"registration_seconds", m.registrationSeconds},
+			{"optimisation_seconds", m.optimisation.seconds},
+			{"e_seconds", it.eSeconds},
+			{"wipe_seconds", it.wipeSeconds},
+			{"classify_seconds", it.classifySeconds},
+			{"doors", it.doors.doors},
+			{"doors_found", it.doors.found},
+			{"door_vectors_excluded", it.doors.excluded},
+			{"door_vectors_cut", it.doors.cut},
+			{"door_seconds", it.doors.seconds}};
+}
+
+nlohmann::ordered_json finalMapJson(const std::vector<GridVector>& vectors, size_t doors)
+{
+	size_t ns = 0, nd = 0;
+	double ls = 0, ld = 0;
+	for (const auto& v : vectors)
+		(v.state == VectorState::Dynamic ? nd : ns)++, (v.state == VectorState::Dynamic ? ld : ls) += v.length();
+	return {{"static_vectors", ns}, {"dynamic_vectors", nd}, {"static_length_m", ls}, {"dynamic_length_m", ld},
+			{"doors", doors}};
 }
 }  // namespace
 
 void writeReport(const std::string& path, const RunFigures& run, const EmResult& res)
 {
-	io::writeFileAtomically(path, [&](std::ostream& o) {
-		o << std::setprecision(6);
-		size_t ns = 0, nd = 0;
-		double ls = 0, ld = 0;
-		for (const auto& v : res.finalVectors)
-			(v.state == VectorState::Dynamic ? nd : ns)++, (v.state == VectorState::Dynamic ? ld : ls) += v.length();
-		o << "{\n  \"version\": {\"gridvector\": " << jsonString(version()) << ", \"git\": " << jsonString(gitDescription())
-		  << ", \"mrpt\": " << jsonString(mrptVersion()) << "},\n  \"input\": " << jsonString(run.input)
-		  << ",\n  \"init\": " << (run.init.empty() ? "null" : jsonString(run.init)) << ",\n  \"config\": " << run.configJson << ",\n  \"scans\": " << run.scans
-		  << ",\n  \"local_vectors\": " << run.localVectors << ",\n  \"keyframes\": " << res.keyframes
-		  << ",\n  \"iterations_run\": " << res.iterations.size()
-		  << ",\n  \"converged\": " << (res.converged ? "true" : "false") << ",\n  \"iterations\": [\n";
-		for (size_t k = 0; k < res.iterations.size(); ++k)
-		{
-			iterationJson(o, res.iterations[k]);
-			o << (k + 1 < res.iterations.size() ? ",\n" : "\n");
-		}
-		o << "  ],\n  \"final_map\": {\"static_vectors\": " << ns << ", \"dynamic_vectors\": " << nd
-		  << ", \"static_length_m\": " << ls << ", \"dynamic_length_m\": " << ld << ", \"doors\": " << run.doors
-		  << "},\n  \"memory\": " << MemoryAccounting::toJson(run.memory) << ",\n  \"seconds\": {\"read\": "
-		  << run.readSeconds << ", \"extract\": " << run.extractSeconds << ", \"em\": " << run.emSeconds
-		  << ", \"final_map\": " << res.finalMapSeconds << ", \"final_merge\": " << res.finalMergeSeconds
-		  << ", \"doors\": " << res.doorSeconds << ", \"outputs\": " << run.outputSeconds
-		  << ", \"total\": " << run.totalSeconds << "}\n}\n";
-	});
+	nlohmann::ordered_json r;
+	r["version"] = {{"gridvector", version()}, {"git", gitDescription()}, {"mrpt", mrptVersion()}};
+	r["input"] = run.input;
+	r["init"] = run.init.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(run.init);
+	r["config"] = nlohmann::ordered_json::parse(run.configJson);
+	r["scans"] = run.scans;
+	r["local_vectors"] = run.localVectors;
+	r["keyframes"] = res.keyframes;
+	r["iterations_run"] = res.iterations.size();
+	r["converged"] = res.converged;
+	r["iterations"] = nlohmann::ordered_json::array();
+	for (const auto& it : res.iterations) r["iterations"].push_back(iterationJson(it));
+	r["final_map"] = finalMapJson(res.finalVectors, run.doors);
+	r["memory"] = MemoryAccounting::toJson(run.memory);
+	r["seconds"] = {{"read", run.readSeconds},
+					{"extract", run.extractSeconds},
+					{"em", run.emSeconds},
+					{"final_map", res.finalMapSeconds},
+					{"final_merge", res.finalMergeSeconds},
+					{"doors", res.doorSeconds},
+					{"outputs", run.outputSeconds},
+					{"total", run.totalSeconds}};
+	io::writeJsonFile(path, r);
 }
 
 }  // namespace gridvector::app

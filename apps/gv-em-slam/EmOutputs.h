@@ -35,6 +35,8 @@ struct RunFigures
 	MemoryReport memory;
 	std::string configJson;  //!< the full effective configuration (GridVectorConfig::toJson)
 };
+/** report.json (io::writeJsonFile: keys in this order, dump(2), a non-finite number as null);
+ * `config` is run.configJson parsed, so it is one JSON tree with the rest. */
 void writeReport(const std::string& path, const RunFigures& run, const EmResult& res);
 
 }  // namespace gridvector::app

@@ -4,8 +4,10 @@
 #include "eval/MapEval.h"
 #include "eval/TrajectoryEval.h"
 #include "common/ArgParser.h"
+#include "io/JsonFile.h"
 #include "io/TextParsing.h"
 #include <gridvector/io/LogReader.h>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <filesystem>
@@ -102,11 +104,11 @@ int trajectoryCommand(const io::ArgParser& a)
 		if (!(threshold > 0)) a.fail("--converged must be > 0");
 		const auto m = withTooFewNamed([&] { return eval::evaluateLocalization(match.pairs, match.times, threshold); },
 									   files, o.maxTimeDiff);
-		std::cout << (a.has("json") ? eval::formatJson(m) : eval::formatText(m)) << "\n";
+		std::cout << (a.has("json") ? io::jsonText(eval::toJson(m)) : eval::formatText(m) + "\n");
 		return 0;
 	}
 	const auto m = withTooFewNamed([&] { return eval::evaluatePairs(match.pairs, o); }, files, o.maxTimeDiff);
-	std::cout << (a.has("json") ? eval::formatJson(m) : eval::formatText(m)) << "\n";
+	std::cout << (a.has("json") ? io::jsonText(eval::toJson(m)) : eval::formatText(m) + "\n");
 	return 0;
 }
 
@@ -156,9 +158,9 @@ int mapCommand(const io::ArgParser& a)
 	}
 	if (a.has("json"))
 	{
-		std::string j = eval::formatJson(m);
-		if (a.has("breakdown")) j.insert(j.size() - 1, ", \"false_static\": " + eval::formatJson(b));
-		std::cout << j << "\n";
+		nlohmann::ordered_json j = eval::toJson(m);
+		if (a.has("breakdown")) j["false_static"] = eval::toJson(b);
+		std::cout << io::jsonText(j);
 	}
 	else
 	{

@@ -2,6 +2,8 @@
 #include "io/Counted.h"
 #include "eval/SegmentIndex.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -141,29 +143,28 @@ std::string formatText(const FalseStaticBreakdown& b)
 	return os.str();
 }
 
-std::string formatJson(const FalseStaticBreakdown& b)
+nlohmann::ordered_json toJson(const FalseStaticBreakdown& b)
 {
-	std::ostringstream os;
-	os << "{\"false_static_m\": " << f(b.total, "%.6f") << ", \"one_state_doors_m\": " << f(b.oneStateDoors, "%.6f")
-	   << ", \"two_state_doors_m\": " << f(b.twoStateDoors, "%.6f") << ", \"moved_object_m\": " << f(b.movedObject, "%.6f")
-	   << ", \"people_m\": " << f(b.people, "%.6f") << ", \"other_m\": " << f(b.other, "%.6f") << ", \"doors\": [";
-	for (size_t i = 0; i < b.doors.size(); ++i)
+	nlohmann::ordered_json doors = nlohmann::ordered_json::array();
+	for (const DoorObservation& d : b.doors)
 	{
-		const DoorObservation& d = b.doors[i];
-		os << (i ? ", " : "") << "{\"swings\": " << d.swings << ", \"seen_swinging\": " << (d.seenSwinging ? "true" : "false")
-		   << ", \"false_static_m\": " << f(d.falseStatic, "%.6f") << ", \"passes\": [";
-		for (size_t k = 0; k < d.passes.size(); ++k)
+		nlohmann::ordered_json passes = nlohmann::ordered_json::array();
+		for (const DoorPass& p : d.passes)
 		{
-			const DoorPass& p = d.passes[k];
-			os << (k ? ", " : "") << "{\"t0\": " << f(p.t0, "%.3f") << ", \"t1\": " << f(p.t1, "%.3f")
-			   << ", \"scans\": " << p.runs;
-			if (p.angled) os << ", \"min_deg\": " << f(p.minDeg, "%.1f") << ", \"max_deg\": " << f(p.maxDeg, "%.1f");
-			os << "}";
+			nlohmann::ordered_json pass = {{"t0", p.t0}, {"t1", p.t1}, {"scans", p.runs}};
+			if (p.angled) pass["min_deg"] = p.minDeg, pass["max_deg"] = p.maxDeg;
+			passes.push_back(pass);
 		}
-		os << "]}";
+		doors.push_back(
+			{{"swings", d.swings}, {"seen_swinging", d.seenSwinging}, {"false_static_m", d.falseStatic}, {"passes", passes}});
 	}
-	os << "]}";
-	return os.str();
+	return {{"false_static_m", b.total},
+			{"one_state_doors_m", b.oneStateDoors},
+			{"two_state_doors_m", b.twoStateDoors},
+			{"moved_object_m", b.movedObject},
+			{"people_m", b.people},
+			{"other_m", b.other},
+			{"doors", doors}};
 }
 
 }  // namespace gridvector::eval

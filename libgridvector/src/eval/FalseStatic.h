@@ -57,6 +57,7 @@ FalseStaticBreakdown falseStaticBreakdown(const std::vector<MapVector>& vectors,
 std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const MapEvalOptions& opt = {});
 
 std::string formatText(const FalseStaticBreakdown& b);
-std::string formatJson(const FalseStaticBreakdown& b);  //!< the totals, and per door false static and passes
+/** The totals, and per door false static and passes (gv-eval map --breakdown --json). */
+nlohmann::ordered_json toJson(const FalseStaticBreakdown& b);
 
 }  // namespace gridvector::eval

@@ -4,6 +4,8 @@
 #include "io/FileBytes.h"
 #include "io/TextParsing.h"
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -241,27 +243,31 @@ std::string formatText(const MapMetrics& m)
 	return os.str();
 }
 
-std::string formatJson(const MapMetrics& m)
+nlohmann::ordered_json toJson(const MapMetrics& m)
 {
-	std::ostringstream os;
-	os << "{\"static_length_m\": " << f(m.staticLength, "%.6f") << ", \"static_precision\": " << f(m.staticPrecision, "%.6f")
-	   << ", \"seen_wall_length_m\": " << f(m.seenWallLength, "%.6f") << ", \"static_recall\": " << f(m.staticRecall, "%.6f")
-	   << ", \"ghost_length_m\": " << f(m.ghostLength, "%.6f") << ", \"ghost_share\": " << f(m.ghostShare, "%.6f")
-	   << ", \"ghost_length_seen_swinging_m\": " << f(m.ghostLengthSeenSwinging, "%.6f")
-	   << ", \"ghost_share_seen_swinging\": " << f(m.ghostShareSeenSwinging, "%.6f")
-	   << ", \"static_precision_seen_swinging\": " << f(m.staticPrecisionSeenSwinging, "%.6f")
-	   << ", \"dynamic_length_m\": " << f(m.dynamicLength, "%.6f") << ", \"dynamic_on_walls_m\": " << f(m.dynamicOnWalls, "%.6f")
-	   << ", \"dynamic_hit_length_m\": " << f(m.dynamicHitLength, "%.6f")
-	   << ", \"dynamic_detection\": " << f(m.dynamicDetection, "%.6f");
-	if (m.doorsEvaluated)
-		os << ", \"moving_doors\": " << m.movingDoors << ", \"doors_found\": " << m.doorsFound
-		   << ", \"door_recall\": " << f(m.doorRecall, "%.6f") << ", \"detected_doors\": " << m.detectedDoors
-		   << ", \"door_precision\": " << f(m.doorPrecision, "%.6f")
-		   << ", \"observed_swinging_doors\": " << m.observedSwingingDoors
-		   << ", \"observed_doors_found\": " << m.observedDoorsFound
-		   << ", \"door_recall_observed\": " << f(m.doorRecallObserved, "%.6f");
-	os << "}";
-	return os.str();
+	nlohmann::ordered_json j = {{"static_length_m", m.staticLength},
+								{"static_precision", m.staticPrecision},
+								{"seen_wall_length_m", m.seenWallLength},
+								{"static_recall", m.staticRecall},
+								{"ghost_length_m", m.ghostLength},
+								{"ghost_share", m.ghostShare},
+								{"ghost_length_seen_swinging_m", m.ghostLengthSeenSwinging},
+								{"ghost_share_seen_swinging", m.ghostShareSeenSwinging},
+								{"static_precision_seen_swinging", m.staticPrecisionSeenSwinging},
+								{"dynamic_length_m", m.dynamicLength},
+								{"dynamic_on_walls_m", m.dynamicOnWalls},
+								{"dynamic_hit_length_m", m.dynamicHitLength},
+								{"dynamic_detection", m.dynamicDetection}};
+	if (!m.doorsEvaluated) return j;
+	j["moving_doors"] = m.movingDoors;
+	j["doors_found"] = m.doorsFound;
+	j["door_recall"] = m.doorRecall;
+	j["detected_doors"] = m.detectedDoors;
+	j["door_precision"] = m.doorPrecision;
+	j["observed_swinging_doors"] = m.observedSwingingDoors;
+	j["observed_doors_found"] = m.observedDoorsFound;
+	j["door_recall_observed"] = m.doorRecallObserved;
+	return j;
 }
 
 namespace

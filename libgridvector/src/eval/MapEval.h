@@ -7,6 +7,8 @@
 
 #include "sim/TruthFiles.h"
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 #include <vector>
 
@@ -103,6 +105,6 @@ MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& 
 					   const std::vector<sim::DoorTruth>* detectedDoors, const MapEvalOptions& opt = {});
 
 std::string formatText(const MapMetrics& m);
-std::string formatJson(const MapMetrics& m);
+nlohmann::ordered_json toJson(const MapMetrics& m);  //!< gv-eval map --json (keys in this order; a non-finite figure is null when dumped)
 
 }  // namespace gridvector::eval

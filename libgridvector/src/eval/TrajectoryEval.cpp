@@ -1,6 +1,8 @@
 #include "eval/TrajectoryEval.h"
 #include "io/Counted.h"
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -75,8 +77,6 @@ std::string num(const char* fmt, double v)
 	std::snprintf(b, sizeof b, fmt, v);
 	return b;
 }
-
-std::string jsonNum(double v) { return std::isfinite(v) ? num("%.6f", v) : "null"; }
 
 bool earlier(const io::Trajectory::value_type& a, const io::Trajectory::value_type& b) { return a.first < b.first; }
 
@@ -194,12 +194,16 @@ std::string formatText(const TrajectoryMetrics& m)
 		   " loop_pairs=" + std::to_string(m.loopPairs);
 }
 
-std::string formatJson(const TrajectoryMetrics& m)
+nlohmann::ordered_json toJson(const TrajectoryMetrics& m)
 {
-	return "{\"n\": " + std::to_string(m.matched) + ", \"ate_rmse_m\": " + jsonNum(m.ateRmse) +
-		   ", \"rel_local_t_m\": " + jsonNum(m.localT) + ", \"rel_local_r_deg\": " + jsonNum(m.localRDeg) +
-		   ", \"local_pairs\": " + std::to_string(m.localPairs) + ", \"rel_loop_t_m\": " + jsonNum(m.loopT) +
-		   ", \"rel_loop_r_deg\": " + jsonNum(m.loopRDeg) + ", \"loop_pairs\": " + std::to_string(m.loopPairs) + "}";
+	return {{"n", m.matched},
+			{"ate_rmse_m", m.ateRmse},
+			{"rel_local_t_m", m.localT},
+			{"rel_local_r_deg", m.localRDeg},
+			{"local_pairs", m.localPairs},
+			{"rel_loop_t_m", m.loopT},
+			{"rel_loop_r_deg", m.loopRDeg},
+			{"loop_pairs", m.loopPairs}};
 }
 
 TPose2D alignmentTransform(const Pairs& p)
@@ -249,12 +253,17 @@ std::string formatText(const LocalizationMetrics& m)
 		   " max_after_m=" + num("%.4f", m.maxAfter);
 }
 
-std::string formatJson(const LocalizationMetrics& m)
+nlohmann::ordered_json toJson(const LocalizationMetrics& m)
 {
-	return "{\"n\": " + std::to_string(m.matched) + ", \"abs_rmse_m\": " + jsonNum(m.rmse) +
-		   ", \"final_t_m\": " + jsonNum(m.finalT) + ", \"final_r_deg\": " + jsonNum(m.finalRDeg) +
-		   ", \"first_below_s\": " + jsonNum(m.firstBelow) + ", \"converged\": " + (m.converged ? "true" : "false") + ", \"converged_after_s\": " + jsonNum(m.convergedAfter) +
-		   ", \"rmse_after_m\": " + jsonNum(m.rmseAfter) + ", \"max_after_m\": " + jsonNum(m.maxAfter) + "}";
+	return {{"n", m.matched},
+			{"abs_rmse_m", m.rmse},
+			{"final_t_m", m.finalT},
+			{"final_r_deg", m.finalRDeg},
+			{"first_below_s", m.firstBelow},
+			{"converged", m.converged},
+			{"converged_after_s", m.convergedAfter},
+			{"rmse_after_m", m.rmseAfter},
+			{"max_after_m", m.maxAfter}};
 }
 
 }  // namespace gridvector::eval

@@ -4,6 +4,8 @@
 
 #include <gridvector/io/LogReader.h>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 #include <utility>
 #include <vector>
@@ -85,10 +87,10 @@ struct LocalizationMetrics
 LocalizationMetrics evaluateLocalization(const PosePairs& pairs, const std::vector<double>& times, double threshold);
 
 std::string formatText(const LocalizationMetrics& m);
-std::string formatJson(const LocalizationMetrics& m);
+nlohmann::ordered_json toJson(const LocalizationMetrics& m);  //!< gv-eval traj --absolute --json
 
 /** evaltraj.py's output line: "n=... ate_rmse_m=... rel_local_t_m=... ...". */
 std::string formatText(const TrajectoryMetrics& m);
-std::string formatJson(const TrajectoryMetrics& m);
+nlohmann::ordered_json toJson(const TrajectoryMetrics& m);  //!< gv-eval traj --json (keys in this order; a non-finite figure is null when dumped)
 
 }  // namespace gridvector::eval

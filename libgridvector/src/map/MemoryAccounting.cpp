@@ -1,12 +1,13 @@
 #include "map/MemoryAccounting.h"
-#include "io/AtomicFile.h"
+#include "io/JsonFile.h"
+
+#include <nlohmann/json.hpp>
 
 #include <mrpt/maps/COccupancyGridMap2D.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <sstream>
 
 namespace gridvector
 {
@@ -42,35 +43,26 @@ MemoryReport MemoryAccounting::account(const std::vector<GridVector>& vectors, d
 	return r;
 }
 
-std::string MemoryAccounting::toJson(const MemoryReport& r)
+nlohmann::ordered_json MemoryAccounting::toJson(const MemoryReport& r)
 {
-	std::ostringstream o;
-	o.precision(10);
-	o << "{\n"
-	  << "  \"resolution_m\": " << r.resolution << ",\n"
-	  << "  \"bounding_box\": {\"x_min\": " << r.xMin << ", \"y_min\": " << r.yMin << ", \"x_max\": " << r.xMax
-	  << ", \"y_max\": " << r.yMax << "},\n"
-	  << "  \"space_size_m2\": " << r.spaceSize << ",\n"
-	  << "  \"vector_count\": " << r.vectorCount << ",\n"
-	  << "  \"vector_length_m\": " << r.vectorLength << ",\n"
-	  << "  \"n_g\": " << r.n_g << ",\n"
-	  << "  \"n_v\": " << r.n_v << ",\n"
-	  << "  \"ratio_ng_nv\": " << r.ratio << ",\n"
-	  << "  \"grid_vector_columns\": " << r.columns << ",\n"
-	  << "  \"grid_vector_cells\": " << r.cells << ",\n"
-	  << "  \"ratio_ng_cells\": " << r.ratioCells << ",\n"
-	  << "  \"bytes_per_grid_cell\": " << r.bytesPerGridCell << ",\n"
-	  << "  \"bytes_occupancy_grid\": " << r.bytesGrid << ",\n"
-	  << "  \"bytes_grid_vector_map\": " << r.bytesGridVector << ",\n"
-	  << "  \"ratio_bytes\": " << r.ratioBytes << "\n"
-	  << "}\n";
-	return o.str();
+	return {{"resolution_m", r.resolution},
+			{"bounding_box", {{"x_min", r.xMin}, {"y_min", r.yMin}, {"x_max", r.xMax}, {"y_max", r.yMax}}},
+			{"space_size_m2", r.spaceSize},
+			{"vector_count", r.vectorCount},
+			{"vector_length_m", r.vectorLength},
+			{"n_g", r.n_g},
+			{"n_v", r.n_v},
+			{"ratio_ng_nv", r.ratio},
+			{"grid_vector_columns", r.columns},
+			{"grid_vector_cells", r.cells},
+			{"ratio_ng_cells", r.ratioCells},
+			{"bytes_per_grid_cell", r.bytesPerGridCell},
+			{"bytes_occupancy_grid", r.bytesGrid},
+			{"bytes_grid_vector_map", r.bytesGridVector},
+			{"ratio_bytes", r.ratioBytes}};
 }
 
-void MemoryAccounting::writeJson(const MemoryReport& r, const std::string& path)
-{
-	io::writeFileAtomically(path, [&](std::ostream& o) { o << toJson(r); });
-}
+void MemoryAccounting::writeJson(const MemoryReport& r, const std::string& path) { io::writeJsonFile(path, toJson(r)); }
 
 std::string MemoryAccounting::summary(const MemoryReport& r)
 {

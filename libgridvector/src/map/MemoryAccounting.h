@@ -3,6 +3,8 @@
 
 #include <gridvector/GridVector.h>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <string>
 #include <vector>
 
@@ -39,9 +41,9 @@ class MemoryAccounting
 {
    public:
 	static MemoryReport account(const std::vector<GridVector>& vectors, double resolution = 0.1);
-	/** One JSON object (keys as the fields, snake_case). */
-	static std::string toJson(const MemoryReport& r);
-	/** Written atomically; throws std::runtime_error("path: cannot write (...)"). */
+	/** One JSON object (keys as the fields, snake_case), in the order of the fields. */
+	static nlohmann::ordered_json toJson(const MemoryReport& r);
+	/** io::writeJsonFile(path, toJson(r)): atomically; throws std::runtime_error("path: cannot write (...)"). */
 	static void writeJson(const MemoryReport& r, const std::string& path);
 	/** A few human-readable lines. */
 	static std::string summary(const MemoryReport& r);

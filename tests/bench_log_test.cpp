@@ -63,7 +63,9 @@ TEST(BenchmarkLog, ReferenceIsTheCorrectedPoseAndOdometryFollowsTheModel)
 	sim::BenchmarkOptions exact;
 	exact.noise = {0, 0, 0};
 	const auto s2 = sim::makeBenchmarkLog(kIntel, out, exact);
-	EXPECT_LT(eval::evaluateTrajectory(io::trajectoryOf(io::readLog(s2.logPath)), io::readTrajectory(s2.refPath)).ateRmse, 2e-5);
+	EXPECT_LT(
+		eval::evaluateTrajectory(io::trajectoryOf(io::readLog(s2.logPath)), io::readTrajectory(s2.refPath)).ateRmse,
+		2e-5);
 	fs::remove(sum.logPath);
 	fs::remove(sum.refPath);
 }
@@ -71,14 +73,18 @@ TEST(BenchmarkLog, ReferenceIsTheCorrectedPoseAndOdometryFollowsTheModel)
 TEST(BenchmarkLog, ByteIdenticalToMkbenchPy)
 {
 	const std::string py = std::string(GV_SHARED_DIR) + "/bench/mkbench.py";
-	if (std::system("command -v python3 >/dev/null 2>&1") != 0 || !fs::exists(py)) GTEST_SKIP() << "python3 or mkbench.py missing";
+	if (std::system("command -v python3 >/dev/null 2>&1") != 0 || !fs::exists(py))
+		GTEST_SKIP() << "python3 or mkbench.py missing";
 	for (int seed : {1, 3})
 	{
 		sim::BenchmarkOptions o;
 		o.seed = seed;
 		const auto ours = sim::makeBenchmarkLog(kIntel, tmp("ours"), o);
 		const std::string theirs = tmp("theirs");
-		ASSERT_EQ(std::system(("python3 '" + py + "' '" + kIntel + "' '" + theirs + "' --seed " + std::to_string(seed)).c_str()), 0);
+		ASSERT_EQ(
+			std::system(
+				("python3 '" + py + "' '" + kIntel + "' '" + theirs + "' --seed " + std::to_string(seed)).c_str()),
+			0);
 		EXPECT_TRUE(io::readFileBytes(ours.logPath) == io::readFileBytes(theirs + ".log")) << "seed " << seed;
 		EXPECT_TRUE(io::readFileBytes(ours.refPath) == io::readFileBytes(theirs + ".ref.txt")) << "seed " << seed;
 		for (const auto& p : {ours.logPath, ours.refPath, theirs + ".log", theirs + ".ref.txt"}) fs::remove(p);
@@ -88,7 +94,10 @@ TEST(BenchmarkLog, ByteIdenticalToMkbenchPy)
 TEST(BenchmarkLog, MalformedInputIsAnError)
 {
 	const std::string in = tmp("bad.log");
-	io::writeFileAtomically(in, [](std::ostream& os) { os << "PARAM x 1\nFLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 1 h 1\nFLASER 3 1.0 -2.0 3.0 0 0 0 0 0 0 1 h 1\nFLASER 3 1 1\n"; });
+	io::writeFileAtomically(in, [](std::ostream& os) {
+		os << "PARAM x 1\nFLASER 3 1.0 2.0 3.0 0 0 0 0 0 0 1 h 1\nFLASER 3 1.0 -2.0 3.0 0 0 0 0 0 0 1 h 1\nFLASER 3 1 "
+			  "1\n";
+	});
 	try
 	{
 		sim::makeBenchmarkLog(in, tmp("bad_out"));

@@ -23,7 +23,10 @@ const std::string kCsail = std::string(GV_SHARED_DIR) + "/data/csail-corrected.l
 const std::string kFreiburg = std::string(GV_SHARED_DIR) + "/data/freiburg-101-corrected.log.gz";
 constexpr double kDeg = M_PI / 180.0;
 
-LogData parse(const std::string& text) { return parseCarmenLog(std::vector<char>(text.begin(), text.end()), "mem.log"); }
+LogData parse(const std::string& text)
+{
+	return parseCarmenLog(std::vector<char>(text.begin(), text.end()), "mem.log");
+}
 
 std::string flaser(int n, double range, const std::string& tail = "1 2 0.5 3 4 0.25 10.5 host 10.5")
 {
@@ -61,7 +64,10 @@ double beamAngle(const mrpt::obs::CObservation2DRangeScan& s, size_t i)
 	return std::atan2(p.y, p.x);
 }
 
-std::string tempPath(const std::string& name) { return (fs::temp_directory_path() / ("gv_carmen_test_" + name)).string(); }
+std::string tempPath(const std::string& name)
+{
+	return (fs::temp_directory_path() / ("gv_carmen_test_" + name)).string();
+}
 }  // namespace
 
 TEST(CarmenReader, IntelHeadMatchesTheFile)
@@ -154,8 +160,9 @@ TEST(CarmenReader, BeamLayoutFollowsCarmen)
 
 TEST(CarmenReader, PosesTimestampsAndValidity)
 {
-	const std::string text = "# comment\n\nPARAM robot_front_laser_max 8.0 h 0\n"
-							 "FLASER 5 1.0 0 8.0 9.5 2.5 1 2 0.5 3 4 0.25 10.5 host 10.75\n";
+	const std::string text =
+		"# comment\n\nPARAM robot_front_laser_max 8.0 h 0\n"
+		"FLASER 5 1.0 0 8.0 9.5 2.5 1 2 0.5 3 4 0.25 10.5 host 10.75\n";
 	const LogData d = parse(text);
 	ASSERT_EQ(d.scans.size(), 1u);
 	const ScanRecord& r = d.scans[0];
@@ -172,9 +179,10 @@ TEST(CarmenReader, PosesTimestampsAndValidity)
 TEST(CarmenReader, RobotLaserAndRawLaser)
 {
 	// ROBOTLASER1 type start fov res max acc mode n r.. m laser(3) robot(3) tv rv fs ss ta ts host lts
-	const std::string robotLaser =
-		"ROBOTLASER1 0 -1.5707963 3.1415926 0.0174533 30 0.01 0 181" + std::string(181 * 4, ' ') + " 0 "
-		"1.2 2 0 1 2 0 0 0 0 0 0 20.25 h 20.25\n";
+	const std::string robotLaser = "ROBOTLASER1 0 -1.5707963 3.1415926 0.0174533 30 0.01 0 181" +
+								   std::string(181 * 4, ' ') +
+								   " 0 "
+								   "1.2 2 0 1 2 0 0 0 0 0 0 20.25 h 20.25\n";
 	std::string rl = robotLaser;
 	for (size_t i = 0, k = rl.find(" 181") + 4; i < 181; i++) rl.replace(k + 4 * i, 4, " 2.5");
 	LogData d = parse(rl);
@@ -186,8 +194,9 @@ TEST(CarmenReader, RobotLaserAndRawLaser)
 	EXPECT_DOUBLE_EQ(d.scans[0].timestamp, 20.25);
 
 	// RAWLASER1 has no pose: odometry comes from ODOM, interpolated at its time
-	std::string raw = "ODOM 0 0 0 0 0 0 1.0 h 1.0\nODOM 2 0 1.0 0 0 0 3.0 h 3.0\n"
-					  "RAWLASER1 0 -1.5707963 3.1415926 0.0174533 30 0.01 0 3 1 2 3 0 2.0 h 2.0\n";
+	std::string raw =
+		"ODOM 0 0 0 0 0 0 1.0 h 1.0\nODOM 2 0 1.0 0 0 0 3.0 h 3.0\n"
+		"RAWLASER1 0 -1.5707963 3.1415926 0.0174533 30 0.01 0 3 1 2 3 0 2.0 h 2.0\n";
 	d = parse(raw);
 	ASSERT_EQ(d.scans.size(), 1u);
 	ASSERT_TRUE(d.scans[0].hasOdometry);
@@ -199,14 +208,16 @@ TEST(CarmenReader, RobotLaserAndRawLaser)
 TEST(CarmenReader, MalformedLinesNameFileAndLine)
 {
 	const std::string ok = flaser(5, 1.0);
-	EXPECT_EQ(errorOf(ok + "FLASER 5 1 1 1 1 1 0 0 0 0 0 0\n"), "mem.log:2: FLASER: 5 beams announced: expected 16 fields, found 13");
+	EXPECT_EQ(errorOf(ok + "FLASER 5 1 1 1 1 1 0 0 0 0 0 0\n"),
+			  "mem.log:2: FLASER: 5 beams announced: expected 16 fields, found 13");
 	// a beam count one too high or too low names the count, not a pose field read as a range
-	EXPECT_EQ(errorOf("FLASER 6 1 1 1 1 1 -1.5 0 0 0 0 0 1 h 1\n"), "mem.log:1: FLASER: 6 beams announced: expected 17 fields, found 16");
-	EXPECT_EQ(errorOf("FLASER 4 1 1 1 1 1 -1.5 0 0 0 0 0 1 h 1\n"), "mem.log:1: FLASER: 4 beams announced: expected 15 fields, found 16");
+	EXPECT_EQ(errorOf("FLASER 6 1 1 1 1 1 -1.5 0 0 0 0 0 1 h 1\n"),
+			  "mem.log:1: FLASER: 6 beams announced: expected 17 fields, found 16");
+	EXPECT_EQ(errorOf("FLASER 4 1 1 1 1 1 -1.5 0 0 0 0 0 1 h 1\n"),
+			  "mem.log:1: FLASER: 4 beams announced: expected 15 fields, found 16");
 	EXPECT_EQ(errorOf("FLASER 5 1 nan 1 1 1 0 0 0 0 0 0 1 h 1\n"),
 			  "mem.log:1: FLASER range 1 is 'nan' (not a finite number)");
-	EXPECT_EQ(errorOf("\n\nFLASER 5 1 1 -2 1 1 0 0 0 0 0 0 1 h 1\n"),
-			  "mem.log:3: FLASER range 2 is -2 (negative)");
+	EXPECT_EQ(errorOf("\n\nFLASER 5 1 1 -2 1 1 0 0 0 0 0 0 1 h 1\n"), "mem.log:3: FLASER range 2 is -2 (negative)");
 	EXPECT_EQ(errorOf("FLASER 3 1 inf 1 0 0 0 0 0 0 1 h 1\n"),
 			  "mem.log:1: FLASER range 1 is 'inf' (not a finite number)");
 	EXPECT_EQ(errorOf("FLASER x 1\n"), "mem.log:1: FLASER beam count is 'x' (not an integer)");
@@ -279,8 +290,9 @@ std::string requireScansError(const LogData& d)
 
 TEST(CarmenReader, NoScansSaysWhatTheLogHolds)
 {
-	const LogData d = parse("PARAM robot_front_laser_max 81 h 0\nODOM 0 0 0 0 0 0 1.0 h 1\nODOM 0.1 0 0 0 0 0 1.2 h 1\n"
-							"GPSNMEA x 1 h 1\n");
+	const LogData d = parse(
+		"PARAM robot_front_laser_max 81 h 0\nODOM 0 0 0 0 0 0 1.0 h 1\nODOM 0.1 0 0 0 0 0 1.2 h 1\n"
+		"GPSNMEA x 1 h 1\n");
 	EXPECT_EQ(d.contents.odometryRecords, 2u);
 	EXPECT_EQ(d.contents.paramLines, 1u);
 	ASSERT_EQ(d.contents.ignored.size(), 1u);
@@ -345,7 +357,8 @@ TEST(TrajectoryFile, PosesAtScansByPositionOrByTime)
 	}
 	catch (const std::runtime_error& e)
 	{
-		EXPECT_EQ(std::string(e.what()).rfind("est.txt: 2 different poses at t = 100.000000: scans cannot be matched", 0), 0u)
+		EXPECT_EQ(
+			std::string(e.what()).rfind("est.txt: 2 different poses at t = 100.000000: scans cannot be matched", 0), 0u)
 			<< e.what();
 	}
 	// unique times (here out of order, one repeated with the same pose): the nearest within maxDt
@@ -402,8 +415,9 @@ TEST(NoReturnRange, SaturationBelowTheDeclaredMaximumIsNoReturn)
 	EXPECT_FALSE(d.scans[0].scan->getScanRangeValidity(1));  // 50 m: no return
 	EXPECT_TRUE(d.scans[1].scan->getScanRangeValidity(1));  // 20.25 m: a hit
 	ASSERT_EQ(d.warnings.size(), 1u);
-	EXPECT_EQ(d.warnings[0], "readings of exactly 50.00 m (the largest, in >= 1 % and >= 10 of the scans) are the scanner's "
-							 "no-return value: max range 50.00 m instead of 81.00 m");
+	EXPECT_EQ(d.warnings[0],
+			  "readings of exactly 50.00 m (the largest, in >= 1 % and >= 10 of the scans) are the scanner's "
+			  "no-return value: max range 50.00 m instead of 81.00 m");
 	// off: the declared maximum stands
 	ReadOptions keep;
 	keep.detectNoReturnRange = false;

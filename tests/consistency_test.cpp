@@ -1,6 +1,6 @@
 // Consistency (verifyOverlaps): the pairwise check of an M-step's new overlap and loop edges.
 #include "mstep/Consistency.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ Constraint edgeOf(const Poses& poses, uint32_t from, uint32_t to, double errorX 
 	c.from = from;
 	c.to = to;
 	c.kind = EdgeKind::Overlap;
-	c.z = se2::relative(poses[from], poses[to]);
+	c.z = poses[to] - poses[from];
 	c.z.x += errorX;
 	c.information = Eigen::Vector3d(400, 400, 4000).asDiagonal();
 	for (size_t k = 0; k < pairs; ++k) c.correspondences.push_back({k, 100 + k});
@@ -73,7 +73,7 @@ TEST(Consistency, AnEdgeTheEdgesNearItContradictIsDroppedAndFailed)
 	EXPECT_EQ(w.rep.unverified, 1u);
 	EXPECT_EQ(w.rep.added, 0u);
 	EXPECT_EQ(w.book.edges.count({12, 36}), 0u);
-	EXPECT_FALSE(w.book.retry({12, 36}, se2::relative(w.poses[12], w.poses[36])));  // not tried again as it is
+	EXPECT_FALSE(w.book.retry({12, 36}, w.poses[36] - w.poses[12]));  // not tried again as it is
 }
 
 TEST(Consistency, SequentialAndRejectedEdgesNeitherSupportNorContradict)

@@ -2,7 +2,7 @@
 #include "match_world.h"
 
 #include "mstep/ConstraintUpdate.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <gtest/gtest.h>
 
@@ -25,15 +25,15 @@ struct Room
 	Room()
 	{
 		for (size_t t = 0; t < poses.size(); ++t)
-			scans.push_back(matchtest::observe(kRoom, t < 2 ? poses[t] : TPose2D(1, 1, 0), 0.002, unsigned(t),
-											   1000 * (t + 1)));
+			scans.push_back(
+				matchtest::observe(kRoom, t < 2 ? poses[t] : TPose2D(1, 1, 0), 0.002, unsigned(t), 1000 * (t + 1)));
 		book.beginStep(scans, nullptr);
 	}
 	Constraint registered(uint32_t from, uint32_t to, EdgeKind kind)
 	{
 		Constraint c;
 		MStepReport rep;
-		EXPECT_TRUE(reg.registerPair(from, to, kind, scans, se2::relative(poses[from], poses[to]), c, rep));
+		EXPECT_TRUE(reg.registerPair(from, to, kind, scans, poses[to] - poses[from], c, rep));
 		return c;
 	}
 };

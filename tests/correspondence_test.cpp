@@ -126,7 +126,8 @@ TEST(Correspondence, ThetaOfADirectedVectorRepeatsCriterion1)
 		ASSERT_NEAR(t.dTheta, t.dPsi, 1e-12) << i;
 	}
 	const TPoint2D c(1, 0);
-	const GridVector a = vec(0, 0, 2, 0), b(rot({0, 0}, 7 * M_PI / 180, c), rot({2, 0}, 7 * M_PI / 180, c), GridOptions{});
+	const GridVector a = vec(0, 0, 2, 0),
+					 b(rot({0, 0}, 7 * M_PI / 180, c), rot({2, 0}, 7 * M_PI / 180, c), GridOptions{});
 	MapOptions o;  // both 10 deg: 7 deg apart match
 	EXPECT_TRUE(corresponds(a, b, o));
 	o.maxThetaDiffDeg = 5;  // below criterion 1's bound: now it decides

@@ -19,9 +19,9 @@ namespace gvtest
  * (x 2.5..7, y -4..0), a pillar in the corridor's east end and a recess in its north wall. */
 inline std::vector<Seg> corridorWorld()
 {
-	std::vector<Seg> w{{0, 0, 4, 0},		{5, 0, 10, 0},	  {10, 0, 10, 2},	{10, 2, 6.5, 2},   {6.5, 2, 6.5, 2.6},
-					   {6.5, 2.6, 5.5, 2.6}, {5.5, 2.6, 5.5, 2}, {5.5, 2, 0, 2},	{0, 2, 0, 0},	   {2.5, 0, 2.5, -4},
-					   {2.5, -4, 7, -4},	 {7, -4, 7, 0}};
+	std::vector<Seg> w{{0, 0, 4, 0},       {5, 0, 10, 0},        {10, 0, 10, 2},     {10, 2, 6.5, 2},
+					   {6.5, 2, 6.5, 2.6}, {6.5, 2.6, 5.5, 2.6}, {5.5, 2.6, 5.5, 2}, {5.5, 2, 0, 2},
+					   {0, 2, 0, 0},       {2.5, 0, 2.5, -4},    {2.5, -4, 7, -4},   {7, -4, 7, 0}};
 	const auto pillar = box(8.5, 0.8, 8.9, 1.2);
 	w.insert(w.end(), pillar.begin(), pillar.end());
 	return w;
@@ -34,7 +34,7 @@ inline const std::vector<Seg> kTrolley = box(5.6, 1.3, 6.4, 1.7);
 
 /** A 270-degree scan at pose x, 1 cm range noise. */
 inline mrpt::obs::CObservation2DRangeScan scanOf(const mrpt::math::TPose2D& x, const std::vector<Seg>& walls,
-												  const std::vector<Disc>& discs, unsigned seed)
+												 const std::vector<Disc>& discs, unsigned seed)
 {
 	auto scan = castScan(x, walls, discs, 541, 1.5 * M_PI, 30.0);
 	std::mt19937 rng(seed);

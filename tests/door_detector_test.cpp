@@ -88,8 +88,7 @@ TEST(DoorDetector, ClosedDynamicStateAndStaticOpenStateGiveADoor)
 TEST(DoorDetector, StaticStatesAloneAreNoDoor)
 {
 	// two static door-length vectors at a wall end: no dynamic candidate (Sec. 5.4)
-	EXPECT_TRUE(
-		DoorDetector().detect({vec(0, 0, 3, 0, S), vec(3, 0, 3, 0.9, S), vec(3, 0, 3.64, 0.64, S)}).empty());
+	EXPECT_TRUE(DoorDetector().detect({vec(0, 0, 3, 0, S), vec(3, 0, 3, 0.9, S), vec(3, 0, 3.64, 0.64, S)}).empty());
 }
 
 TEST(DoorDetector, UnequalLeavesOrOneStateAreNoDoor)
@@ -150,11 +149,10 @@ TEST(DoorDetector, ClosedLeafReachingFarIntoTheWallStartsAtTheWallEnd)
 	EXPECT_NE(std::find(doors[0].leaves.begin(), doors[0].leaves.end(), 3u), doors[0].leaves.end());
 	// corridor-loop seed 4, door 0 (hinge about (4.50, -1.20)): the wall reaches 0.31 m into the
 	// doorway but the closed state starts at the hinge: its end inside the wall is the hinge
-	const std::vector<GridVector> w = {
-		vec(-1.2115, -1.1996, 4.8066, -1.2009, S),  // the wall
-		vec(5.1907, -1.1999, 18.8076, -1.2015, S),  // the latch-side wall
-		vec(4.4987, -1.1991, 5.4100, -1.1993, D),  // the closed state, 0.91 m
-		vec(4.5293, -1.1772, 5.0851, -1.9201, S)};  // the open state, -53 deg
+	const std::vector<GridVector> w = {vec(-1.2115, -1.1996, 4.8066, -1.2009, S),  // the wall
+									   vec(5.1907, -1.1999, 18.8076, -1.2015, S),  // the latch-side wall
+									   vec(4.4987, -1.1991, 5.4100, -1.1993, D),  // the closed state, 0.91 m
+									   vec(4.5293, -1.1772, 5.0851, -1.9201, S)};  // the open state, -53 deg
 	const auto doors4 = DoorDetector().detect(w);
 	ASSERT_EQ(doors4.size(), 1u);
 	EXPECT_NEAR(doors4[0].hinge.x, 4.51, 0.05);
@@ -194,7 +192,9 @@ TEST(DoorDetector, VectorsFromTheHingeIntoTheSweptArcJoinTheDoor)
 	DoorOptions o;
 	o.maxCornerGap = 0.1;  // the extra leaves below make no corner with the wall
 	const std::vector<GridVector> v = {
-		vec(0, 0, 3, 0, S), vec(3, 0, 3.9, 0, D), vec(3, 0, 3, 0.9, S),  // wall, closed and open states
+		vec(0, 0, 3, 0, S),
+		vec(3, 0, 3.9, 0, D),
+		vec(3, 0, 3, 0.9, S),  // wall, closed and open states
 		vec(3.15, 0.05, 3.93, 0.5, S),  // opened to 30 deg once: 0.16 m from the hinge
 		vec(3.15, -0.05, 3.15, -0.95, S),  // from the hinge but away from the swept arc
 		vec(3.1, 0.1, 3.4, 0.5, S),  // a leaf seen in part (0.5 m, at 53 deg): part of a state
@@ -255,8 +255,8 @@ TEST(DoorDetector, AStaticLeafActingAsTheWallIsAStateAndTheLongWallIsTheDoorsWal
 	// a wall merged across the doorway runs through the hinge (0, 0), the closed leaf inside
 	// it (+y); open states at 15 deg (static: Eq. 6 kept it), 33 and 52 deg (dynamic). The T
 	// corners on the long wall have no state along it; the 15 deg leaf is the others' wall
-	const std::vector<GridVector> v = {vec(0, -2, 0, 3, S), polarVec(0, 0, 0, 0.82, 15, S), polarVec(0, 0, 0, 0.84, 52, D),
-									   polarVec(0, 0, 0, 0.87, 33, D)};
+	const std::vector<GridVector> v = {vec(0, -2, 0, 3, S), polarVec(0, 0, 0, 0.82, 15, S),
+									   polarVec(0, 0, 0, 0.84, 52, D), polarVec(0, 0, 0, 0.87, 33, D)};
 	const auto doors = DoorDetector().detect(v);
 	ASSERT_EQ(doors.size(), 1u);
 	EXPECT_EQ(doors[0].wall, 0u);
@@ -272,8 +272,8 @@ TEST(DoorDetector, TheClosedLeafInsideAWallMergedAcrossTheDoorwayIsDynamic)
 {
 	// as above: the wall runs through the hinge and on past it on the states' side (+y), no
 	// state lies along it: the closed leaf is inside the wall, from the hinge up one leaf length
-	const std::vector<GridVector> v = {vec(0, -2, 0, 3, S), polarVec(0, 0, 0, 0.82, 15, S), polarVec(0, 0, 0, 0.84, 52, D),
-									   polarVec(0, 0, 0, 0.87, 33, D)};
+	const std::vector<GridVector> v = {vec(0, -2, 0, 3, S), polarVec(0, 0, 0, 0.82, 15, S),
+									   polarVec(0, 0, 0, 0.84, 52, D), polarVec(0, 0, 0, 0.87, 33, D)};
 	const DoorDetector det;
 	const auto doors = det.detect(v);
 	ASSERT_EQ(doors.size(), 1u);
@@ -299,8 +299,9 @@ TEST(DoorDetector, TheSweptArcRunsFromTheWallsLineThroughTheStates)
 	// is a state, one at -150 deg is not
 	DoorOptions o;
 	o.maxCornerGap = 0.1;
-	const std::vector<GridVector> v = {vec(0, 0, 3, 0, S), polarVec(3, 0, 0, 0.9, -45, D), polarVec(3, 0, 0, 0.85, -79, D),
-									   polarVec(3, 0, 0.22, 0.8, -5, S), polarVec(3, 0, 0.22, 0.8, -150, S)};
+	const std::vector<GridVector> v = {vec(0, 0, 3, 0, S), polarVec(3, 0, 0, 0.9, -45, D),
+									   polarVec(3, 0, 0, 0.85, -79, D), polarVec(3, 0, 0.22, 0.8, -5, S),
+									   polarVec(3, 0, 0.22, 0.8, -150, S)};
 	const auto doors = DoorDetector(o).detect(v);
 	ASSERT_EQ(doors.size(), 1u);
 	std::vector<size_t> leaves = doors[0].leaves;
@@ -326,7 +327,8 @@ TEST(DoorDetector, PeopleByAWallMakeNoDoor)
 	// two people tracks of door length ending on a wall's interior at nearly one point, at
 	// different angles: T corners, but no state along the wall (the closed state a door inside
 	// a merged wall has), so no door
-	const std::vector<GridVector> v = {vec(0, 5, 0, 15, S), vec(0, 14.1, 0.75, 14.36, D), vec(0, 13.93, 0.72, 13.72, D)};
+	const std::vector<GridVector> v = {vec(0, 5, 0, 15, S), vec(0, 14.1, 0.75, 14.36, D),
+									   vec(0, 13.93, 0.72, 13.72, D)};
 	EXPECT_TRUE(DoorDetector().detect(v).empty());
 }
 
@@ -388,9 +390,9 @@ TEST(DoorDetector, StatesAllNearTheWallsLineAreNoDoor)
 {
 	// a wall ending at (3, 0) whose continuation was seen dynamic in two kinked pieces (+-15 deg
 	// from the wall's line, as on the real logs' corridor walls): no state turned from the wall
-	const std::vector<GridVector> kinked = {
-		vec(0, 0, 3, 0, S), vec(3, 0, 3 + 0.8 * std::cos(0.26), 0.8 * std::sin(0.26), D),
-		vec(3, 0, 3 + 0.8 * std::cos(-0.26), 0.8 * std::sin(-0.26), D)};
+	const std::vector<GridVector> kinked = {vec(0, 0, 3, 0, S),
+											vec(3, 0, 3 + 0.8 * std::cos(0.26), 0.8 * std::sin(0.26), D),
+											vec(3, 0, 3 + 0.8 * std::cos(-0.26), 0.8 * std::sin(-0.26), D)};
 	EXPECT_TRUE(DoorDetector().detect(kinked).empty());
 	// a leaf seen open by 40 deg next to the same +15 deg state is a door
 	std::vector<GridVector> open = kinked;

@@ -46,8 +46,7 @@ GridVector child(double x1, double y1, double x2, double y2, VectorState s, int6
 // state long); a wall far away.
 std::vector<GridVector> doorWorld()
 {
-	return {child(0, 0, 3, 0, S, 0, 1),  child(4, 0, 6, 0, S, 0, 2),
-			child(3.02, 0.03, 3.02, 0.92, D, 1, 3),  // open
+	return {child(0, 0, 3, 0, S, 0, 1), child(4, 0, 6, 0, S, 0, 2), child(3.02, 0.03, 3.02, 0.92, D, 1, 3),  // open
 			child(3.01, 0.0, 3.64, 0.64, S, 2, 4),  // half open, kept static by Eq. 6
 			child(6, 5, 0, 5, S, 2, 5)};
 }
@@ -120,7 +119,8 @@ TEST(DoorExclusion, DoorsAccumulateAndCutAWallAlongAState)
 	EXPECT_FALSE(has(kept, later[2].id));  // the static half-open leaf: still out
 	EXPECT_EQ(fig.excluded, 1u);
 	EXPECT_EQ(fig.cut, 1u);
-	const auto piece = std::find_if(kept.begin(), kept.end(), [&](const GridVector& v) { return v.id == later.back().id; });
+	const auto piece =
+		std::find_if(kept.begin(), kept.end(), [&](const GridVector& v) { return v.id == later.back().id; });
 	ASSERT_NE(piece, kept.end());
 	EXPECT_NEAR(piece->start().y, 0.9, 0.11);
 	EXPECT_NEAR(piece->end().y, 2.0, 1e-9);
@@ -169,11 +169,12 @@ std::vector<size_t> registered(const GridVectorConfig& cfg, const std::vector<Lo
 {
 	std::vector<size_t> out;
 	EmSlam em(cfg);
-	em.setMStepObserver([&](int, const MStep&, const std::vector<std::vector<MatchSegment>>& statics, const std::vector<size_t>&) {
-		size_t n = 0;
-		for (const auto& s : statics) n += s.size();
-		out.push_back(n);
-	});
+	em.setMStepObserver(
+		[&](int, const MStep&, const std::vector<std::vector<MatchSegment>>& statics, const std::vector<size_t>&) {
+			size_t n = 0;
+			for (const auto& s : statics) n += s.size();
+			out.push_back(n);
+		});
 	res = em.run(scans, odo);
 	return out;
 }

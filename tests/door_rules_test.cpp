@@ -259,8 +259,8 @@ TEST(WallAsState, AStaticLeafActingAsTheWallIsAStateOfTheLongWallsDoor)
 {
 	const DoorOptions o;
 	// a wall through the hinge (0, 0); the corners' "wall" was the 15 deg static leaf
-	const std::vector<GridVector> v = {vec(0, -2, 0, 3, S), polarVec(0, 0, 0, 0.82, 15, S), polarVec(0, 0, 0, 0.84, 52, D),
-									   polarVec(0, 0, 0, 0.87, 33, D)};
+	const std::vector<GridVector> v = {vec(0, -2, 0, 3, S), polarVec(0, 0, 0, 0.82, 15, S),
+									   polarVec(0, 0, 0, 0.84, 52, D), polarVec(0, 0, 0, 0.87, 33, D)};
 	Door d = doorAt(TPoint2D(0, 0), 0.855, {33, 52}, 1);
 	d.leaves = {2, 3};
 	std::vector<bool> taken = {false, false, true, true};

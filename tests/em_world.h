@@ -4,7 +4,7 @@
 #pragma once
 
 #include <gridvector/GridVector.h>
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 #include "extraction/VectorExtractor.h"
 #include "mstep/VectorMatcher.h"
 
@@ -78,12 +78,12 @@ inline std::vector<TPose2D> odometryOf(const std::vector<TPose2D>& truth, unsign
 	std::vector<TPose2D> o{TPose2D(0, 0, 0)};
 	for (size_t i = 1; i < truth.size(); ++i)
 	{
-		TPose2D d = gridvector::se2::relative(truth[i - 1], truth[i]);
+		TPose2D d = truth[i] - truth[i - 1];
 		const double dist = std::hypot(d.x, d.y);
 		d.x *= 1 + 0.03 * n(rng);
 		d.y *= 1 + 0.03 * n(rng);
 		d.phi += 0.01 * n(rng) + driftDegPerM * M_PI / 180 * dist;
-		o.push_back(gridvector::se2::compose(o.back(), d));
+		o.push_back(o.back() + d);
 	}
 	return o;
 }
@@ -126,11 +126,11 @@ inline gridvector::LocalScan observe(const std::vector<Wall>& walls, const TPose
 inline double ate(const std::vector<TPose2D>& est, const std::vector<TPose2D>& truth)
 {
 	// align the first poses, then RMS of the positions
-	const TPose2D d = gridvector::se2::compose(truth[0], gridvector::se2::relative(est[0], TPose2D(0, 0, 0)));
+	const TPose2D d = truth[0] + (TPose2D(0, 0, 0) - est[0]);
 	double s = 0;
 	for (size_t i = 0; i < est.size(); ++i)
 	{
-		const TPose2D e = gridvector::se2::compose(d, est[i]);
+		const TPose2D e = d + est[i];
 		s += std::pow(e.x - truth[i].x, 2) + std::pow(e.y - truth[i].y, 2);
 	}
 	return std::sqrt(s / est.size());

@@ -44,7 +44,9 @@ TEST(EngineOptions, EveryGraphslamIniMrptAndWeShipLoadsWithMrptsValues)
 		EXPECT_EQ(o.graphName, c.read_string(s, "save_graph_fname", d.graphName)) << path;
 		EXPECT_EQ(o.saveMap, c.read_bool(s, "save_map", d.saveMap)) << path;
 		EXPECT_EQ(o.mapName, c.read_string(s, "save_map_fname", d.mapName)) << path;
-		EXPECT_EQ(o.userDecidesAboutOutputDir, c.read_bool(s, "user_decides_about_output_dir", d.userDecidesAboutOutputDir)) << path;
+		EXPECT_EQ(o.userDecidesAboutOutputDir,
+				  c.read_bool(s, "user_decides_about_output_dir", d.userDecidesAboutOutputDir))
+			<< path;
 		EXPECT_EQ(o.classVerbosity, c.read_int(s, "class_verbosity", d.classVerbosity)) << path;
 		EXPECT_EQ(o.lcMinNodeIdDiff, c.read_int(s, "LC_min_nodeid_diff", d.lcMinNodeIdDiff)) << path;
 	}
@@ -69,7 +71,8 @@ TEST(EngineOptions, ValuesMrptWouldMisreadAreRefused)
 	EXPECT_EQ(loadError("[GeneralConfiguration]\nclass_verbosity = 9\n"),
 			  "a.ini: [GeneralConfiguration] class_verbosity = '9' must be in 0..3");
 	// MRPT's keys this does not read stay MRPT's (the section is shared)
-	EXPECT_EQ(loadError("[GeneralConfiguration]\nsave_3DScene_fname = x.3DScene\nground_truth_file_format = rgbd_TUM\n"), "");
+	EXPECT_EQ(
+		loadError("[GeneralConfiguration]\nsave_3DScene_fname = x.3DScene\nground_truth_file_format = rgbd_TUM\n"), "");
 }
 
 TEST(EngineOptions, ValuesEndAsInMrptsGraphslamFiles)

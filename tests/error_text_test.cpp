@@ -23,10 +23,7 @@ TEST(ErrorText, MrptExceptionsKeepOnlyTheMessage)
 	}
 }
 
-TEST(ErrorText, LongMessagesAreCut)
-{
-	EXPECT_EQ(gridvector::oneLineError(std::string(1000, 'x'), 50).size(), 50u);
-}
+TEST(ErrorText, LongMessagesAreCut) { EXPECT_EQ(gridvector::oneLineError(std::string(1000, 'x'), 50).size(), 50u); }
 
 TEST(ErrorText, BracketedPrefixesAreKeptButFramesDropped)
 {

@@ -10,7 +10,8 @@ using mrpt::math::TPoint2D;
 
 namespace
 {
-// A vector of occ.size() columns (3 m at the default 0.1 m) whose centre-row cells have occupancy `occ[c]`, well observed.
+// A vector of occ.size() columns (3 m at the default 0.1 m) whose centre-row cells have occupancy `occ[c]`, well
+// observed.
 GridVector withProfile(const std::vector<double>& occ, double resolution = 0.1)
 {
 	GridOptions g;
@@ -90,8 +91,7 @@ TEST(EStep, ChildrenAreSubGridsOfTheParent)
 	EXPECT_NEAR(kids[1].start().x, 2.0, 1e-9);
 	EXPECT_NEAR(kids[1].end().x, 3.0, 1e-9);
 	// cell by cell: the dynamic child's first column is the parent's column 10
-	for (int r = 0; r < parent.rows(); ++r)
-		EXPECT_EQ(kids[1].cell(r, 0).n_occupy, parent.cell(r, 10).n_occupy);
+	for (int r = 0; r < parent.rows(); ++r) EXPECT_EQ(kids[1].cell(r, 0).n_occupy, parent.cell(r, 10).n_occupy);
 	// the mean point of a cell is where it was
 	const TPoint2D a = kids[1].cellMeanPoint(parent.halfWidth(), 3), b = parent.cellMeanPoint(parent.halfWidth(), 13);
 	EXPECT_NEAR(a.x, b.x, 1e-6);
@@ -168,8 +168,8 @@ TEST(EStep, ChangedChildrenSeesEveryChangeOfMchd)
 	const EStepResult swapped = result({withProfile(runs({{100, 0.1}, {100, 0.9}}), 0.004), wall});
 	EXPECT_EQ(EStep::changedChildren(swapped, &before), std::vector<bool>({true, false}));
 	// a whole vector flips state: same id, same length
-	const EStepResult flipped = result({withProfile(runs({{100, 0.9}, {100, 0.1}}), 0.004),
-										withProfile(runs({{200, 0.1}}), 0.004)});
+	const EStepResult flipped =
+		result({withProfile(runs({{100, 0.9}, {100, 0.1}}), 0.004), withProfile(runs({{200, 0.1}}), 0.004)});
 	EXPECT_EQ(EStep::changedChildren(flipped, &before), std::vector<bool>({false, true}));
 	// one child more
 	const EStepResult three = result({withProfile(runs({{100, 0.9}, {100, 0.1}}), 0.004),
@@ -177,8 +177,8 @@ TEST(EStep, ChangedChildrenSeesEveryChangeOfMchd)
 	EXPECT_EQ(EStep::changedChildren(three, &before), std::vector<bool>({false, true}));
 	// the same vectors carried along a moved trajectory: only float noise in their lengths, no change
 	const mrpt::math::TPose2D pose(3.7, -12.1, 0.83);
-	const EStepResult carried = result({withProfile(runs({{100, 0.9}, {100, 0.1}}), 0.004).compose(pose),
-										wall.compose(pose)});
+	const EStepResult carried =
+		result({withProfile(runs({{100, 0.9}, {100, 0.1}}), 0.004).compose(pose), wall.compose(pose)});
 	ASSERT_NEAR(carried.children[0].length(), before.children[0].length(), 1e-12);
 	EXPECT_EQ(EStep::changedChildren(carried, &before), std::vector<bool>({false, false}));
 	// before the first E-step every vector is its own single static child
@@ -337,7 +337,8 @@ TEST(EStep, CutUnobservedSplitsMergedVectorsAndTheirSources)
 	GridVector merged = withHole(30, 10, 20);  // (1, 1)-(4, 1), nothing seen in x 2..3
 	merged.id = 100;
 	merged.state = VectorState::Static;
-	GridVector left(TPoint2D(1, 1), TPoint2D(2, 1), GridOptions{}), right(TPoint2D(3, 1), TPoint2D(4, 1), GridOptions{});
+	GridVector left(TPoint2D(1, 1), TPoint2D(2, 1), GridOptions{}),
+		right(TPoint2D(3, 1), TPoint2D(4, 1), GridOptions{});
 	left.id = 1, right.id = 2;
 	MergeResult m;
 	m.vectors = {merged};

@@ -122,8 +122,10 @@ TEST(FalseStatic, TextAndJsonNameEveryCategory)
 	b.timeOrigin = 10;
 	const std::string text = eval::formatText(b);
 	EXPECT_NE(text.find("doors seen in two states 0.60"), std::string::npos) << text;
-	EXPECT_NE(text.find("door 1: 2 swings (open 90 deg), seen in one state, false static 0.00 m, 2 passes: [2-2 s, 1 scan, 1 deg]"),
-			  std::string::npos)
+	EXPECT_NE(
+		text.find(
+			"door 1: 2 swings (open 90 deg), seen in one state, false static 0.00 m, 2 passes: [2-2 s, 1 scan, 1 deg]"),
+		std::string::npos)
 		<< text;
 	EXPECT_NE(text.find("swings at 15-16 s (0->57) 25-26 s (57->0)"), std::string::npos) << text;
 	const nlohmann::ordered_json json = eval::toJson(b);

@@ -15,9 +15,9 @@
 #include "wall_pieces.h"
 
 using namespace gridvector;
+using gvtest::wallPiece;
 using mrpt::math::TPoint2D;
 using mrpt::math::TPose2D;
-using gvtest::wallPiece;
 
 namespace
 {
@@ -34,8 +34,7 @@ struct Sequence
 	std::vector<LocalScan> scans;
 };
 
-Sequence extractAll(const std::vector<TPose2D>& poses,
-					const std::function<std::vector<gvtest::Seg>(size_t)>& world)
+Sequence extractAll(const std::vector<TPose2D>& poses, const std::function<std::vector<gvtest::Seg>(size_t)>& world)
 {
 	Sequence s;
 	const VectorExtractor ex;
@@ -98,8 +97,7 @@ void expectPersonFadedAndWallKept(const std::vector<GridVector>& map)
 	for (double x = -2; x <= 2; x += 0.1)
 		EXPECT_GT(OccupancyConversion::occupancyAt(map, {x, 3.0}), 0.8) << "wall at x=" << x;
 	// between robot and wall: free
-	for (double x = -1.5; x <= 1.5; x += 0.3)
-		EXPECT_LE(OccupancyConversion::occupancyAt(map, {x, 2.0}), 0.5) << x;
+	for (double x = -1.5; x <= 1.5; x += 0.3) EXPECT_LE(OccupancyConversion::occupancyAt(map, {x, 2.0}), 0.5) << x;
 }
 }  // namespace
 
@@ -110,8 +108,7 @@ TEST(GlobalMap, PersonWalkingPastAWallFadesSequential)
 	for (size_t t = 0; t < seq.scans.size(); ++t) map.insertScan(seq.poses[t], seq.scans[t]);
 	// the person was extracted as vectors in its scans
 	bool personSeen = false;
-	for (const auto& v : seq.scans[2].vectors)
-		personSeen |= std::abs(v.compose(seq.poses[2]).centre().y - 1.5) < 0.05;
+	for (const auto& v : seq.scans[2].vectors) personSeen |= std::abs(v.compose(seq.poses[2]).centre().y - 1.5) < 0.05;
 	ASSERT_TRUE(personSeen);
 	expectPersonFadedAndWallKept(map.vectors());
 	// the wall merged into few vectors, the person's vectors are dynamic-looking
@@ -173,14 +170,14 @@ TEST(GlobalMap, SequentialMergingConservesPointsAndFindsTheRoom)
 
 TEST(GlobalMap, LaterScanWipesEarlierVectorsButNotItsOwn)
 {
-	const Sequence seq = extractAll({TPose2D(0, 0, M_PI / 2), TPose2D(0, 0, M_PI / 2)},
-									[](size_t) { return std::vector<gvtest::Seg>{{3, 2, -3, 2}}; });
+	const Sequence seq = extractAll({TPose2D(0, 0, M_PI / 2), TPose2D(0, 0, M_PI / 2)}, [](size_t) {
+		return std::vector<gvtest::Seg>{{3, 2, -3, 2}};
+	});
 	for (const bool beams : {false, true})
 	{
 		GridVectorConfig cfg;
 		cfg.map.mergeOnInsert = false;
-		cfg.map.wipeCountsBeams = beams;
-		GlobalMap map(cfg);
+		GlobalMap map(cfg, beams);
 		map.insertScan(seq.poses[0], seq.scans[0]);
 		ASSERT_EQ(map.size(), 1u);
 		const double occ0 = map.vectors()[0].totalOccupy(), vis0 = map.vectors()[0].totalVisit();
@@ -205,13 +202,14 @@ TEST(GlobalMap, LaterScanWipesEarlierVectorsButNotItsOwn)
 		}
 		EXPECT_DOUBLE_EQ(map.vectors()[1].totalOccupy(), seq.scans[1].vectors[0].totalOccupy());
 		EXPECT_GT(map.lastInsertStats().wipe.cellsHit, 0u);
-		// batch: each per-scan vector is wiped by the other scan only
+		// batch: each per-scan vector is wiped by the other scan only, in the batch's unit
 		const auto all = GlobalMap::buildPerScan(seq.poses, seq.scans, cfg);
 		ASSERT_EQ(all.size(), 2u);
 		for (int i = 0; i < 2; ++i)
 		{
 			const double gain = all[i].totalOccupy() - seq.scans[size_t(i)].vectors[0].totalOccupy();
-			const double want = beams ? seq.scans[size_t(1 - i)].vectors[0].totalPoints() : all[i].cols();
+			const double want =
+				GlobalMap::kBatchWipeCountsBeams ? seq.scans[size_t(1 - i)].vectors[0].totalPoints() : all[i].cols();
 			EXPECT_NEAR(gain, want, 0.05 * want);
 			EXPECT_EQ(all[i].scanIndex, i);
 			EXPECT_EQ(all[i].id, uint64_t(i + 1));
@@ -268,7 +266,8 @@ TEST(GlobalMap, MergeAllReportsSourcesAndConserves)
 		occOut += r.vectors[k].totalOccupy(), visOut += r.vectors[k].totalVisit();
 		EXPECT_TRUE(std::is_sorted(r.sources[k].begin(), r.sources[k].end()));
 		seen.insert(r.sources[k].begin(), r.sources[k].end());
-		if (r.sources[k].size() == 1) EXPECT_EQ(r.vectors[k].id, r.sources[k][0]);
+		if (r.sources[k].size() == 1)
+			EXPECT_EQ(r.vectors[k].id, r.sources[k][0]);
 		else
 		{
 			EXPECT_GT(r.vectors[k].id, all.size());
@@ -341,10 +340,19 @@ TEST(GlobalMap, NoisyPassesOfOneWallEndAsOneVector)
 	{
 		const bool s = std::abs(v.centre().y + 1.2) < 0.2, n = std::abs(v.centre().y - 1.2) < 0.2;
 		south += s, north += n;
-		if (s || n) { EXPECT_GT(v.length(), 11.5); }
+		if (s || n)
+		{
+			EXPECT_GT(v.length(), 11.5);
+		}
 		// no drift: the merged walls keep the walls' direction
-		if (s) { EXPECT_LT(std::abs(mrpt::math::wrapToPi(v.psi())), 0.5 * M_PI / 180) << v.psi(); }
-		if (n) { EXPECT_LT(std::abs(mrpt::math::wrapToPi(v.psi() - M_PI)), 0.5 * M_PI / 180) << v.psi(); }
+		if (s)
+		{
+			EXPECT_LT(std::abs(mrpt::math::wrapToPi(v.psi())), 0.5 * M_PI / 180) << v.psi();
+		}
+		if (n)
+		{
+			EXPECT_LT(std::abs(mrpt::math::wrapToPi(v.psi() - M_PI)), 0.5 * M_PI / 180) << v.psi();
+		}
 	}
 	EXPECT_EQ(south, 1);
 	EXPECT_EQ(north, 1);
@@ -501,10 +509,9 @@ TEST(GlobalMap, RefusedMergeStillGetsTheScansHits)
 	for (const bool beams : {false, true})
 	{
 		GridVectorConfig cfg;
-		cfg.map.wipeCountsBeams = beams;
 		GridVectorConfig noMerge = cfg;
 		noMerge.map.mergeOnInsert = false;
-		GlobalMap merging(cfg), separate(noMerge);
+		GlobalMap merging(cfg, beams), separate(noMerge, beams);
 		for (GlobalMap* m : {&merging, &separate})
 		{
 			m->insertScan(TPose2D(0, 0, 0), first);

@@ -1,7 +1,7 @@
 // GraphOptimisation (Eq. 20-22): the pose graph over odometry and registrations, its chi2 rejections and
 // how often a rejected pair comes back (mstep.reconsider_rejected, reconsider_limit).
 #include "mstep/GraphOptimisation.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <gtest/gtest.h>
 
@@ -30,7 +30,7 @@ struct Line
 		c.from = from;
 		c.to = to;
 		c.kind = EdgeKind::Overlap;
-		c.z = se2::relative(truth[from], truth[to]);
+		c.z = truth[to] - truth[from];
 		c.z.y += errorY;
 		c.information = Eigen::Vector3d(1e4, 1e4, 1e5).asDiagonal();
 		c.correspondences = {{1, 2}};
@@ -63,7 +63,8 @@ TEST(GraphOptimisation, ARejectionStandsAfterTheLimit)
 	const GridVectorConfig cfg;
 	ASSERT_TRUE(cfg.mstep.reconsiderRejected);
 	GraphOptimisation opt(cfg);
-	std::map<EdgeKey, Constraint> edges{{{0, 10}, l.edge(0, 10)}, {{2, 10}, l.edge(2, 10)}, {{1, 10}, l.edge(1, 10, 2.0)}};
+	std::map<EdgeKey, Constraint> edges{
+		{{0, 10}, l.edge(0, 10)}, {{2, 10}, l.edge(2, 10)}, {{1, 10}, l.edge(1, 10, 2.0)}};
 	const int limit = cfg.mstep.reconsiderLimit;
 	ASSERT_GT(limit, 0);
 	for (int step = 1; step <= kReconsiderFreeSteps + limit + 1; ++step)

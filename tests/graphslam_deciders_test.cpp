@@ -162,8 +162,7 @@ TEST(graphslam_options, unknown_own_key_names_file_section_and_key)
 		EXPECT_STREQ(ex.what(), "my.ini: unknown key 'max_distanse' in section [GridVectorERD]");
 	}
 	NodeDeciderOptions n;
-	EXPECT_THROW(n.load(ini("[GridVectorNRD]\nregistration_max_distance = 1\n"), "my.ini"),
-				 std::runtime_error);
+	EXPECT_THROW(n.load(ini("[GridVectorNRD]\nregistration_max_distance = 1\n"), "my.ini"), std::runtime_error);
 }
 
 TEST(graphslam_options, out_of_range_values_are_rejected)
@@ -207,10 +206,12 @@ TEST(graphslam_options, out_of_range_values_are_errors_naming_file_section_key_v
 	const std::vector<std::pair<std::string, std::string>> edgeBad = {
 		{"[GeneralConfiguration]\nLC_min_nodeid_diff = 0\n",
 		 "a.ini: [GeneralConfiguration] LC_min_nodeid_diff = '0' must be >= 1"},
-		{"[GridVectorERD]\nmin_matched_share = 1.5\n", "a.ini: [GridVectorERD] min_matched_share = '1.5' must be in (0, 1]"},
+		{"[GridVectorERD]\nmin_matched_share = 1.5\n",
+		 "a.ini: [GridVectorERD] min_matched_share = '1.5' must be in (0, 1]"},
 		{"[GridVectorERD]\npass_gap = 0\n", "a.ini: [GridVectorERD] pass_gap = '0' must be >= 1"},
 		{"[GridVectorERD]\nsequential_window = -2\n", "a.ini: [GridVectorERD] sequential_window = '-2' must be >= 0"},
-		{"[GridVectorERD]\nsearch_angle_deg = 90\n", "a.ini: [GridVectorERD] search_angle_deg = '90' must be in [0, 90)"}};
+		{"[GridVectorERD]\nsearch_angle_deg = 90\n",
+		 "a.ini: [GridVectorERD] search_angle_deg = '90' must be in [0, 90)"}};
 	for (const auto& [text, expected] : edgeBad) EXPECT_EQ(loadError<EdgeDeciderOptions>(text), expected);
 }
 
@@ -234,7 +235,8 @@ TEST(graphslam_options, values_are_read_whole_not_by_their_first_digits)
 TEST(graphslam_options, values_end_as_in_mrpts_graphslam_files)
 {
 	EdgeDeciderOptions e;
-	e.load(ini("[GeneralConfiguration]\nLC_min_nodeid_diff = 12;\n[EdgeRegistrationDeciderParameters]\nclass_verbosity = 0 // debug\n"
+	e.load(ini("[GeneralConfiguration]\nLC_min_nodeid_diff = 12;\n[EdgeRegistrationDeciderParameters]\nclass_verbosity "
+			   "= 0 // debug\n"
 			   "[GridVectorERD]\nmax_distance = 4.5;\nsearch_offset = 0.25 ; m\nmatch_previous_node = true # x\n"
 			   "pass_gap = 7; once a pass\n"),
 		   "t.ini");
@@ -259,10 +261,15 @@ TEST(graphslam_options, every_graphslam_ini_mrpt_and_we_ship_loads_with_mrpts_va
 		ASSERT_NO_THROW(e.load(c, path)) << path;
 		const char* ns = NodeDeciderOptions::sharedSection;
 		const char* es = EdgeDeciderOptions::sharedSection;
-		EXPECT_EQ(n.registrationMaxDistance, c.read_double(ns, "registration_max_distance", nDefault.registrationMaxDistance)) << path;
-		EXPECT_EQ(n.registrationMaxAngleDeg, c.read_double(ns, "registration_max_angle", nDefault.registrationMaxAngleDeg)) << path;
+		EXPECT_EQ(n.registrationMaxDistance,
+				  c.read_double(ns, "registration_max_distance", nDefault.registrationMaxDistance))
+			<< path;
+		EXPECT_EQ(n.registrationMaxAngleDeg,
+				  c.read_double(ns, "registration_max_angle", nDefault.registrationMaxAngleDeg))
+			<< path;
 		EXPECT_EQ(n.classVerbosity, c.read_int(ns, "class_verbosity", nDefault.classVerbosity)) << path;
-		EXPECT_EQ(e.lcMinNodeIdDiff, c.read_int("GeneralConfiguration", "LC_min_nodeid_diff", eDefault.lcMinNodeIdDiff)) << path;
+		EXPECT_EQ(e.lcMinNodeIdDiff, c.read_int("GeneralConfiguration", "LC_min_nodeid_diff", eDefault.lcMinNodeIdDiff))
+			<< path;
 		EXPECT_EQ(e.classVerbosity, c.read_int(es, "class_verbosity", eDefault.classVerbosity)) << path;
 	}
 }
@@ -369,9 +376,10 @@ TEST(graphslam_deciders, nodes_follow_the_truth_better_than_odometry_and_edges_a
 	mrpt::graphs::CNetworkOfPoses2DInf graph;
 	CGridVectorNRD nrd;
 	CGridVectorERD erd;
-	const auto cfg = ini("[NodeRegistrationDeciderParameters]\nregistration_max_distance = 0.5\n"
-						 "[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 30\n"
-						 "[GridVectorERD]\nmatch_previous_node = true\n");
+	const auto cfg =
+		ini("[NodeRegistrationDeciderParameters]\nregistration_max_distance = 0.5\n"
+			"[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 30\n"
+			"[GridVectorERD]\nmatch_previous_node = true\n");
 	nrd.loadOptions(cfg, "mem");
 	erd.loadOptions(cfg, "mem");
 	nrd.setGraphPtr(&graph);

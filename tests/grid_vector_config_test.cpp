@@ -32,7 +32,6 @@ TEST(GridVectorConfig, DefaultsAreGvEmSlamsMeasuredValues)
 	EXPECT_EQ(c.extraction.minPoints, 3);
 	EXPECT_DOUBLE_EQ(c.extraction.minLength, 0.12);
 	EXPECT_DOUBLE_EQ(c.extraction.maxPointGap, 1.0);
-	EXPECT_FALSE(c.map.wipeCountsBeams);  // Fig. 2's unit
 	EXPECT_TRUE(c.matcher.stepWithinGates);
 	EXPECT_TRUE(c.mstep.overlapReregisterMoved);
 	EXPECT_TRUE(c.mstep.sequentialOdometryGuess);
@@ -178,7 +177,9 @@ TEST(GridVectorConfig, MisspeltSectionIsAnErrorNamingIt)
 			  "my.ini: unknown section [gridvector_gird] (the gridvector_ sections are extraction, grid, map, estep, "
 			  "matcher, posegraph, mstep, doors, occupancy, matching)");
 	// MRPT matches section names case-insensitively: so do we, and other programs' sections pass
-	EXPECT_EQ(loadError("[GridVector_Grid]\nresolution = 0.05\n[gv_sim]\nseed = 3\n[GridVectorNRD]\nuse_odometry = true\n"), "");
+	EXPECT_EQ(
+		loadError("[GridVector_Grid]\nresolution = 0.05\n[gv_sim]\nseed = 3\n[GridVectorNRD]\nuse_odometry = true\n"),
+		"");
 	GridVectorConfig c;
 	c.loadFromConfigFile(mrpt::config::CConfigFileMemory("[GridVector_Grid]\nresolution = 0.05\n"));
 	EXPECT_DOUBLE_EQ(c.grid.resolution, 0.05);
@@ -224,7 +225,7 @@ TEST(GridVectorConfig, NonFiniteValueSetFromCodeIsRejected)
 		EXPECT_EQ(std::string(e.what()), "[gridvector_map] hit_band = 'inf' must be finite");
 	}
 	GridVectorConfig d;
-	d.doors.leafChainGap = std::nan("");
+	d.doors.maxCornerGap = std::nan("");
 	EXPECT_THROW(d.validate(), std::invalid_argument);
 	EXPECT_NO_THROW(GridVectorConfig().validate());
 }
@@ -236,38 +237,49 @@ TEST(GridVectorConfig, OutOfRangeValuesAreErrorsNamingFileSectionKeyValueAndWhy)
 {
 	const std::vector<std::pair<std::string, std::string>> bad = {
 		{"[gridvector_estep]\nmin_visits = -1\n", "my.ini: [gridvector_estep] min_visits = '-1' must be in [0, 1000]"},
-		{"[gridvector_estep]\nstatic_threshold = 1\n", "my.ini: [gridvector_estep] static_threshold = '1' must be in (0, 1)"},
+		{"[gridvector_estep]\nstatic_threshold = 1\n",
+		 "my.ini: [gridvector_estep] static_threshold = '1' must be in (0, 1)"},
 		{"[gridvector_estep]\nfinal_static_threshold = 1.2\n",
 		 "my.ini: [gridvector_estep] final_static_threshold = '1.2' must be in [0, 1]"},
-		{"[gridvector_extraction]\nmin_range = -0.5\n", "my.ini: [gridvector_extraction] min_range = '-0.5' must be in [0, 10]"},
+		{"[gridvector_extraction]\nmin_range = -0.5\n",
+		 "my.ini: [gridvector_extraction] min_range = '-0.5' must be in [0, 10]"},
 		{"[gridvector_extraction]\nbreak_angle_deg = 0\n",
 		 "my.ini: [gridvector_extraction] break_angle_deg = '0' must be in (0, 90)"},
-		{"[gridvector_extraction]\nmax_point_gap = 0\n", "my.ini: [gridvector_extraction] max_point_gap = '0' must be in (0, 10]"},
-		{"[gridvector_grid]\nprior_occupy = 2\n", "my.ini: [gridvector_grid] prior_occupy = '2' must be <= prior_visit (1)"},
-		{"[gridvector_map]\nmax_rho_diff = -0.1\n", "my.ini: [gridvector_map] max_rho_diff = '-0.1' must be in [0, 10]"},
+		{"[gridvector_extraction]\nmax_point_gap = 0\n",
+		 "my.ini: [gridvector_extraction] max_point_gap = '0' must be in (0, 10]"},
+		{"[gridvector_grid]\nprior_occupy = 2\n",
+		 "my.ini: [gridvector_grid] prior_occupy = '2' must be <= prior_visit (1)"},
+		{"[gridvector_map]\nmax_rho_diff = -0.1\n",
+		 "my.ini: [gridvector_map] max_rho_diff = '-0.1' must be in [0, 10]"},
 		{"[gridvector_map]\nmax_direction_diff_deg = 200\n",
 		 "my.ini: [gridvector_map] max_direction_diff_deg = '200' must be in [0, 180]"},
 		{"[gridvector_matcher]\ngate_rho_final = 1\n",
 		 "my.ini: [gridvector_matcher] gate_rho_final = '1' must be <= gate_rho_initial (0.6)"},
-		{"[gridvector_matcher]\ndegenerate_ratio = 2\n", "my.ini: [gridvector_matcher] degenerate_ratio = '2' must be in [0, 1]"},
+		{"[gridvector_matcher]\ndegenerate_ratio = 2\n",
+		 "my.ini: [gridvector_matcher] degenerate_ratio = '2' must be in [0, 1]"},
 		{"[gridvector_matcher]\nmax_rms = 0\n", "my.ini: [gridvector_matcher] max_rms = '0' must be in (0, 1]"},
 		{"[gridvector_posegraph]\nodometry_sigma_xy_min = 0\n",
 		 "my.ini: [gridvector_posegraph] odometry_sigma_xy_min = '0' must be in (0, 10]"},
-		{"[gridvector_posegraph]\nreject_chi2 = -3\n", "my.ini: [gridvector_posegraph] reject_chi2 = '-3' must be in (0, 1e+09]"},
-		{"[gridvector_mstep]\noverlap_run_gap = 0\n", "my.ini: [gridvector_mstep] overlap_run_gap = '0' must be in [1, 1e+06]"},
-		{"[gridvector_mstep]\nreconsider_limit = -1\n", "my.ini: [gridvector_mstep] reconsider_limit = '-1' must be in [0, 1000]"},
+		{"[gridvector_posegraph]\nreject_chi2 = -3\n",
+		 "my.ini: [gridvector_posegraph] reject_chi2 = '-3' must be in (0, 1e+09]"},
+		{"[gridvector_mstep]\noverlap_run_gap = 0\n",
+		 "my.ini: [gridvector_mstep] overlap_run_gap = '0' must be in [1, 1e+06]"},
+		{"[gridvector_mstep]\nreconsider_limit = -1\n",
+		 "my.ini: [gridvector_mstep] reconsider_limit = '-1' must be in [0, 1000]"},
 		{"[gridvector_mstep]\noverlap_min_share = 1.25\n",
 		 "my.ini: [gridvector_mstep] overlap_min_share = '1.25' must be in [0, 1]"},
-		{"[gridvector_mstep]\nrecheck_gate_factor = 0.5\n",
-		 "my.ini: [gridvector_mstep] recheck_gate_factor = '0.5' must be in [1, 100]"},
+		{"[gridvector_mstep]\nloop_search_min_share = 1.5\n",
+		 "my.ini: [gridvector_mstep] loop_search_min_share = '1.5' must be in [0, 1]"},
 		{"[gridvector_mstep]\nloop_search_hypotheses = 0\n",
 		 "my.ini: [gridvector_mstep] loop_search_hypotheses = '0' must be in [1, 1000]"},
 		{"[gridvector_doors]\nmax_door_length = 0.5\n",
 		 "my.ini: [gridvector_doors] max_door_length = '0.5' must be >= min_door_length (0.6)"},
-		{"[gridvector_doors]\nmin_open_deg = 120\n", "my.ini: [gridvector_doors] min_open_deg = '120' must be in [0, 90]"},
+		{"[gridvector_doors]\nmin_state_diff_deg = 200\n",
+		 "my.ini: [gridvector_doors] min_state_diff_deg = '200' must be in [0, 180]"},
 		{"[gridvector_occupancy]\nmargin = -1\n", "my.ini: [gridvector_occupancy] margin = '-1' must be in [0, 100]"},
 		// every number that sizes a loop, an allocation or a geometry has an upper bound
-		{"[gridvector_matcher]\nmax_iterations = 100000\n", "my.ini: [gridvector_matcher] max_iterations = '100000' must be in [1, 1000]"},
+		{"[gridvector_mstep]\nmax_iterations = 100000\n",
+		 "my.ini: [gridvector_mstep] max_iterations = '100000' must be in [1, 1000]"},
 		{"[gridvector_grid]\nresolution = 5\n", "my.ini: [gridvector_grid] resolution = '5' must be in (0, 1]"}};
 	for (const auto& [text, expected] : bad) EXPECT_EQ(loadFailure(text), expected);
 	mrpt::config::CConfigFileMemory ini(bad[0].first);
@@ -276,8 +288,9 @@ TEST(GridVectorConfig, OutOfRangeValuesAreErrorsNamingFileSectionKeyValueAndWhy)
 	EXPECT_EQ(loadFailure("[m_00_estep]\nmin_visits = -2\n", "m_00", "map.ini"),
 			  "map.ini: [m_00_estep] min_visits = '-2' must be in [0, 1000]");
 	// the edges of the ranges are valid
-	EXPECT_EQ(loadFailure("[gridvector_estep]\nmin_visits = 0\nfinal_static_threshold = 1\n[gridvector_matcher]\ngate_rho_final = 0.6\n"
-						  "[gridvector_doors]\nmax_door_length = 0.6\n[gridvector_mstep]\nrecheck_gate_factor = 1\n"),
+	EXPECT_EQ(loadFailure("[gridvector_estep]\nmin_visits = 0\nfinal_static_threshold = "
+						  "1\n[gridvector_matcher]\ngate_rho_final = 0.6\n"
+						  "[gridvector_doors]\nmax_door_length = 0.6\n[gridvector_mstep]\nmax_iterations = 1\n"),
 			  "");
 }
 
@@ -330,7 +343,9 @@ TEST(GridVectorConfig, NamedValuesListEveryKeyAndSetThemBack)
 	a.extraction.minLength = 0.21;
 	const auto named = a.namedValues();
 	size_t keys = 0;
-	a.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto&, const char*, const gridvector::Range&) { ++keys; }); });
+	a.visitGroups([&](const char*, auto& g) {
+		g.visit([&](const char*, auto&, const char*, const gridvector::Range&) { ++keys; });
+	});
 	ASSERT_EQ(named.size(), keys);
 	EXPECT_EQ(named.front().first, "extraction.min_range");
 	GridVectorConfig b;
@@ -400,7 +415,8 @@ TEST(GridVectorConfig, ValuesThatAreNotNumbersAreErrorsNamingSectionKeyAndValue)
 	const std::vector<std::pair<std::string, std::string>> bad = {
 		{"[gridvector_grid]\nresolution = 0.o5\n", "[gridvector_grid] resolution = '0.o5' is not a finite number"},
 		{"[gridvector_grid]\nhalf_width = 1.5\n", "[gridvector_grid] half_width = '1.5' is not an integer"},
-		{"[gridvector_map]\nmerge_on_insert = ture\n", "[gridvector_map] merge_on_insert = 'ture' is not true or false"},
+		{"[gridvector_map]\nmerge_on_insert = ture\n",
+		 "[gridvector_map] merge_on_insert = 'ture' is not true or false"},
 		{"[gridvector_map]\nmax_rho_diff = nan\n", "'nan' is not a finite number"},
 		{"[gridvector_map]\nmax_rho_diff =\n", "max_rho_diff = '' is not a finite number"}};
 	for (const auto& [text, expected] : bad)
@@ -418,49 +434,12 @@ TEST(GridVectorConfig, ValuesThatAreNotNumbersAreErrorsNamingSectionKeyAndValue)
 			EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
 		}
 	}
-	mrpt::config::CConfigFileMemory ok("[gridvector_grid]\nresolution = 0.05   ; finer\nhalf_width = 2 # wider\n"
-									   "[gridvector_map]\nmerge_on_insert = No\n");
+	mrpt::config::CConfigFileMemory ok(
+		"[gridvector_grid]\nresolution = 0.05   ; finer\nhalf_width = 2 # wider\n"
+		"[gridvector_map]\nmerge_on_insert = No\n");
 	GridVectorConfig c;
 	c.loadFromConfigFile(ok, "gridvector", "ok.ini");
 	EXPECT_DOUBLE_EQ(c.grid.resolution, 0.05);
 	EXPECT_EQ(c.grid.halfWidth, 2);
 	EXPECT_FALSE(c.map.mergeOnInsert);
-}
-
-TEST(GridVectorConfig, MStepKeysFromTheCodeKeepTheirOldValuesAndRanges)
-{
-	const gridvector::MStepOptions m;
-	// the constants of MStep.cpp they replace
-	EXPECT_EQ(m.dropDistanceFactor, 1.5);
-	EXPECT_EQ(m.dropLengthShare, 0.5);
-	EXPECT_EQ(m.changedTranslation, 1e-3);
-	EXPECT_EQ(m.changedRotation, 1e-4);
-	EXPECT_EQ(m.movedGateShare, 0.5);
-	EXPECT_EQ(m.searchedNearDistance, 0.5);
-	EXPECT_EQ(m.searchedNearDeg * M_PI / 180, 10 * M_PI / 180);
-	EXPECT_EQ(m.loopWindowMinTranslation, 1.0);
-	EXPECT_EQ(m.loopWindowMinRotationDeg * M_PI / 180, 10 * M_PI / 180);
-	EXPECT_EQ(m.consistencyInfoXY, 1.0);
-	EXPECT_EQ(m.consistencyInfoPhi, 10.0);
-	EXPECT_EQ(m.consistencyChainVarXY, 1e-3);
-	EXPECT_EQ(m.consistencyChainVarPhi, 1e-4);
-	EXPECT_EQ(m.strongMinCorrespondences, 4);
-	EXPECT_EQ(m.strongMinShare, 0.4);
-	EXPECT_EQ(m.strongMinDegeneracy, 0.05);
-	EXPECT_EQ(m.loopCornerMinLength, 0.3);  // LoopSearch.cpp's constants
-	EXPECT_EQ(m.loopCornerMinAngleDeg * (M_PI / 180.0), 30 * (M_PI / 180.0));
-	EXPECT_EQ(m.loopCornerMaxGap, 1.0);
-	EXPECT_EQ(m.loopCornerTurnToleranceDeg * (M_PI / 180.0), 10 * (M_PI / 180.0));
-	EXPECT_EQ(m.loopDuplicateDistance, 0.1);
-	EXPECT_EQ(m.loopDuplicateDeg * (M_PI / 180.0), 2 * (M_PI / 180.0));
-	EXPECT_EQ(m.loopScoreGateFactor, 2.0);
-	EXPECT_EQ(m.loopDistinctDeg * (M_PI / 180.0), 5 * (M_PI / 180.0));
-	// the loop window's floor must not pass its ceiling (std::clamp's order)
-	GridVectorConfig c;
-	c.mstep.loopWindowMinTranslation = c.mstep.loopSearchMaxRadius;
-	EXPECT_NO_THROW(c.validate());
-	c.mstep.loopWindowMinTranslation = c.mstep.loopSearchMaxRadius + 0.1;
-	EXPECT_THROW(c.validate(), std::invalid_argument);
-	c = {}, c.mstep.consistencyInfoPhi = 0;  // the edge covariance must stay invertible
-	EXPECT_THROW(c.validate(), std::invalid_argument);
 }

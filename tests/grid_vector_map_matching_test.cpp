@@ -2,7 +2,7 @@
 // gate, decimation and ratios on a known map; CICP aligning scans against a map
 // built from other scans; dynamic vectors (a door state, a person) left out.
 #include <gridvector/GridVector.h>
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 #include <gtest/gtest.h>
 #include <mrpt/io/CMemoryStream.h>
 #include "map/GlobalMap.h"
@@ -255,16 +255,19 @@ TEST(GridVectorMapMatching, IcpClassicRecoversTheScanPoseFromA30cm5degGuess)
 	auto walls = corridorWorld();
 	walls.push_back({4, 0, 4, -0.9});
 	const TPose2D truths[] = {{2.3, 1.1, 0.3}, {4.6, 0.7, -0.2}, {7.2, 1.2, 0.1}, {8.0, 0.6, 2.8}};
-	const TPose2D offsets[] = {{0.3, 0, 5 * M_PI / 180}, {0, -0.3, -5 * M_PI / 180}, {-0.21, 0.21, 5 * M_PI / 180},
+	const TPose2D offsets[] = {{0.3, 0, 5 * M_PI / 180},
+							   {0, -0.3, -5 * M_PI / 180},
+							   {-0.21, 0.21, 5 * M_PI / 180},
 							   {0.21, 0.21, -5 * M_PI / 180}};
 	for (size_t k = 0; k < 4; ++k)
 	{
 		const CSimplePointsMap pts = scanPoints(scanOf(truths[k], walls, {}, 7 + k));
-		const TPose2D guess = gridvector::se2::compose(truths[k], offsets[k]);
+		const TPose2D guess = truths[k] + offsets[k];
 		const TPose2D est = icpAlign(map, pts, guess, mrpt::slam::icpClassic);
 		// 1 cm range noise on ~500 points and walls fitted from 12 such scans: a few mm; the
 		// tolerance is ICP's last correspondence gate's tenth (smallestThresholdDist 5 cm)
-		EXPECT_LT(std::hypot(est.x - truths[k].x, est.y - truths[k].y), 0.01) << "pose " << k << " est " << est.asString();
+		EXPECT_LT(std::hypot(est.x - truths[k].x, est.y - truths[k].y), 0.01)
+			<< "pose " << k << " est " << est.asString();
 		EXPECT_LT(angleErr(est.phi, truths[k].phi), 0.2 * M_PI / 180) << "pose " << k << " est " << est.asString();
 	}
 }
@@ -319,7 +322,7 @@ TEST(GridVectorMapMatching, DoorStateAndTrolleySeenOnlyEarlyGetNoCorrespondences
 	const auto moved = gvtest::box(5.9, 1.3, 6.7, 1.7);
 	now.insert(now.end(), moved.begin(), moved.end());
 	const CSimplePointsMap ptsNow = scanPoints(scanOf(truth, now, {}, 42));
-	const TPose2D guess = gridvector::se2::compose(truth, TPose2D(0.3, 0, 5 * M_PI / 180));
+	const TPose2D guess = truth + TPose2D(0.3, 0, 5 * M_PI / 180);
 	const TPose2D est = icpAlign(map, ptsNow, guess, mrpt::slam::icpClassic);
 	const TPose2D estAll = icpAlign(mapAll, ptsNow, guess, mrpt::slam::icpClassic);
 	EXPECT_LT(std::hypot(est.x - truth.x, est.y - truth.y), 0.01) << est.asString();
@@ -334,7 +337,7 @@ namespace
 {
 /** Every pair of a determineMatching2D call (vector, point, squared distance) and a nearest distance. */
 std::vector<std::tuple<uint32_t, uint32_t, float>> answersOf(const CGridVectorMap& m, const CSimplePointsMap& pts,
-															  const TPose2D& x)
+															 const TPose2D& x)
 {
 	TMatchingPairList pairs;
 	TMatchingExtraResults extra;

@@ -24,10 +24,7 @@ namespace
 {
 const auto kRoom = gvtest::room(-3, -2, 5, 3);
 
-mrpt::obs::CObservation2DRangeScan scanAt(const TPose2D& p)
-{
-	return gvtest::castScan(p, kRoom, {}, 361, M_PI);
-}
+mrpt::obs::CObservation2DRangeScan scanAt(const TPose2D& p) { return gvtest::castScan(p, kRoom, {}, 361, M_PI); }
 
 /** A CMultiMetricMap as MRPT's apps make one: from the map section "[map]" of an .ini text. */
 mrpt::maps::CMultiMetricMap multiMapFrom(const std::string& iniText)
@@ -86,7 +83,8 @@ TEST(CGridVectorMap, CreatedFromMultiMetricMapIniByShortName)
 
 TEST(CGridVectorMap, UnknownIniKeyIsRejected)
 {
-	mrpt::config::CConfigFileMemory ini("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_grid]\nresolushun = 0.05\n");
+	mrpt::config::CConfigFileMemory ini(
+		"[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_grid]\nresolushun = 0.05\n");
 	mrpt::maps::TSetOfMetricMapInitializers inits;
 	EXPECT_THROW(inits.loadFromConfigFile(ini, "map"), std::exception);
 }
@@ -107,14 +105,18 @@ TEST(CGridVectorMap, LikelihoodOptionsAreReadStrictly)
 {
 	for (const char* bad : {"sigma = abc", "sigma = 0", "decimation = 2.5", "zRandom = 1", "maxCorrDistance = nan"})
 	{
-		const std::string e = iniError(std::string("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_likelihoodOpts]\n") + bad + "\n");
+		const std::string e = iniError(
+			std::string("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_likelihoodOpts]\n") + bad + "\n");
 		const std::string key(bad, std::strchr(bad, ' '));
-		EXPECT_NE(e.find("[map_gridVectorMap_00_likelihoodOpts] " + key + " = "), std::string::npos) << bad << ": " << e;
+		EXPECT_NE(e.find("[map_gridVectorMap_00_likelihoodOpts] " + key + " = "), std::string::npos)
+			<< bad << ": " << e;
 	}
 	// the whole message: who read it, section, key, the text and what it should be
-	EXPECT_NE(iniError("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_likelihoodOpts]\nzRandom = 1\n")
-				  .find("CGridVectorMap config: [map_gridVectorMap_00_likelihoodOpts] zRandom = '1' is not a number in [0,1)"),
-			  std::string::npos);
+	EXPECT_NE(
+		iniError("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_likelihoodOpts]\nzRandom = 1\n")
+			.find(
+				"CGridVectorMap config: [map_gridVectorMap_00_likelihoodOpts] zRandom = '1' is not a number in [0,1)"),
+		std::string::npos);
 	EXPECT_NE(iniError("[map]\ngridVectorMap_count = 1\n[map_gridVectorMap_00_likelihoodOpts]\ndecimation = 0\n")
 				  .find("[map_gridVectorMap_00_likelihoodOpts] decimation = '0' is not an integer in [1,1000000]"),
 			  std::string::npos);
@@ -134,7 +136,8 @@ TEST(CGridVectorMap, LikelihoodOptionsAreReadStrictly)
 
 TEST(CGridVectorMap, SerializedInsideAMultiMetricMap)
 {
-	auto a = multiMapFrom("[map]\ngridVectorMap_count = 1\npointsMap_count = 1\n[map_gridVectorMap_00_grid]\nresolution = 0.05\n");
+	auto a = multiMapFrom(
+		"[map]\ngridVectorMap_count = 1\npointsMap_count = 1\n[map_gridVectorMap_00_grid]\nresolution = 0.05\n");
 	for (int k = 0; k < 3; ++k)
 	{
 		const TPose2D p(0.5 * k, 0.2, 0.4 + 0.8 * k);
@@ -260,7 +263,8 @@ TEST(CGridVectorMap, LikelihoodEqualsTheFieldOverEveryVector)
 		for (const TPose2D& at : {TPose2D(0.7, 0.4, 1.1), TPose2D(-1.5, 1.0, -2.0), TPose2D(3.5, -1.0, 0.3)})
 		{
 			const auto obs = scanAt(at);
-			for (const TPose2D& pose : {at, TPose2D(at.x + 0.12, at.y - 0.05, at.phi + 0.03), TPose2D(at.x - 0.4, at.y, at.phi)})
+			for (const TPose2D& pose :
+				 {at, TPose2D(at.x + 0.12, at.y - 0.05, at.phi + 0.03), TPose2D(at.x - 0.4, at.y, at.phi)})
 			{
 				double expected = 0;
 				const size_t n = obs.getScanSize();
@@ -282,8 +286,8 @@ TEST(CGridVectorMap, LikelihoodEqualsTheFieldOverEveryVector)
 					}
 					expected += std::log((1 - o.zRandom) * hit + o.zRandom);
 				}
-				EXPECT_NEAR(m.computeObservationLikelihood(obs, mrpt::poses::CPose3D(mrpt::poses::CPose2D(pose))), expected,
-							1e-6 * std::abs(expected))
+				EXPECT_NEAR(m.computeObservationLikelihood(obs, mrpt::poses::CPose3D(mrpt::poses::CPose2D(pose))),
+							expected, 1e-6 * std::abs(expected))
 					<< "decimation " << decimation << " pose " << pose.asString();
 			}
 		}

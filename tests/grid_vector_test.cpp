@@ -109,8 +109,7 @@ TEST(GridVector, ProfileFollowsCounts)
 
 TEST(GridVector, FromPartsValidatesCellCount)
 {
-	EXPECT_THROW(GridVector::fromParts(TPoint2D(0, 0), TPoint2D(1, 0), opts(), 10, {}),
-				 std::invalid_argument);
+	EXPECT_THROW(GridVector::fromParts(TPoint2D(0, 0), TPoint2D(1, 0), opts(), 10, {}), std::invalid_argument);
 	std::vector<GridCell> cells(30);
 	cells[4].n_acc = 2;
 	const GridVector v = GridVector::fromParts(TPoint2D(0, 0), TPoint2D(1, 0), opts(), 10, cells);

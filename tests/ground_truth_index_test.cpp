@@ -18,7 +18,10 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string tmp(const std::string& n) { return (fs::temp_directory_path() / ("gv_ground_truth_index_test_" + n)).string(); }
+std::string tmp(const std::string& n)
+{
+	return (fs::temp_directory_path() / ("gv_ground_truth_index_test_" + n)).string();
+}
 
 std::string errorOf(const std::function<void()>& f)
 {

@@ -174,6 +174,8 @@ TEST(GvmapFormat, RetiredKeysOfEarlierVersionsLoadAndAreIgnored)
 	writeVersion1(buf, {{"grid.resolution", 0.2}, {"estep.hysteresis", 0.1}, {"map.wipe_vectorless_beams", 1}});
 	const CGridVectorMap m = load(buf);
 	EXPECT_DOUBLE_EQ(m.config().grid.resolution, 0.2);
+	for (const auto& [name, value] : m.config().namedValues())
+		EXPECT_TRUE(name != "estep.hysteresis" && name != "map.wipe_vectorless_beams") << name;
 }
 
 TEST(GvmapFormat, UnknownKeyIsAnErrorNamingTheKey)
@@ -203,10 +205,12 @@ TEST(GvmapFormat, Version0LoadsWhenItsKeyCountMatches)
 		auto a = mrpt::serialization::archiveFrom(buf);
 		gridvector::GridVectorConfig c;
 		c.extraction.minLength = 0.42;
-		c.map.wipeCountsBeams = true;  // not the default
+		c.map.mergeOnInsert = false;  // not the default
 		beginObject(a, 0);
 		a << uint32_t(c.namedValues().size() + extraKeys);
-		c.visitGroups([&](const char*, auto& g) { g.visit([&](const char*, auto& field, const char*, const gridvector::Range&) { a << field; }); });
+		c.visitGroups([&](const char*, auto& g) {
+			g.visit([&](const char*, auto& field, const char*, const gridvector::Range&) { a << field; });
+		});
 		writeRest(a, 3);
 		endObject(a);
 	};
@@ -214,7 +218,7 @@ TEST(GvmapFormat, Version0LoadsWhenItsKeyCountMatches)
 	writeV0(same, 0);
 	const CGridVectorMap m = load(same);
 	EXPECT_DOUBLE_EQ(m.config().extraction.minLength, 0.42);
-	EXPECT_TRUE(m.config().map.wipeCountsBeams);
+	EXPECT_FALSE(m.config().map.mergeOnInsert);
 	ASSERT_EQ(m.vectors().size(), 1u);
 	EXPECT_EQ(m.vectors()[0].scanIndex, 4);
 
@@ -250,15 +254,15 @@ TEST(GvmapFormat, TruncatedOrCorruptStreamsAreErrorsNotCrashes)
 				load(s);
 			}
 			catch (const std::exception&)
-			{
-			}
+			{}
 		}
 	// a vector count and a column count far beyond the data fail without allocating them
 	mrpt::io::CMemoryStream huge;
 	auto h = mrpt::serialization::archiveFrom(huge);
 	beginObject(h, 1);
 	h << uint32_t(0) << 0.05 << 0.3 << 0.05 << int32_t(2) << uint64_t(1) << (uint64_t(1) << 40);
-	h << 0.0 << 0.0 << 0.2 << 0.0 << int32_t(9'000'000) << int64_t(0) << 0.0 << uint64_t(0) << uint8_t(0) << uint32_t(1);
+	h << 0.0 << 0.0 << 0.2 << 0.0 << int32_t(9'000'000) << int64_t(0) << 0.0 << uint64_t(0) << uint8_t(0)
+	  << uint32_t(1);
 	EXPECT_THROW(load(huge), std::exception);
 }
 

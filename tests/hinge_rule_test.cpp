@@ -45,7 +45,8 @@ TEST(HingeRule, ACornerIsAWallAndACandidateMeetingAtTheirEnds)
 	// the candidate's nearer end (0.22 m from the wall's end) is the vertex, either way round
 	for (const bool reversed : {false, true})
 	{
-		const std::vector<GridVector> v = {vec(0, 0, 3, 0, S), reversed ? vec(3.2, 1.0, 3.2, 0.1, D) : vec(3.2, 0.1, 3.2, 1.0, D)};
+		const std::vector<GridVector> v = {vec(0, 0, 3, 0, S),
+										   reversed ? vec(3.2, 1.0, 3.2, 0.1, D) : vec(3.2, 0.1, 3.2, 1.0, D)};
 		const auto c = rule.meetingEnds(v, 0, 1);
 		ASSERT_TRUE(c.has_value());
 		EXPECT_EQ(c->wall, 0u);
@@ -83,7 +84,8 @@ TEST(HingeRule, CornersOfOneDoorShareTheWallACloseVertexAndTheLeafLength)
 TEST(HingeRule, TwoDistinctStatesOneOfThemDynamicMakeAHinge)
 {
 	const HingeRule rule{DoorOptions{}};  // min_state_diff_deg 10
-	const std::vector<Corner> cs = {corner(0, 1, TPoint2D(3, 0), 0.50, 0.9), corner(0, 2, TPoint2D(3, 0), 0.55, 0.9, false),
+	const std::vector<Corner> cs = {corner(0, 1, TPoint2D(3, 0), 0.50, 0.9),
+									corner(0, 2, TPoint2D(3, 0), 0.55, 0.9, false),
 									corner(0, 3, TPoint2D(3, 0), 1.00, 0.9, false)};
 	// 0.55 rad is within 10 deg of 0.5 rad: one state
 	EXPECT_EQ(rule.distinctStates(cs, {0, 1, 2}), (std::vector<double>{0.50, 1.00}));

@@ -17,7 +17,8 @@ TEST(JsonFile, KeysInInsertionOrderAsDumpTwoGivesThem)
 	j["zeta"] = 1;
 	j["alpha"] = {{"b", true}, {"a", nullptr}};
 	j["mid"] = 0.25;
-	EXPECT_EQ(io::jsonText(j), "{\n  \"zeta\": 1,\n  \"alpha\": {\n    \"b\": true,\n    \"a\": null\n  },\n  \"mid\": 0.25\n}\n");
+	EXPECT_EQ(io::jsonText(j),
+			  "{\n  \"zeta\": 1,\n  \"alpha\": {\n    \"b\": true,\n    \"a\": null\n  },\n  \"mid\": 0.25\n}\n");
 }
 
 TEST(JsonFile, NonFiniteIsNullAndBadUtf8IsReplaced)

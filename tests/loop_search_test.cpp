@@ -35,7 +35,7 @@ TEST(LoopSearch, FindsThePoseFromAFarOffPrior)
 {
 	const TPose2D xa(1, 1, 0.2), xb(3, 1.5, 2.0);
 	const auto a = inFrame(room(), xa, 1), b = inFrame(room(), xb, 100);
-	const TPose2D truth = gridvector::se2::relative(xa, xb);
+	const TPose2D truth = xb - xa;
 	// prior 1.5 m and 40 deg off: outside the matcher's own basin
 	const TPose2D prior(truth.x + 1.2, truth.y - 0.9, truth.phi + 0.7);
 	MStepOptions o;
@@ -55,7 +55,7 @@ TEST(LoopSearch, WindowExcludesHypotheses)
 {
 	const TPose2D xa(1, 1, 0.2), xb(3, 1.5, 2.0);
 	const auto a = inFrame(room(), xa, 1), b = inFrame(room(), xb, 100);
-	const TPose2D truth = gridvector::se2::relative(xa, xb);
+	const TPose2D truth = xb - xa;
 	const TPose2D prior(truth.x + 1.2, truth.y - 0.9, truth.phi + 0.7);
 	const LoopSearch ls(MatcherOptions{}, MStepOptions{});
 	// a window too small to contain the true pose yields no loop edge
@@ -74,7 +74,7 @@ TEST(LoopSearch, RejectsACorridorThatSlides)
 	const TPose2D xa(5, 1, 0), xb(8, 1, 0);
 	const auto a = inFrame(corridor, xa, 1), b = inFrame(corridor, xb, 100);
 	const LoopSearch ls(MatcherOptions{}, MStepOptions{});
-	const MatchResult r = ls.search(a, b, gridvector::se2::relative(xa, xb), LoopWindow{3.0, M_PI});
+	const MatchResult r = ls.search(a, b, xb - xa, LoopWindow{3.0, M_PI});
 	EXPECT_FALSE(r.ok());
 }
 
@@ -96,7 +96,7 @@ TEST(LoopSearch, RejectsAliasedPlaces)
 	MStepOptions o;
 	o.loopSearchVectors = 40;  // the short recess walls make the corners
 	const LoopSearch ls(MatcherOptions{}, o);
-	const TPose2D truth = gridvector::se2::relative(xa, xb);
+	const TPose2D truth = xb - xa;
 	// with a window smaller than the period the place is unique ...
 	const MatchResult local = ls.search(a, b, truth, LoopWindow{1.0, 0.3});
 	ASSERT_TRUE(local.ok()) << toString(local.status);

@@ -94,7 +94,8 @@ void matchInto(const CGridVectorMap& map, const CSimplePointsMap& pts, const TPo
 	auto& is = a.indices.emplace_back();
 	for (const auto& m : pairs)
 	{
-		ps.push_back({m.global.x, m.global.y, m.global.z, m.local.x, m.local.y, m.local.z, m.errorSquareAfterTransformation});
+		ps.push_back(
+			{m.global.x, m.global.y, m.global.z, m.local.x, m.local.y, m.local.z, m.errorSquareAfterTransformation});
 		is.push_back({m.globalIdx, m.localIdx});
 	}
 	a.sums.push_back(extra.sumSqrDist);
@@ -106,19 +107,22 @@ Answers ask(const CGridVectorMap& map, const Queries& q, bool withGrid)
 	Answers a;
 	for (size_t k = 0; k < q.poses.size(); ++k)
 	{
-		a.likelihoods.push_back(map.computeObservationLikelihood(q.scans[k], mrpt::poses::CPose3D(CPose2D(q.poses[k]))));
+		a.likelihoods.push_back(
+			map.computeObservationLikelihood(q.scans[k], mrpt::poses::CPose3D(CPose2D(q.poses[k]))));
 		matchInto(map, q.points[k], q.poses[k], gate(0.3, true, false), a);
 		matchInto(map, q.points[k], q.poses[k], gate(0.3, false, false), a);
 		matchInto(map, q.points[k], q.poses[k], gate(0.5, true, true), a);
 		a.ratios.push_back(map.compute3DMatchingRatio(&q.points[k], mrpt::poses::CPose3D(CPose2D(q.poses[k])), {}));
 	}
-	for (const auto& p : q.probes) a.sqrDists.push_back(map.squareDistanceToClosestCorrespondence(float(p.x), float(p.y)));
+	for (const auto& p : q.probes)
+		a.sqrDists.push_back(map.squareDistanceToClosestCorrespondence(float(p.x), float(p.y)));
 	a.text = map.asString();
 	if (withGrid) a.grid = map.getAsOccupancyGrid().getRawMap();
 	mrpt::opengl::CSetOfObjects viz;
 	map.getVisualizationInto(viz);
 	for (const auto& o : viz)
-		if (const auto* l = dynamic_cast<const mrpt::opengl::CSetOfLines*>(o.get())) a.lines.push_back(l->getLineCount());
+		if (const auto* l = dynamic_cast<const mrpt::opengl::CSetOfLines*>(o.get()))
+			a.lines.push_back(l->getLineCount());
 	return a;
 }
 

@@ -176,7 +176,8 @@ TEST(MapEval, SecondGhostFigureLeavesOutDoorsSeenInOneState)
 	// the precision by the same reading: the wall and door 2's closed leaf are correct, 1.0 m is not
 	EXPECT_NEAR(m.staticPrecision, 10.0 / 11.6, kTol);
 	EXPECT_NEAR(m.staticPrecisionSeenSwinging, 10.6 / 11.6, kTol);
-	EXPECT_NE(eval::formatText(m).find("static precision (doors seen in one state are static): 0.9138"), std::string::npos)
+	EXPECT_NE(eval::formatText(m).find("static precision (doors seen in one state are static): 0.9138"),
+			  std::string::npos)
 		<< eval::formatText(m);
 }
 
@@ -193,11 +194,12 @@ TEST(MapEval, SampleCountIsBounded)
 	EXPECT_THROW(eval::sampleCount(std::nan(""), 0.01), std::invalid_argument);
 	EXPECT_THROW(eval::sampleCount(1, 0), std::invalid_argument);
 	EXPECT_THROW(eval::evaluateMap({vec(0, 5, 1e300, 5, true)}, truth(), nullptr), std::invalid_argument);
-	EXPECT_THROW(eval::evaluateMap({vec(0, 0, 10, 0, true)}, truth(), nullptr, [] {
-					 eval::MapEvalOptions o;
-					 o.sampleStep = 0;
-					 return o;
-				 }()),
+	EXPECT_THROW(eval::evaluateMap({vec(0, 0, 10, 0, true)}, truth(), nullptr,
+								   [] {
+									   eval::MapEvalOptions o;
+									   o.sampleStep = 0;
+									   return o;
+								   }()),
 				 std::invalid_argument);
 }
 
@@ -243,8 +245,10 @@ TEST(SegmentIndex, FindsTheNearestSegmentWithinRange)
 			double brute = sim::kNoHit;
 			for (const auto& s : segs) brute = std::min(brute, sim::distanceToSegment({x, y}, s));
 			const double got = idx.nearest({x, y}, 0.8);
-			if (brute <= 0.8) EXPECT_DOUBLE_EQ(got, brute);
-			else EXPECT_EQ(got, sim::kNoHit);
+			if (brute <= 0.8)
+				EXPECT_DOUBLE_EQ(got, brute);
+			else
+				EXPECT_EQ(got, sim::kNoHit);
 		}
 }
 

@@ -18,7 +18,8 @@ namespace
 {
 std::vector<GridVector> sampleMap()
 {
-	GridVector wall({0, 0}, {4, 0}, GridOptions{}), door({4, 0}, {4, 1}, GridOptions{}), person({1, 2}, {2, 2}, GridOptions{});
+	GridVector wall({0, 0}, {4, 0}, GridOptions{}), door({4, 0}, {4, 1}, GridOptions{}),
+		person({1, 2}, {2, 2}, GridOptions{});
 	for (int c = 0; c < wall.cols(); ++c) wall.cell(1, c) = wall.cell(0, c) = GridCell{0, 0, 0, 19.5f, 20.f};
 	for (int c = 0; c < wall.cols(); ++c) wall.cell(2, c) = GridCell{0, 0, 0, 0.5f, 20.f};
 	for (auto& c : person.cells()) c.n_occupy = 0.5f, c.n_visit = 10.f;
@@ -38,7 +39,10 @@ std::string slurp(const std::string& p)
 struct TempDir
 {
 	fs::path path;
-	TempDir() : path(fs::temp_directory_path() / ("gv_export_" + std::to_string(::getpid()))) { fs::create_directories(path); }
+	TempDir() : path(fs::temp_directory_path() / ("gv_export_" + std::to_string(::getpid())))
+	{
+		fs::create_directories(path);
+	}
 	~TempDir() { fs::remove_all(path); }
 	std::string operator/(const std::string& f) const { return (path / f).string(); }
 	size_t files() const { return size_t(std::distance(fs::directory_iterator(path), fs::directory_iterator())); }
@@ -77,8 +81,8 @@ TEST(MapExport, RosMapServerPgmAndYaml)
 	EXPECT_GT(pixel(2.0, 0.15), 240);  // cell [0.1, 0.2]: the free row, p = 0.025
 	EXPECT_EQ(pixel(2.0, 1.0), 128);  // unknown: 0.5
 	const std::string yaml = slurp(d / "occ.yaml");
-	for (const char* k : {"image: occ.pgm\n", "resolution: 0.1\n", "origin: [", "negate: 0\n", "occupied_thresh: 0.65\n",
-						  "free_thresh: 0.196\n", "mode: trinary\n"})
+	for (const char* k : {"image: occ.pgm\n", "resolution: 0.1\n", "origin: [", "negate: 0\n",
+						  "occupied_thresh: 0.65\n", "free_thresh: 0.196\n", "mode: trinary\n"})
 		EXPECT_NE(yaml.find(k), std::string::npos) << k << "\n" << yaml;
 	EXPECT_EQ(d.files(), 2u);  // no temporary left behind
 }

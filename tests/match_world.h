@@ -19,8 +19,8 @@ struct WorldSeg
 
 /** `world` in the frame of `pose`, endpoints with Gaussian noise (0: exact); ids from firstId. */
 inline std::vector<gridvector::MatchSegment> observe(const std::vector<WorldSeg>& world,
-													 const mrpt::math::TPose2D& pose, double noise,
-													 unsigned seed, uint64_t firstId)
+													 const mrpt::math::TPose2D& pose, double noise, unsigned seed,
+													 uint64_t firstId)
 {
 	std::mt19937 rng(seed);
 	std::normal_distribution<double> n(0, noise > 0 ? noise : 1.0);

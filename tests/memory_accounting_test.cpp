@@ -15,10 +15,11 @@ TEST(MemoryAccounting, ReproducesTable1Fig7)
 {
 	// Fig. 7: a region of 678.56 m^2 (here 38 x 17.8568 m) and 194.73 m of vectors.
 	const double w = 38.0, h = 678.56 / 38.0, rest = 194.73 - 4 * w - 2 * h;
-	std::vector<GridVector> vs{GridVector({0, 0}, {w, 0}, GridOptions{}), GridVector({w, 0}, {w, h}, GridOptions{}),
-							   GridVector({w, h}, {0, h}, GridOptions{}), GridVector({0, h}, {0, 0}, GridOptions{}),
-							   GridVector({0, 5}, {w, 5}, GridOptions{}), GridVector({w, 10}, {0, 10}, GridOptions{}),
-							   GridVector({0, 12}, {rest, 12}, GridOptions{})};
+	std::vector<GridVector> vs{
+		GridVector({0, 0}, {w, 0}, GridOptions{}),     GridVector({w, 0}, {w, h}, GridOptions{}),
+		GridVector({w, h}, {0, h}, GridOptions{}),     GridVector({0, h}, {0, 0}, GridOptions{}),
+		GridVector({0, 5}, {w, 5}, GridOptions{}),     GridVector({w, 10}, {0, 10}, GridOptions{}),
+		GridVector({0, 12}, {rest, 12}, GridOptions{})};
 	const MemoryReport r = MemoryAccounting::account(vs);
 	EXPECT_NEAR(r.spaceSize, 678.56, 1e-6);
 	EXPECT_NEAR(r.vectorLength, 194.73, 1e-6);

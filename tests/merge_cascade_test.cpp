@@ -31,7 +31,8 @@ struct ListPool
 					++calls;
 					std::vector<MergeCandidate> out;
 					for (size_t k = 0; k < vectors.size(); ++k)
-						if (left[k] && (all || corresponds(v, vectors[k], MapOptions{}))) out.push_back({k, &vectors[k]});
+						if (left[k] && (all || corresponds(v, vectors[k], MapOptions{})))
+							out.push_back({k, &vectors[k]});
 					return out;
 				},
 				[this](const std::vector<MergeCandidate>& taken) {
@@ -105,7 +106,8 @@ size_t cascadeOverChain(int rounds, double& endX)
 	size_t next = 0;
 	MergePool pool = p.pool();
 	pool.correspondents = [&](const GridVector&) {
-		return next < p.vectors.size() ? std::vector<MergeCandidate>{{next, &p.vectors[next]}} : std::vector<MergeCandidate>{};
+		return next < p.vectors.size() ? std::vector<MergeCandidate>{{next, &p.vectors[next]}}
+									   : std::vector<MergeCandidate>{};
 	};
 	auto absorb = pool.absorb;
 	pool.absorb = [&](const std::vector<MergeCandidate>& taken) { absorb(taken), ++next; };

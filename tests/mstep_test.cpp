@@ -5,7 +5,9 @@
 #include "estep/EStep.h"
 #include "em/EmSlam.h"
 #include "mstep/MStep.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
+
+#include <cmath>
 #include "extraction/VectorExtractor.h"
 #include <gridvector/io/LogReader.h>
 #include "sim/BenchmarkLog.h"
@@ -246,7 +248,8 @@ TEST(MStep, ARejectionRepeatedWithTheSameCorrespondencesStands)
 		for (int k = 0; k < 9; ++k)
 		{
 			if (k > 0 && k % 2 == 1)
-				toggled.erase(std::find_if(toggled.begin(), toggled.end(), [&](auto& s) { return s.id == longest.id; }));
+				toggled.erase(
+					std::find_if(toggled.begin(), toggled.end(), [&](auto& s) { return s.id == longest.id; }));
 			else if (k > 0)
 				toggled.push_back(longest);
 			const MStepReport r = m.run(f.scans, poses);
@@ -362,7 +365,8 @@ TEST(MStep, APassWalkedTheOtherWayIsRegisteredWithItsMostOverlappingPose)
 				truth[c.to].y > 1.5 && truth[c.to].y < 4)  // coming down to the corner
 			{
 				++n;
-				worst = std::max(worst, se2::distance(c.z, se2::relative(truth[c.from], truth[c.to])));
+				worst = std::max(worst, std::hypot(c.z.x - (truth[c.to] - truth[c.from]).x,
+												   c.z.y - (truth[c.to] - truth[c.from]).y));
 			}
 		return n;
 	};
@@ -400,8 +404,9 @@ TwoPassRoom twoPassRoom()
 		w.truth.push_back(p);
 		w.odo.emplace_back(p.x + shift, p.y, p.phi);
 		std::vector<MatchSegment> s;
-		if (inRoom) s = matchtest::observe(bottomOnly ? std::vector<matchtest::WorldSeg>{room[0]} : room, p, 0.003,
-										   unsigned(t), 1000 * (t + 1));
+		if (inRoom)
+			s = matchtest::observe(bottomOnly ? std::vector<matchtest::WorldSeg>{room[0]} : room, p, 0.003, unsigned(t),
+								   1000 * (t + 1));
 		w.scans.push_back(s);
 		w.all.push_back(inRoom ? matchtest::observe(room, p, 0.003, unsigned(t), 1000 * (t + 1)) : s);
 	};
@@ -411,7 +416,8 @@ TwoPassRoom twoPassRoom()
 		add(TPose2D(x, 1, 0), true, x >= 3, 0);
 	}
 	for (int k = 1; k <= 10; ++k) add(TPose2D(5.5, 1 + 0.8 * k, M_PI / 2), false, false, 0);  // out ...
-	for (int k = 10; k >= 1; --k) add(TPose2D(3, 1 + 0.8 * k, -M_PI / 2), false, false, k <= 5 ? 1.5 : 0);  // ... and back
+	for (int k = 10; k >= 1; --k)
+		add(TPose2D(3, 1 + 0.8 * k, -M_PI / 2), false, false, k <= 5 ? 1.5 : 0);  // ... and back
 	for (double x = 3; x < 5.6; x += 0.5)  // second pass
 	{
 		w.second.push_back(w.truth.size());
@@ -464,8 +470,8 @@ double secondPassError(const TwoPassRoom& w, const std::vector<TPose2D>& poses)
 	double worst = 0;
 	for (size_t i : w.second)
 	{
-		const TPose2D est = gridvector::se2::relative(poses[w.first.back()], poses[i]);
-		const TPose2D tru = gridvector::se2::relative(w.truth[w.first.back()], w.truth[i]);
+		const TPose2D est = poses[i] - poses[w.first.back()];
+		const TPose2D tru = w.truth[i] - w.truth[w.first.back()];
 		worst = std::max(worst, std::hypot(est.x - tru.x, est.y - tru.y));
 	}
 	return worst;
@@ -570,7 +576,8 @@ FramedCorridor framedCorridor(double slide)
 		for (size_t k = 0; inside && k < walls.size() + frames.size(); ++k)
 		{
 			const bool frame = k >= walls.size();
-			const auto seen = emtest::observe({frame ? frames[k - walls.size()] : walls[k]}, p, 6.0, unsigned(100 * t + k));
+			const auto seen =
+				emtest::observe({frame ? frames[k - walls.size()] : walls[k]}, p, 6.0, unsigned(100 * t + k));
 			for (auto& m : MatchSegment::fromVectors(seen.vectors))
 			{
 				m.id = EStep::childId(1000 * (t + 1) + k, 0);
@@ -619,7 +626,7 @@ TEST(MStep, ACorrectEdgeRejectedAgainstAWrongEstimateComesBack)
 		for (const auto& [key, c] : m.constraints())
 		{
 			if (c.from > f.w.first.back() || c.to < f.w.second.front() || !c.rejected) continue;
-			const TPose2D tru = gridvector::se2::relative(f.w.truth[c.from], f.w.truth[c.to]);
+			const TPose2D tru = f.w.truth[c.to] - f.w.truth[c.from];
 			rejectedCorrect += std::hypot(c.z.x - tru.x, c.z.y - tru.y) < 0.05;
 		}
 		for (int k = 0; k < 3; ++k) m.run(f.withoutFrames, poses);
@@ -657,7 +664,8 @@ BenchmarkLog benchmarkLog(const std::string& log, int seed)
 	o.seed = seed;
 	const std::string prefix =
 		(std::filesystem::temp_directory_path() / ("gv_mstep_test_" + log + "_s" + std::to_string(seed))).string();
-	const auto sum = sim::makeBenchmarkLog(std::string(GV_SHARED_DIR) + "/data/" + log + "-corrected.log.gz", prefix, o);
+	const auto sum =
+		sim::makeBenchmarkLog(std::string(GV_SHARED_DIR) + "/data/" + log + "-corrected.log.gz", prefix, o);
 	io::ReadOptions ro;
 	ro.quiet = true;
 	BenchmarkLog b{io::readLog(sum.logPath, ro), {}};
@@ -700,8 +708,8 @@ AcesSeed8 acesSeed8FirstMStep(bool reregisterMoved)
 
 double relativeError(const AcesSeed8& a, size_t i, size_t j)
 {
-	const TPose2D est = gridvector::se2::relative(a.poses[i], a.poses[j]);
-	const TPose2D tru = gridvector::se2::relative(a.ref[i], a.ref[j]);
+	const TPose2D est = a.poses[j] - a.poses[i];
+	const TPose2D tru = a.ref[j] - a.ref[i];
 	return std::hypot(est.x - tru.x, est.y - tru.y);
 }
 }  // namespace
@@ -722,7 +730,7 @@ TEST(MStep, AnOverlapRegistrationThatMovedFarIsRedoneFromTheOptimisedEstimate)
 		for (const auto& [key, c] : a.constraints)
 		{
 			if (c.rejected || c.from < 130 || c.from > 150 || c.to < 300 || c.to > 320) continue;
-			const TPose2D tru = gridvector::se2::relative(a.ref[c.from], a.ref[c.to]);
+			const TPose2D tru = a.ref[c.to] - a.ref[c.from];
 			n += std::hypot(c.z.x - tru.x, c.z.y - tru.y) > 1.0;
 		}
 		return n;
@@ -751,9 +759,8 @@ TEST(MStep, ASequentialPairFailedFromTheChainedGuessIsTriedFromTheOdometry)
 		std::vector<double> errDeg;  // sequential edges (j, 43): heading error against the reference
 		for (const auto& [key, c] : a.constraints)
 			if (key.second == 43 && c.kind == EdgeKind::Sequential && key.first != 42)
-				errDeg.push_back(std::abs(mrpt::math::wrapToPi(
-									 c.z.phi - gridvector::se2::relative(a.ref[key.first], a.ref[43]).phi)) *
-								 180 / M_PI);
+				errDeg.push_back(std::abs(mrpt::math::wrapToPi(c.z.phi - (a.ref[43] - a.ref[key.first]).phi)) * 180 /
+								 M_PI);
 		return errDeg;
 	};
 	EXPECT_TRUE(intoScan43(false).empty());

@@ -11,9 +11,9 @@ using Eigen::Vector3d;
 TEST(NormalEquations, SameAsDenseAssemblyIncludingTheFixedFirstPose)
 {
 	const size_t nodes = 12;
-	const std::vector<std::pair<uint32_t, uint32_t>> edges = {
-		{0, 1}, {1, 2}, {2, 3}, {3, 4}, {4, 5}, {5, 6}, {6, 7}, {7, 8}, {8, 9}, {9, 10}, {10, 11},
-		{11, 0}, {7, 2}, {3, 9}, {3, 9}, {5, 11}};
+	const std::vector<std::pair<uint32_t, uint32_t>> edges = {{0, 1}, {1, 2}, {2, 3}, {3, 4},  {4, 5},   {5, 6},
+															  {6, 7}, {7, 8}, {8, 9}, {9, 10}, {10, 11}, {11, 0},
+															  {7, 2}, {3, 9}, {3, 9}, {5, 11}};
 	std::mt19937 rng(1);
 	std::normal_distribution<double> g;
 	auto random3 = [&] { return Matrix3d(Matrix3d::NullaryExpr([&] { return g(rng); })); };

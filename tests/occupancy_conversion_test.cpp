@@ -69,7 +69,8 @@ TEST(OccupancyConversion, CoarseCellHoldingAnObstacleIsOccupied)
 	GridVector b({2, 0.1}, {0, 0.1}, GridOptions{});  // opposite side, free row at y = 0
 	for (int c = 0; c < b.cols(); ++c) b.cell(2, c).n_occupy = 1, b.cell(2, c).n_visit = 20;
 	const OccupancyRaster F = OccupancyConversion::rasterise({a, b}, 0.0, -0.05, 0.2, 10, 1, 4, true);
-	for (int ix = 1; ix < 9; ++ix) EXPECT_NEAR(F.probability(ix, 0), 1.5 / 21.0, 1e-5) << ix;  // prior of a + free row of b
+	for (int ix = 1; ix < 9; ++ix)
+		EXPECT_NEAR(F.probability(ix, 0), 1.5 / 21.0, 1e-5) << ix;  // prior of a + free row of b
 }
 
 TEST(OccupancyConversion, AlignedCellsReproduceEq6Exactly)

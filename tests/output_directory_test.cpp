@@ -15,8 +15,9 @@ namespace
 {
 struct TempDir
 {
-	fs::path path = fs::temp_directory_path() / ("gv_outdir_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-												 "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+	fs::path path = fs::temp_directory_path() /
+					("gv_outdir_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+					 ::testing::UnitTest::GetInstance()->current_test_info()->name());
 	TempDir() { fs::create_directories(path); }
 	~TempDir() { fs::remove_all(path); }
 	std::string operator/(const std::string& s) const { return (path / s).string(); }

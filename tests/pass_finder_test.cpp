@@ -28,7 +28,9 @@ std::vector<PassFinder::Pass> passesOf(const std::vector<TPose2D>& poses, uint32
 	std::vector<PassFinder::Pass> out;
 	for (uint32_t i = 0; i <= last; ++i)
 	{
-		const auto& p = f.next(i, poses, 3, 2, [&](uint32_t j) { return se2::distance(poses[i], poses[j]) < 1.2; });
+		const auto& p = f.next(i, poses, 3, 2, [&](uint32_t j) {
+			return std::hypot(poses[i].x - poses[j].x, poses[i].y - poses[j].y) < 1.2;
+		});
 		if (i == last) out = p;
 	}
 	return out;

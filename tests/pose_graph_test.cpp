@@ -120,8 +120,7 @@ TEST(PoseGraph, WrongEdgesAreDownweightedAndRejected)
 	EXPECT_LT(maxError(g.nodes(), clean.nodes()), 0.1);
 	EXPECT_LT(maxError(g.nodes(), truth), 0.15);
 	EXPECT_GE(st.rejected, 3u);
-	for (const auto& e : g.edges())
-		EXPECT_TRUE(e.kind != EdgeKind::Loop || !e.active) << e.from << "-" << e.to;
+	for (const auto& e : g.edges()) EXPECT_TRUE(e.kind != EdgeKind::Loop || !e.active) << e.from << "-" << e.to;
 }
 
 TEST(PoseGraph, MrptOptimizerAgreesOnCleanGraph)

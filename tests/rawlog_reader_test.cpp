@@ -96,7 +96,10 @@ TEST(RawlogReader, SensoryFrameFormatMatchesMrpt)
 		EXPECT_NEAR(d.scans[i].timestamp, mrpt::Clock::toDouble(ref[i]->timestamp), 1e-6);
 		EXPECT_TRUE(d.scans[i].hasOdometry);
 		EXPECT_FALSE(d.scans[i].hasLogPose);
-		if (i) { EXPECT_GT(d.scans[i].timestamp, d.scans[i - 1].timestamp); }
+		if (i)
+		{
+			EXPECT_GT(d.scans[i].timestamp, d.scans[i - 1].timestamp);
+		}
 	}
 	EXPECT_NE(d.summary.find("actions+sensory-frames format"), std::string::npos);
 	// odometry is the running sum of the robot-movement actions
@@ -128,7 +131,8 @@ TEST(RawlogReader, RoundTripThroughBothFormatsAndMrptCRawlog)
 	for (auto format : {RawlogFormat::Observations, RawlogFormat::SensoryFrames})
 		for (bool compress : {true, false})
 		{
-			SCOPED_TRACE(std::string(format == RawlogFormat::Observations ? "obs" : "sf") + (compress ? " gz" : " plain"));
+			SCOPED_TRACE(std::string(format == RawlogFormat::Observations ? "obs" : "sf") +
+						 (compress ? " gz" : " plain"));
 			const std::string path = tmp("intel.rawlog");
 			writeRawlog(path, intel, {format, compress});
 			EXPECT_EQ(isGzipFile(path), compress);
@@ -238,9 +242,10 @@ TEST(RawlogReader, NoScansSaysWhatTheRawlogHolds)
 	}
 	catch (const std::runtime_error& e)
 	{
-		EXPECT_EQ(std::string(e.what()), kf + ": no laser scans (actions+sensory-frames format (250 action sets, 250 sensory "
-												"frames); odometry from robot-movement actions, 250 "
-												"mrpt::obs::CObservationBearingRange ignored)");
+		EXPECT_EQ(std::string(e.what()),
+				  kf + ": no laser scans (actions+sensory-frames format (250 action sets, 250 sensory "
+					   "frames); odometry from robot-movement actions, 250 "
+					   "mrpt::obs::CObservationBearingRange ignored)");
 	}
 	// observation-only, odometry objects and nothing else
 	LogContents c;
@@ -250,7 +255,8 @@ TEST(RawlogReader, NoScansSaysWhatTheRawlogHolds)
 	EXPECT_EQ(describeContents(c), "observation-only format (7 observations); odometry from 7 odometry observations");
 	c.odometryRecords = 0;
 	c.ignored["scans of other sensors"] = 3;
-	EXPECT_EQ(describeContents(c), "observation-only format (7 observations); no odometry, 3 scans of other sensors ignored");
+	EXPECT_EQ(describeContents(c),
+			  "observation-only format (7 observations); no odometry, 3 scans of other sensors ignored");
 }
 
 TEST(Carmen2Rawlog, ToolWritesRawlogsMrptCanRead)
@@ -258,7 +264,8 @@ TEST(Carmen2Rawlog, ToolWritesRawlogsMrptCanRead)
 	const std::string bin = std::string(GV_BIN_DIR) + "/gv-carmen2rawlog";
 	if (!fs::exists(bin)) GTEST_SKIP() << bin << " not built";
 	const std::string out = tmp("tool.rawlog"), log = tmp("tool.txt");
-	ASSERT_EQ(std::system(("'" + bin + "' '" + kIntel + "' '" + out + "' --format sf > '" + log + "' 2>&1").c_str()), 0);
+	ASSERT_EQ(std::system(("'" + bin + "' '" + kIntel + "' '" + out + "' --format sf > '" + log + "' 2>&1").c_str()),
+			  0);
 	size_t entries = 0;
 	const auto scans = mrptScans(out, &entries);
 	EXPECT_EQ(scans.size(), 910u);

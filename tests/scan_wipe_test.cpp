@@ -53,8 +53,7 @@ TEST(ScanWipe, HitWinsOverVisit)
 
 TEST(ScanWipe, SkippedVectorsAndFarVectorsUntouched)
 {
-	std::vector<GridVector> map{GridVector({1, 2}, {-1, 2}, GridOptions{}),
-								GridVector({1, 2}, {-1, 2}, GridOptions{}),
+	std::vector<GridVector> map{GridVector({1, 2}, {-1, 2}, GridOptions{}), GridVector({1, 2}, {-1, 2}, GridOptions{}),
 								GridVector({101, 2}, {99, 2}, GridOptions{})};
 	const VectorIndex idx = indexOf(map);
 	ScanWipe w(0.05, false);  // the paper's per-cell weighting
@@ -100,7 +99,8 @@ TEST(ScanWipe, AloneTriangleAddsWhatItsMarksWould)
 		std::vector<ScanWipe::Mark> marks(wall.cells().size());
 		ScanWipe::Span span;
 		ScanWipe::Stats a, b;
-		ScanWipe::mark(tri, viaMarks, WipePart::Hit, beams, [&] { return marks.data(); }, span);
+		ScanWipe::mark(
+			tri, viaMarks, WipePart::Hit, beams, [&] { return marks.data(); }, span);
 		ASSERT_LT(span.first, span.last);
 		EXPECT_TRUE(ScanWipe::add(marks.data(), span, viaMarks.cells(), beams, a));
 		EXPECT_TRUE(ScanWipe::addAlone(tri, alone, beams, b));
@@ -130,12 +130,13 @@ TEST(ScanWipe, CompleteAddsWhatTheHeldBackPartsWouldHave)
 		ScanWipe w(0.05, beams);
 		const std::vector<ScanWipe::Segment> scan{{{1, 2}, {0, 2}, 50}, {{0, 2.5}, {-1, 2.5}, 50}};
 		w.apply({0, 0}, scan, full, idx);
-		w.apply({0, 0}, scan, held, idx, [](size_t seg, uint32_t) { return seg == 0 ? WipePart::Visited : WipePart::Hit; });
+		w.apply({0, 0}, scan, held, idx,
+				[](size_t seg, uint32_t) { return seg == 0 ? WipePart::Visited : WipePart::Hit; });
 		ASSERT_LT(held[0].totalOccupy(), full[0].totalOccupy() - 1);  // the hits held back
 		const std::vector<WipeTriangle> tris{w.triangleOf({0, 0}, scan[0]), w.triangleOf({0, 0}, scan[1])};
 		ScanWipe::Stats st;
-		EXPECT_TRUE(ScanWipe::complete(tris, {WipePart::Visited, WipePart::Hit}, {WipePart::Hit, WipePart::Hit}, held[0],
-									   beams, st));
+		EXPECT_TRUE(ScanWipe::complete(tris, {WipePart::Visited, WipePart::Hit}, {WipePart::Hit, WipePart::Hit},
+									   held[0], beams, st));
 		EXPECT_GT(st.cellsHit, 0u);
 		for (size_t i = 0; i < wall.cells().size(); ++i)
 		{

@@ -20,7 +20,10 @@ namespace fs = std::filesystem;
 
 namespace
 {
-std::string tmp(const std::string& name) { return (fs::temp_directory_path() / ("gv_simplemap_test_" + name)).string(); }
+std::string tmp(const std::string& name)
+{
+	return (fs::temp_directory_path() / ("gv_simplemap_test_" + name)).string();
+}
 
 /** Scans of an L-shaped room along a path, with no pose for every third scan. */
 struct Fixture
@@ -98,8 +101,8 @@ TEST(SimplemapWriter, mrpt_multimetric_map_builds_the_same_grid_vector_map)
 	mrpt::maps::CGridVectorMap direct;
 	for (size_t i = 0; i < fx.poses.size(); ++i)
 		if (fx.poses[i])
-			direct.insertObservation(
-				*fx.log.scans[i].scan, mrpt::poses::CPose3D(fx.poses[i]->x, fx.poses[i]->y, 0, fx.poses[i]->phi, 0, 0));
+			direct.insertObservation(*fx.log.scans[i].scan,
+									 mrpt::poses::CPose3D(fx.poses[i]->x, fx.poses[i]->y, 0, fx.poses[i]->phi, 0, 0));
 	EXPECT_EQ(gv->insertedScans(), 8u);
 	ASSERT_EQ(gv->vectors().size(), direct.vectors().size());
 	EXPECT_GE(gv->vectors().size(), 4u);
@@ -107,7 +110,8 @@ TEST(SimplemapWriter, mrpt_multimetric_map_builds_the_same_grid_vector_map)
 	// The multi-map's likelihood (what CMonteCarloLocalization2D calls) prefers the true pose.
 	const auto& scan = *fx.log.scans[2].scan;  // a scan that is not in the map
 	const mrpt::math::TPose2D truth(1 + 0.6 * 2, 1.0 + 0.05 * 2, 0.04);
-	const double atTruth = multi.computeObservationLikelihood(scan, mrpt::poses::CPose3D(truth.x, truth.y, 0, truth.phi, 0, 0));
+	const double atTruth =
+		multi.computeObservationLikelihood(scan, mrpt::poses::CPose3D(truth.x, truth.y, 0, truth.phi, 0, 0));
 	const double shifted =
 		multi.computeObservationLikelihood(scan, mrpt::poses::CPose3D(truth.x + 0.3, truth.y, 0, truth.phi, 0, 0));
 	EXPECT_GT(atTruth, shifted + 1.0);
@@ -132,6 +136,7 @@ TEST(SimplemapWriter, bad_input_is_an_error_and_leaves_no_file)
 	}
 	catch (const std::runtime_error& e)
 	{
-		EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/x.simplemap: cannot write"), std::string::npos) << e.what();
+		EXPECT_NE(std::string(e.what()).find("/nonexistent-dir/x.simplemap: cannot write"), std::string::npos)
+			<< e.what();
 	}
 }

@@ -73,7 +73,8 @@ TEST(Simulator, BeamLabelsAgreeWithTheGeometry)
 		const Laser laser(r.laser);
 		std::vector<Segment> doorAreas, objectEdges;
 		for (const auto& d : r.world.doors)
-			for (int k = 0; k <= 90; k++) doorAreas.push_back(d.leaf(d.closedAngle + (d.openAngle - d.closedAngle) * k / 90.0));
+			for (int k = 0; k <= 90; k++)
+				doorAreas.push_back(d.leaf(d.closedAngle + (d.openAngle - d.closedAngle) * k / 90.0));
 		for (const auto& ob : r.world.objects)
 			for (const auto* p : {&ob.first, &ob.second})
 				for (size_t i = 0; i < p->size(); i++) objectEdges.emplace_back((*p)[i], (*p)[(i + 1) % p->size()]);
@@ -86,16 +87,30 @@ TEST(Simulator, BeamLabelsAgreeWithTheGeometry)
 			{
 				const HitKind kind = labelKind(s.labels[i]);
 				counts[int(kind)]++;
-				const Vec2 p = Vec2(s.truth.x, s.truth.y) + Vec2::polar(s.ranges[i], s.truth.phi + laser.beamAngle(int(i)));
+				const Vec2 p =
+					Vec2(s.truth.x, s.truth.y) + Vec2::polar(s.ranges[i], s.truth.phi + laser.beamAngle(int(i)));
 				switch (kind)
 				{
-					case HitKind::None: EXPECT_FLOAT_EQ(s.ranges[i], float(o.maxRange)); break;
-					case HitKind::Static: EXPECT_LT(nearestWall(p, r.world.walls), 1e-3); break;
-					case HitKind::Door: EXPECT_LT(nearestWall(p, doorAreas), 0.02); break;
-					case HitKind::Object: EXPECT_LT(nearestWall(p, objectEdges), 1e-3); break;
-					case HitKind::Person: EXPECT_GT(nearestWall(p, r.world.walls), 0.05); break;
+					case HitKind::None:
+						EXPECT_FLOAT_EQ(s.ranges[i], float(o.maxRange));
+						break;
+					case HitKind::Static:
+						EXPECT_LT(nearestWall(p, r.world.walls), 1e-3);
+						break;
+					case HitKind::Door:
+						EXPECT_LT(nearestWall(p, doorAreas), 0.02);
+						break;
+					case HitKind::Object:
+						EXPECT_LT(nearestWall(p, objectEdges), 1e-3);
+						break;
+					case HitKind::Person:
+						EXPECT_GT(nearestWall(p, r.world.walls), 0.05);
+						break;
 				}
-				if (kind != HitKind::None) { EXPECT_LT(s.ranges[i], o.maxRange); }
+				if (kind != HitKind::None)
+				{
+					EXPECT_LT(s.ranges[i], o.maxRange);
+				}
 			}
 		}
 		EXPECT_GT(counts[int(HitKind::Static)], 1000u);
@@ -158,7 +173,8 @@ TEST(Simulator, DynamicContentIsConfigurable)
 	const auto& ob = full.world.objects.at(0);
 	std::vector<Segment> first, second;
 	for (size_t i = 0; i < ob.first.size(); i++) first.emplace_back(ob.first[i], ob.first[(i + 1) % ob.first.size()]);
-	for (size_t i = 0; i < ob.second.size(); i++) second.emplace_back(ob.second[i], ob.second[(i + 1) % ob.second.size()]);
+	for (size_t i = 0; i < ob.second.size(); i++)
+		second.emplace_back(ob.second[i], ob.second[(i + 1) % ob.second.size()]);
 	size_t before = 0, after = 0;
 	for (const auto& h : full.dynamicHits)
 		if (h.kind == HitKind::Object)
@@ -248,7 +264,8 @@ TEST(Simulator, TruthRejectsDoorsNotInTheDoorsFile)
 		try
 		{
 			const Truth t = readTruth(dir);
-			return "read " + std::to_string(t.hits.size()) + " hits, " + std::to_string(t.doorSwings.size()) + " swings";
+			return "read " + std::to_string(t.hits.size()) + " hits, " + std::to_string(t.doorSwings.size()) +
+				   " swings";
 		}
 		catch (const std::runtime_error& e)
 		{
@@ -260,7 +277,8 @@ TEST(Simulator, TruthRejectsDoorsNotInTheDoorsFile)
 			  "read 2 hits, 1 swings");
 	EXPECT_EQ(errorOf("hit person 0 1 3 1 4 1 5\nhit door 1 1 5 0.1 5 0.8 4\n"),
 			  file + ":2: door 1 is not in truth_doors.txt (1 door)");
-	EXPECT_EQ(errorOf("door_swing 3 2 3 0 1.5\n"), file + ":1: door 3 is not in truth_doors.txt (1 door)");  // not "1 doors"
+	EXPECT_EQ(errorOf("door_swing 3 2 3 0 1.5\n"),
+			  file + ":1: door 3 is not in truth_doors.txt (1 door)");  // not "1 doors"
 	write(SimFiles::doors, "");
 	EXPECT_EQ(errorOf("hit door 0 1 5 0.1 5 0.8 4\n"), file + ":1: door 0 is not in truth_doors.txt (0 doors)");
 	fs::remove_all(dir);
@@ -296,7 +314,10 @@ TEST(Scene, FanCastingEqualsOneRayAtATime)
 			const Hit h = scene.cast(o, Vec2::polar(1.0, start + i * res), 25.0);
 			ASSERT_EQ(fan[size_t(i)].kind, h.kind) << trial << " beam " << i;
 			ASSERT_EQ(fan[size_t(i)].id, h.id);
-			if (h.kind != HitKind::None) { ASSERT_DOUBLE_EQ(fan[size_t(i)].range, h.range); }
+			if (h.kind != HitKind::None)
+			{
+				ASSERT_DOUBLE_EQ(fan[size_t(i)].range, h.range);
+			}
 		}
 	}
 }

@@ -42,9 +42,9 @@ inline double rayHit(double ox, double oy, double dx, double dy, const Disc& c)
 
 /** A scan taken by a sensor at world pose `sensor` (robot pose = sensor pose
  * unless sensorPose is set on the result afterwards). */
-inline mrpt::obs::CObservation2DRangeScan castScan(
-	const mrpt::math::TPose2D& sensor, const std::vector<Seg>& walls, const std::vector<Disc>& discs = {},
-	size_t beams = 361, double aperture = M_PI, double maxRange = 30.0)
+inline mrpt::obs::CObservation2DRangeScan castScan(const mrpt::math::TPose2D& sensor, const std::vector<Seg>& walls,
+												   const std::vector<Disc>& discs = {}, size_t beams = 361,
+												   double aperture = M_PI, double maxRange = 30.0)
 {
 	mrpt::obs::CObservation2DRangeScan scan;
 	scan.aperture = float(aperture);

@@ -37,7 +37,8 @@ io::Trajectory transformed(const io::Trajectory& t, double dx, double dy, double
 {
 	io::Trajectory o;
 	for (const auto& [s, p] : t)
-		o.emplace_back(s, TPose2D(std::cos(th) * p.x - std::sin(th) * p.y + dx, std::sin(th) * p.x + std::cos(th) * p.y + dy, p.phi + th));
+		o.emplace_back(s, TPose2D(std::cos(th) * p.x - std::sin(th) * p.y + dx,
+								  std::sin(th) * p.x + std::cos(th) * p.y + dy, p.phi + th));
 	return o;
 }
 
@@ -94,7 +95,8 @@ TEST(TrajectoryEval, KnownErrors)
 	// every pose displaced alternately by +-0.2 m in y: ATE 0.2, local relation error 0.4 m
 	io::Trajectory zig;
 	for (size_t k = 0; k < ref.size(); k++)
-		zig.emplace_back(ref[k].first, TPose2D(ref[k].second.x, ref[k].second.y + (k % 2 ? 0.2 : -0.2), ref[k].second.phi));
+		zig.emplace_back(ref[k].first,
+						 TPose2D(ref[k].second.x, ref[k].second.y + (k % 2 ? 0.2 : -0.2), ref[k].second.phi));
 	const auto z = eval::evaluateTrajectory(zig, ref);
 	EXPECT_NEAR(z.ateRmse, 0.2, 2e-3);
 	EXPECT_NEAR(z.localT, 0.4, 1e-9);
@@ -125,7 +127,8 @@ TEST(TrajectoryEval, AgreesWithEvaltrajPy)
 	if (run("command -v python3").empty() || !fs::exists(py)) GTEST_SKIP() << "python3 or evaltraj.py not available";
 	const std::string dir = (fs::temp_directory_path() / "gv_trajectory_eval_test").string();
 	fs::create_directories(dir);
-	const auto bench = sim::makeBenchmarkLog(std::string(GV_SHARED_DIR) + "/data/intel-corrected.log.gz", dir + "/intel");
+	const auto bench =
+		sim::makeBenchmarkLog(std::string(GV_SHARED_DIR) + "/data/intel-corrected.log.gz", dir + "/intel");
 	const auto ref = io::readTrajectory(bench.refPath);
 	const auto odo = io::trajectoryOf(io::readLog(bench.logPath));
 	// estimates: raw odometry, and a thinned, jittered, noisy odometry
@@ -133,8 +136,9 @@ TEST(TrajectoryEval, AgreesWithEvaltrajPy)
 	sim::Random rng(7);
 	for (size_t k = 0; k < odo.size(); k++)
 		if (k % 5 != 0)
-			odd.emplace_back(odo[k].first + rng.uniform(-0.06, 0.06),
-							 TPose2D(odo[k].second.x + rng.gauss(0, 0.3), odo[k].second.y, odo[k].second.phi + rng.gauss(0, 0.05)));
+			odd.emplace_back(
+				odo[k].first + rng.uniform(-0.06, 0.06),
+				TPose2D(odo[k].second.x + rng.gauss(0, 0.3), odo[k].second.y, odo[k].second.phi + rng.gauss(0, 0.05)));
 	for (const auto& est : {odo, odd, ref})
 	{
 		io::writeTrajectory(dir + "/est.txt", est);
@@ -206,13 +210,15 @@ TEST(TrajectoryEval, AlignmentTransformMatchesAsGvEvalTraj)
 		for (size_t k = 0; k < ref.size(); k++)
 		{
 			const auto& e = est[k].second;
-			const double x = std::cos(T.phi) * e.x - std::sin(T.phi) * e.y + T.x, y = std::sin(T.phi) * e.x + std::cos(T.phi) * e.y + T.y;
+			const double x = std::cos(T.phi) * e.x - std::sin(T.phi) * e.y + T.x,
+						 y = std::sin(T.phi) * e.x + std::cos(T.phi) * e.y + T.y;
 			w = std::max(w, std::hypot(x - ref[k].second.x, y - ref[k].second.y));
 		}
 		return w;
 	};
 	EXPECT_LT(worst(A), 1e-6);
-	EXPECT_GT(worst(eval::alignmentTransform(eval::matchByTimestamp(est, ref, 0.05))), 1.0);  // what pairing by time gave
+	EXPECT_GT(worst(eval::alignmentTransform(eval::matchByTimestamp(est, ref, 0.05))),
+			  1.0);  // what pairing by time gave
 	auto fewer = est;
 	fewer.pop_back();
 	EXPECT_THROW(eval::alignmentTransform(fewer, ref, 0.05), std::runtime_error);  // refused as gv-eval traj refuses it
@@ -225,8 +231,9 @@ TEST(TrajectoryEval, TimesSharedByDifferentPosesWithoutOnePosePerScanAreAnError)
 	fewer.pop_back();
 	auto shifted = ref;
 	shifted[150].first += 1.0;
-	for (const auto& [est, what] : {std::pair(fewer, std::string("199 estimate and 200 reference poses)")),
-									std::pair(shifted, std::string("200 estimate and 200 reference poses, pose 151 at other times)"))})
+	for (const auto& [est, what] :
+		 {std::pair(fewer, std::string("199 estimate and 200 reference poses)")),
+		  std::pair(shifted, std::string("200 estimate and 200 reference poses, pose 151 at other times)"))})
 		try
 		{
 			eval::matchPoses(est, ref, 0.05);
@@ -266,7 +273,9 @@ TEST(TrajectoryEval, GvEvalScoresCsailsRawLogByOrder)
 	const std::string bin = std::string(GV_BIN_DIR) + "/gv-eval";
 	if (!fs::exists(bin) || !fs::exists(csail)) GTEST_SKIP() << "gv-eval or csail-corrected not available";
 	const std::string out = run("'" + bin + "' traj '" + csail + "' '" + csail + "' --log-pose 2>&1");
-	EXPECT_NE(out.find("365 estimate poses share t = 1134860000.000000 and differ: matched by order"), std::string::npos) << out;
+	EXPECT_NE(out.find("365 estimate poses share t = 1134860000.000000 and differ: matched by order"),
+			  std::string::npos)
+		<< out;
 	const auto m = parseKeyValues(out.substr(out.find("n=")));
 	EXPECT_EQ(m.at("n"), 406);
 	EXPECT_EQ(m.at("ate_rmse_m"), 0);

@@ -37,10 +37,10 @@ const GridVector* findWall(const LocalScan& ls, const gvtest::Seg& w)
 
 double endpointError(const GridVector& v, const gvtest::Seg& w)
 {
-	const double a = std::max(std::hypot(v.start().x - w.x1, v.start().y - w.y1),
-							  std::hypot(v.end().x - w.x2, v.end().y - w.y2));
-	const double b = std::max(std::hypot(v.start().x - w.x2, v.start().y - w.y2),
-							  std::hypot(v.end().x - w.x1, v.end().y - w.y1));
+	const double a =
+		std::max(std::hypot(v.start().x - w.x1, v.start().y - w.y1), std::hypot(v.end().x - w.x2, v.end().y - w.y2));
+	const double b =
+		std::max(std::hypot(v.start().x - w.x2, v.start().y - w.y2), std::hypot(v.end().x - w.x1, v.end().y - w.y1));
 	return std::min(a, b);
 }
 }  // namespace
@@ -79,7 +79,9 @@ TEST(VectorExtractor, NoisyRoomKeepsAnglesWithinHalfDegree)
 		if (scan.getScanRangeValidity(i)) scan.setScanRange(i, scan.getScanRange(i) + noise(rng));
 	// Scan taken from sensor pose (0.3,0.2,0.4): express walls in that frame.
 	const double c = std::cos(-0.4), s = std::sin(-0.4);
-	auto tf = [&](double x, double y) { return TPoint2D(c * (x - 0.3) - s * (y - 0.2), s * (x - 0.3) + c * (y - 0.2)); };
+	auto tf = [&](double x, double y) {
+		return TPoint2D(c * (x - 0.3) - s * (y - 0.2), s * (x - 0.3) + c * (y - 0.2));
+	};
 	VectorExtractor ex;
 	const LocalScan ls = ex.extract(scan);
 	ASSERT_GE(ls.vectors.size(), 2u);

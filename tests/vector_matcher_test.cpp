@@ -1,7 +1,7 @@
 // VectorMatcher (Sec. 4.2): registration accuracy, corridor degeneracy, rejection, speed.
 #include "match_world.h"
 
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 #include "mstep/VectorMatcher.h"
 
 #include <Eigen/Eigenvalues>
@@ -29,9 +29,8 @@ TPose2D relative(const TPose2D& a, const TPose2D& b)
 // An office-like room (walls counter-clockwise, seen from inside) with furniture.
 std::vector<WorldSeg> room()
 {
-	return {{0, 0, 4, 0},	{4.5, 0, 8, 0},	   {8, 0, 8, 3},	 {8, 3.8, 8, 6},
-			{8, 6, 3, 6},	{2.2, 6, 0, 6},	   {0, 6, 0, 0},	 {2, 2, 2, 3.2},
-			{2, 3.2, 3.5, 3.2}, {3.5, 3.2, 3.5, 2}, {3.5, 2, 2, 2}, {6, 4, 5.2, 4.6}};
+	return {{0, 0, 4, 0}, {4.5, 0, 8, 0}, {8, 0, 8, 3},       {8, 3.8, 8, 6},     {8, 6, 3, 6},   {2.2, 6, 0, 6},
+			{0, 6, 0, 0}, {2, 2, 2, 3.2}, {2, 3.2, 3.5, 3.2}, {3.5, 3.2, 3.5, 2}, {3.5, 2, 2, 2}, {6, 4, 5.2, 4.6}};
 }
 }  // namespace
 
@@ -140,8 +139,7 @@ TEST(VectorMatcher, ReusedWorkspaceGivesIdenticalResults)
 	// between calls (speed is measured by benchmarks, not here): results must not
 	// depend on what the previous call left in it.
 	std::vector<WorldSeg> w = room();
-	for (int k = 0; k < 28; ++k)
-		w.push_back({10.0 + k, 0.0 + 0.1 * k, 10.5 + k, 0.3 + 0.1 * k});
+	for (int k = 0; k < 28; ++k) w.push_back({10.0 + k, 0.0 + 0.1 * k, 10.5 + k, 0.3 + 0.1 * k});
 	const TPose2D xa(1, 1, 0.1), xb(1.3, 1.1, 0.15);
 	const auto a = observe(w, xa, 0.005, 3, 1), b = observe(w, xb, 0.005, 4, 100);
 	const auto small = observe(room(), xa, 0.005, 5, 200);
@@ -198,11 +196,13 @@ TEST(VectorMatcher, StepWithinGatesKeepsNearlyParallelPairsFromSendingTheRegistr
 	off.stepWithinGates = false;  // the full step (on by default)
 	on.stepWithinGates = true;
 	const VectorMatcher full(off), bounded(on);
-	const TPose2D guess(truth.x + 0.8 * std::cos(M_PI / 8), truth.y + 0.8 * std::sin(M_PI / 8), truth.phi + 5 * M_PI / 180);
-	EXPECT_GT(se2::distance(full.match(a, b, guess).pose, guess), 3.0);  // ran away
+	const TPose2D guess(truth.x + 0.8 * std::cos(M_PI / 8), truth.y + 0.8 * std::sin(M_PI / 8),
+						truth.phi + 5 * M_PI / 180);
+	EXPECT_GT(std::hypot(full.match(a, b, guess).pose.x - guess.x, full.match(a, b, guess).pose.y - guess.y),
+			  3.0);  // ran away
 	const MatchResult r = bounded.match(a, b, guess);
 	ASSERT_TRUE(r.ok()) << toString(r.status);
-	EXPECT_LT(se2::distance(r.pose, truth), 1e-3);
+	EXPECT_LT(std::hypot(r.pose.x - truth.x, r.pose.y - truth.y), 1e-3);
 	EXPECT_NEAR(r.pose.phi, truth.phi, 1e-4);
 	// guesses 0.6, 0.8, 1 m off in 16 directions, turned +-5 deg: none runs away with the bound
 	int fullFar = 0, boundedFar = 0, fullGood = 0, boundedGood = 0;
@@ -213,10 +213,10 @@ TEST(VectorMatcher, StepWithinGatesKeepsNearlyParallelPairsFromSendingTheRegistr
 				const TPose2D g(truth.x + d * std::cos(k * M_PI / 8), truth.y + d * std::sin(k * M_PI / 8),
 								truth.phi + dphi * M_PI / 180);
 				const MatchResult f = full.match(a, b, g), s = bounded.match(a, b, g);
-				fullFar += se2::distance(f.pose, g) > 2.0;
-				boundedFar += se2::distance(s.pose, g) > 2.0;
-				fullGood += f.ok() && se2::distance(f.pose, truth) < 0.01;
-				boundedGood += s.ok() && se2::distance(s.pose, truth) < 0.01;
+				fullFar += std::hypot(f.pose.x - g.x, f.pose.y - g.y) > 2.0;
+				boundedFar += std::hypot(s.pose.x - g.x, s.pose.y - g.y) > 2.0;
+				fullGood += f.ok() && std::hypot(f.pose.x - truth.x, f.pose.y - truth.y) < 0.01;
+				boundedGood += s.ok() && std::hypot(s.pose.x - truth.x, s.pose.y - truth.y) < 0.01;
 			}
 	EXPECT_GT(fullFar, 0);
 	EXPECT_EQ(boundedFar, 0);

@@ -10,8 +10,8 @@
 #include "wall_pieces.h"
 
 using namespace gridvector;
-using mrpt::math::TPoint2D;
 using gvtest::arcPiece;
+using mrpt::math::TPoint2D;
 
 namespace
 {
@@ -257,7 +257,8 @@ TEST(VectorMerger, ShortPartIntoALongWallKeepsTheWallsGrid)
 	expectTotalsConserved({&a, &b}, r);
 	for (int k = 0; k < r.rows(); ++k)
 		for (int c = 1; c + 1 < r.cols(); ++c)
-			EXPECT_NEAR(r.cell(k, c).occupancy(r.priorRatio()), m.cell(k, c).occupancy(m.priorRatio()), 0.02) << k << " " << c;
+			EXPECT_NEAR(r.cell(k, c).occupancy(r.priorRatio()), m.cell(k, c).occupancy(m.priorRatio()), 0.02)
+				<< k << " " << c;
 	// a part that moves the line further than the tolerance gets a new grid
 	const GridVector once = wall({0, 0}, {20, 0}, 0.003, 4), far = wall({5, 0.12}, {15, 0.12}, 0.003, 3);
 	const GridVector moved = fast.merge(once, far);

@@ -43,6 +43,8 @@ TEST(RunTool, HelpWinsOverVersion)
 	io::ArgParser args("gv-x", "[ARG]");
 	const char* argv[] = {"gv-x", "--version", "--help"};
 	std::ostringstream out, err;
-	EXPECT_EQ(io::runTool(args, 3, argv, [] { return 3; }, out, err), 0);
+	EXPECT_EQ(io::runTool(
+				  args, 3, argv, [] { return 3; }, out, err),
+			  0);
 	EXPECT_EQ(out.str(), args.usage());
 }

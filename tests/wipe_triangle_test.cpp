@@ -100,7 +100,9 @@ TEST(WipeTriangle, NearNormalIncidenceKeepsTheBand)
 			const double a = (p.x - ox) * (0 - dO) - (p.y - dO) * (sx - ox);  // sides of the rays O->S, O->E
 			const double b = (p.x - ox) * (0 - dO) - (p.y - dO) * (ex - ox);
 			if (!(a <= -1e-9 && b >= 1e-9)) continue;  // strictly inside the cone
-			const WipePart band_only = p.y > band ? WipePart::Visited : p.y >= -band ? WipePart::Hit : WipePart::Outside;
+			const WipePart band_only = p.y > band     ? WipePart::Visited
+									   : p.y >= -band ? WipePart::Hit
+													  : WipePart::Outside;
 			if (std::abs(std::abs(p.y) - band) < 1e-9) continue;  // on the band's edge: rounding
 			EXPECT_EQ(t.classify(p), band_only) << trial << " " << p.x << " " << p.y;
 			hits += band_only == WipePart::Hit;
@@ -124,8 +126,11 @@ TEST(WipeTriangle, DegenerateWhenSensorOnTheLine)
 TEST(WipeTriangle, NonFiniteInputIsDegenerate)
 {
 	const double nan = std::nan(""), inf = std::numeric_limits<double>::infinity();
-	for (const auto& [o, s, e] : {std::array<TPoint2D, 3>{TPoint2D(nan, 0), S, E}, {O, TPoint2D(1, nan), E},
-								  {O, S, TPoint2D(inf, 2)}, {TPoint2D(0, -inf), S, E}, {O, TPoint2D(inf, inf), E}})
+	for (const auto& [o, s, e] : {std::array<TPoint2D, 3>{TPoint2D(nan, 0), S, E},
+								  {O, TPoint2D(1, nan), E},
+								  {O, S, TPoint2D(inf, 2)},
+								  {TPoint2D(0, -inf), S, E},
+								  {O, TPoint2D(inf, inf), E}})
 	{
 		const WipeTriangle t(o, s, e, 0.05);
 		EXPECT_TRUE(t.degenerate()) << o.x << " " << o.y << " " << s.x << " " << s.y << " " << e.x << " " << e.y;
@@ -295,8 +300,8 @@ TEST(WipeTriangle, RasterisationEqualsClassifyOnTheConeEdges)
 {
 	std::mt19937 rng(5);
 	std::uniform_int_distribution<int> step(-3, 3), reach(4, 30), cols(20, 80);
-	const double offsets[] = {0, 1e-13, -1e-13, 1e-12, -1e-12, 3e-12, -3e-12, 1e-10, -1e-10, 5e-10, -5e-10,
-							  9e-10, -9e-10, 2e-9, -2e-9};
+	const double offsets[] = {0,      1e-13, -1e-13, 1e-12, -1e-12, 3e-12, -3e-12, 1e-10,
+							  -1e-10, 5e-10, -5e-10, 9e-10, -9e-10, 2e-9,  -2e-9};
 	size_t checked = 0, inside = 0, nearEdgeOut = 0, nearEdgeIn = 0;
 	for (int trial = 0; trial < 600; ++trial)
 	{

@@ -73,7 +73,8 @@ int main(int argc, char** argv)
 			size_t odo = 0;
 			for (const auto& s : log.scans) odo += s.hasOdometry;
 			std::cout << log.summary << rangeNote << "\n"
-					  << "wrote " << args.positional()[1] << ": " << gridvector::io::counted(log.scans.size(), "scan") << ", "
+					  << "wrote " << args.positional()[1] << ": " << gridvector::io::counted(log.scans.size(), "scan")
+					  << ", "
 					  << (format == "sf" ? gridvector::io::counted(log.scans.size(), "robot-movement action")
 										 : gridvector::io::counted(odo, "odometry observation"))
 					  << " (" << (format == "sf" ? "actions+sensory-frames" : "observation-only") << " format"

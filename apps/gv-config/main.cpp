@@ -18,22 +18,23 @@ int main(int argc, char** argv)
 	args.flag("markdown", "print the parameter table of doc/parameters.md");
 	args.flag("json", "print every key with its value, range and meaning as JSON");
 	args.option("check", "FILE.ini", "load and validate FILE.ini (unknown keys and bad values are errors)", "none");
-	return io::runTool(
-		args, argc, argv,
-		[&] {
-			args.requirePositional(0, 0);
-			const int modes = int(args.has("ini")) + int(args.has("markdown")) + int(args.has("json")) +
-							  int(args.has("check"));
-			if (modes != 1) args.fail("give exactly one of --ini, --markdown, --json, --check");
-			GridVectorConfig cfg;
-			if (args.has("ini")) cfg.dumpAsIni(std::cout);
-			else if (args.has("json")) std::cout << cfg.parametersJson() << "\n";
-			else if (args.has("markdown")) std::cout << GridVectorConfig::parameterTableMarkdown();
-			else
-			{
-				cfg.loadFromFile(args.get("check"));
-				std::cout << args.get("check") << ": OK\n";
-			}
-			return 0;
-		});
+	return io::runTool(args, argc, argv, [&] {
+		args.requirePositional(0, 0);
+		const int modes =
+			int(args.has("ini")) + int(args.has("markdown")) + int(args.has("json")) + int(args.has("check"));
+		if (modes != 1) args.fail("give exactly one of --ini, --markdown, --json, --check");
+		GridVectorConfig cfg;
+		if (args.has("ini"))
+			cfg.dumpAsIni(std::cout);
+		else if (args.has("json"))
+			std::cout << cfg.parametersJson() << "\n";
+		else if (args.has("markdown"))
+			std::cout << GridVectorConfig::parameterTableMarkdown();
+		else
+		{
+			cfg.loadFromFile(args.get("check"));
+			std::cout << args.get("check") << ": OK\n";
+		}
+		return 0;
+	});
 }

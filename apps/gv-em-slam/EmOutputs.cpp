@@ -19,8 +19,8 @@ void writeVectors(const std::string& path, const std::vector<GridVector>& vector
 	io::writeFileAtomically(path, [&](std::ostream& o) {
 		o << "# x1 y1 x2 y2 p_static state (gv-em-slam final merged map)\n" << std::fixed << std::setprecision(4);
 		for (const auto& v : vectors)
-			o << v.start().x << ' ' << v.start().y << ' ' << v.end().x << ' ' << v.end().y << ' ' << v.pStatic()
-			  << ' ' << (v.state == VectorState::Dynamic ? "dynamic" : "static") << '\n';
+			o << v.start().x << ' ' << v.start().y << ' ' << v.end().x << ' ' << v.end().y << ' ' << v.pStatic() << ' '
+			  << (v.state == VectorState::Dynamic ? "dynamic" : "static") << '\n';
 	});
 }
 
@@ -56,8 +56,8 @@ void writeSvg(const std::string& path, const std::vector<GridVector>& vectors, c
 		{
 			o << "<circle cx=\"" << d.hinge.x << "\" cy=\"" << d.hinge.y << "\" r=\"0.12\" fill=\"green\"/>\n";
 			for (double a : d.angles)
-				o << "<line x1=\"" << d.hinge.x << "\" y1=\"" << d.hinge.y << "\" x2=\"" << d.hinge.x + d.length * std::cos(a)
-				  << "\" y2=\"" << d.hinge.y + d.length * std::sin(a)
+				o << "<line x1=\"" << d.hinge.x << "\" y1=\"" << d.hinge.y << "\" x2=\""
+				  << d.hinge.x + d.length * std::cos(a) << "\" y2=\"" << d.hinge.y + d.length * std::sin(a)
 				  << "\" stroke=\"green\" stroke-width=\"0.06\" stroke-dasharray=\"0.1,0.05\"/>\n";
 		}
 		o << "</g>\n</svg>\n";
@@ -145,7 +145,10 @@ nlohmann::ordered_json finalMapJson(const std::vector<GridVector>& vectors, size
 	double ls = 0, ld = 0;
 	for (const auto& v : vectors)
 		(v.state == VectorState::Dynamic ? nd : ns)++, (v.state == VectorState::Dynamic ? ld : ls) += v.length();
-	return {{"static_vectors", ns}, {"dynamic_vectors", nd}, {"static_length_m", ls}, {"dynamic_length_m", ld},
+	return {{"static_vectors", ns},
+			{"dynamic_vectors", nd},
+			{"static_length_m", ls},
+			{"dynamic_length_m", ld},
 			{"doors", doors}};
 }
 }  // namespace

@@ -1,6 +1,6 @@
 #include "InitialTrajectory.h"
 
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <algorithm>
 #include <cmath>
@@ -17,12 +17,16 @@ std::vector<mrpt::math::TPose2D> initialTrajectory(const io::LogData& log,
 	size_t matched = 0;
 	for (size_t t = 0; t < out.size(); ++t)
 	{
-		if (poses[t]) out[t] = *poses[t], ++matched;
-		else if (t == 0) out[t] = odometry[0];
-		else out[t] = se2::compose(out[t - 1], se2::relative(odometry[t - 1], odometry[t]));
+		if (poses[t])
+			out[t] = *poses[t], ++matched;
+		else if (t == 0)
+			out[t] = odometry[0];
+		else
+			out[t] = out[t - 1] + (odometry[t] - odometry[t - 1]);
 	}
 	if (matched == 0)
-		throw std::runtime_error(path + ": no pose within " + std::to_string(maxDt) + " s of any scan of " + log.source);
+		throw std::runtime_error(path + ": no pose within " + std::to_string(maxDt) + " s of any scan of " +
+								 log.source);
 	return out;
 }
 }  // namespace gridvector::app

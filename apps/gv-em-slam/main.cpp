@@ -7,7 +7,8 @@
 // Writes to DIR: trajectory.txt (t x y theta per scan, the input's timestamps),
 // map.gvmap (serialized mrpt::maps::CGridVectorMap), vectors.txt
 // (x1 y1 x2 y2 p_static static|dynamic), vectors.svg, occupancy.png/.pgm/.yaml,
-// doors.txt, door_states.txt (every state, wall and leaves of each door) and report.json (per-iteration figures, memory as Table 1, timings).
+// doors.txt, door_states.txt (every state, wall and leaves of each door) and report.json (per-iteration figures, memory
+// as Table 1, timings).
 #include "EmOutputs.h"
 #include "InitialTrajectory.h"
 
@@ -72,14 +73,16 @@ void dumpEdges(int iteration, const MStep& m, const std::vector<std::vector<Matc
 	const std::string path = std::string(dir) + "/edges_" + std::to_string(iteration) + ".txt";
 	std::FILE* f = std::fopen(path.c_str(), "w");
 	if (!f) return;
-	std::fprintf(f, "# from to kind rejected dof degeneracy rms matched_length correspondences x y phi I00 I01 I02 I11 I12 I22\n");
+	std::fprintf(
+		f,
+		"# from to kind rejected dof degeneracy rms matched_length correspondences x y phi I00 I01 I02 I11 I12 I22\n");
 	for (const auto& [k, c] : m.constraints())
 	{
 		const Eigen::Matrix3d I = m.graphInformation(c);
-		std::fprintf(f, "%zu %zu %s %d %d %.4g %.4g %.4g %zu %.6f %.6f %.6f %.6g %.6g %.6g %.6g %.6g %.6g\n", key[c.from],
-					 key[c.to], toString(c.kind), int(c.rejected), c.dof, c.degeneracy, c.rms, c.matchedLength,
-					 c.correspondences.size(), c.z.x, c.z.y, c.z.phi, I(0, 0), I(0, 1), I(0, 2), I(1, 1), I(1, 2),
-					 I(2, 2));
+		std::fprintf(f, "%zu %zu %s %d %d %.4g %.4g %.4g %zu %.6f %.6f %.6f %.6g %.6g %.6g %.6g %.6g %.6g\n",
+					 key[c.from], key[c.to], toString(c.kind), int(c.rejected), c.dof, c.degeneracy, c.rms,
+					 c.matchedLength, c.correspondences.size(), c.z.x, c.z.y, c.z.phi, I(0, 0), I(0, 1), I(0, 2),
+					 I(1, 1), I(1, 2), I(2, 2));
 	}
 	std::fclose(f);
 	f = std::fopen((std::string(dir) + "/static_" + std::to_string(iteration) + ".txt").c_str(), "w");
@@ -101,7 +104,8 @@ int run(const io::ArgParser& args)
 	if (args.has("config")) cfg.loadFromFile(args.get("config"));
 	if (args.has("max-iterations")) cfg.mstep.maxIterations = int(args.getInt("max-iterations", 10, 1, 1000));
 	const std::string input = args.get("input"), dir = args.get("out") + "/";
-	io::OutputDirectory outDir(args.get("out"), "report.json");  // checked now, created when there is something to write
+	io::OutputDirectory outDir(args.get("out"),
+							   "report.json");  // checked now, created when there is something to write
 
 	app::RunFigures fig;
 	fig.input = input;
@@ -183,8 +187,8 @@ int run(const io::ArgParser& args)
 					 "%s after %s: %zu static + %zu dynamic vectors, %s; %.2f s "
 					 "(read %.2f, extract %.2f, EM %.2f, final map %.2f, outputs %.2f)\n",
 					 res.converged ? "converged" : "stopped", io::counted(res.iterations.size(), "iteration").c_str(),
-					 res.finalVectors.size() - nd, nd, io::counted(doors.size(), "door").c_str(), fig.totalSeconds, fig.readSeconds, fig.extractSeconds, fig.emSeconds,
-					 res.finalMapSeconds, fig.outputSeconds);
+					 res.finalVectors.size() - nd, nd, io::counted(doors.size(), "door").c_str(), fig.totalSeconds,
+					 fig.readSeconds, fig.extractSeconds, fig.emSeconds, res.finalMapSeconds, fig.outputSeconds);
 		std::fprintf(stderr, "%s", MemoryAccounting::summary(fig.memory).c_str());
 		std::fprintf(stderr,
 					 "wrote %s{trajectory.txt, map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, "
@@ -197,21 +201,21 @@ int run(const io::ArgParser& args)
 
 int main(int argc, char** argv)
 {
-	io::ArgParser args("gv-em-slam", "--input LOG --out DIR [--config FILE.ini] [--init TRAJ] [--max-iterations N] [--quiet]");
+	io::ArgParser args("gv-em-slam",
+					   "--input LOG --out DIR [--config FILE.ini] [--init TRAJ] [--max-iterations N] [--quiet]");
 	args.option("input", "LOG", "CARMEN log (.log/.clf[.gz]) or MRPT rawlog", io::ArgParser::kRequired);
 	args.option("out", "DIR", "output directory (created if missing)", io::ArgParser::kRequired);
 	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_*] sections)",
 				"the library's defaults (gv-config --ini)");
-	args.option("init", "TRAJ", "start from this 't x y theta' trajectory (e.g. gv-graphslam's) instead of raw odometry",
+	args.option("init", "TRAJ",
+				"start from this 't x y theta' trajectory (e.g. gv-graphslam's) instead of raw odometry",
 				"none: raw odometry");
 	args.option("max-iterations", "N", "EM iterations at most (overrides [gridvector_mstep] max_iterations)",
 				std::to_string(GridVectorConfig().mstep.maxIterations));
 	args.flag("quiet", "no progress or summary output");
-	return io::runTool(
-		args, argc, argv,
-		[&] {
-			if (!args.has("input") || !args.has("out")) args.fail("--input and --out are required");
-			args.requirePositional(0, 0);
-			return run(args);  // a bad option value found there (--max-iterations 0) is bad usage: status 2
-		});
+	return io::runTool(args, argc, argv, [&] {
+		if (!args.has("input") || !args.has("out")) args.fail("--input and --out are required");
+		args.requirePositional(0, 0);
+		return run(args);  // a bad option value found there (--max-iterations 0) is bad usage: status 2
+	});
 }

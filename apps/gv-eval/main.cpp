@@ -55,7 +55,8 @@ double maxTimeDiff(const io::ArgParser& a)
 }
 
 /** eval::matchPoses with the files named in its errors, and a note on stderr when it matched by order. */
-eval::PoseMatch matchTrajectories(const io::Trajectory& est, const io::Trajectory& ref, double maxDt, const std::string& files)
+eval::PoseMatch matchTrajectories(const io::Trajectory& est, const io::Trajectory& ref, double maxDt,
+								  const std::string& files)
 {
 	eval::PoseMatch match;
 	try
@@ -182,14 +183,17 @@ int main(int argc, char** argv)
 				"shared by different poses, one pose per scan of the same log is matched by order",
 				io::shortestText(eval::TrajectoryEvalOptions().maxTimeDiff));
 	args.flag("log-pose", "traj: for logs, use the poses the log attaches to scans instead of odometry");
-	args.flag("absolute", "traj: localisation error in the reference's frame, nothing aligned (final error, convergence)");
+	args.flag("absolute",
+			  "traj: localisation error in the reference's frame, nothing aligned (final error, convergence)");
 	args.option("converged", "M", "traj --absolute: converged once every later error is below M (m)",
 				io::shortestText(kConvergedDefault));
-	args.option("trajectory", "EST", "map: the trajectory the map was built with; aligns the map to the truth like the ATE",
+	args.option("trajectory", "EST",
+				"map: the trajectory the map was built with; aligns the map to the truth like the ATE",
 				"none: the map is in the truth's frame");
 	args.option("doors", "FILE", "map: detected doors 'hinge_x hinge_y length ...' to score door recall",
 				"none: no door recall");
-	args.flag("breakdown", "map: the static length off every true wall by its nearest dynamic truth, and each door's passes");
+	args.flag("breakdown",
+			  "map: the static length off every true wall by its nearest dynamic truth, and each door's passes");
 	const eval::MapEvalOptions mapDefaults;
 	args.option("tolerance", "M", "map: distance for 'on a wall' / 'on a dynamic object' (m)",
 				io::shortestText(mapDefaults.wallTolerance));

@@ -65,8 +65,8 @@ const char* const kOptimizer = "CLevMarqGSO";
 std::vector<std::string> longOptions(int argc, char** argv)
 {
 	static const std::map<std::string, std::string> shortToLong = {
-		{"-i", "--ini-file"}, {"-r", "--rawlog"},	 {"-g", "--ground-truth"},
-		{"-n", "--node-reg"}, {"-e", "--edge-reg"}, {"-o", "--optimizer"}, {"-h", "--help"}};
+		{"-i", "--ini-file"}, {"-r", "--rawlog"},    {"-g", "--ground-truth"}, {"-n", "--node-reg"},
+		{"-e", "--edge-reg"}, {"-o", "--optimizer"}, {"-h", "--help"}};
 	std::vector<std::string> out;
 	for (int i = 0; i < argc; ++i)
 	{
@@ -141,8 +141,8 @@ void requireFile(const std::string& path, const char* what)
 }
 
 /** Feeds every rawlog entry to the engine; returns the number of entries. */
-size_t feed(const std::string& rawlog, mrpt::graphslam::CGraphSlamEngine<graph_t>& engine,
-			RunRecorder& rec, std::optional<GroundTruthIndex>& gt, bool quiet)
+size_t feed(const std::string& rawlog, mrpt::graphslam::CGraphSlamEngine<graph_t>& engine, RunRecorder& rec,
+			std::optional<GroundTruthIndex>& gt, bool quiet)
 {
 	mrpt::io::CFileGZInputStream in;
 	if (!in.open(rawlog)) throw std::runtime_error(rawlog + ": cannot open");
@@ -315,12 +315,9 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 	io::OutputDirectory outDir(dir, "trajectory.txt");  // checked now, created when the engine has results
 
 	// the engine does not own its deciders: they must outlive it
-	std::unique_ptr<mrpt::graphslam::deciders::CNodeRegistrationDecider<graph_t>> nrd(
-		reg.node_regs_map[s.nodeReg]());
-	std::unique_ptr<mrpt::graphslam::deciders::CEdgeRegistrationDecider<graph_t>> erd(
-		reg.edge_regs_map[s.edgeReg]());
-	std::unique_ptr<mrpt::graphslam::optimizers::CGraphSlamOptimizer<graph_t>> gso(
-		reg.optimizers_map[s.optimizer]());
+	std::unique_ptr<mrpt::graphslam::deciders::CNodeRegistrationDecider<graph_t>> nrd(reg.node_regs_map[s.nodeReg]());
+	std::unique_ptr<mrpt::graphslam::deciders::CEdgeRegistrationDecider<graph_t>> erd(reg.edge_regs_map[s.edgeReg]());
+	std::unique_ptr<mrpt::graphslam::optimizers::CGraphSlamOptimizer<graph_t>> gso(reg.optimizers_map[s.optimizer]());
 	std::optional<StdinFromDevNull> noPause(std::in_place);
 	// optional: destroyed before the marker is written, since its destructor writes timings.log
 	std::optional<mrpt::graphslam::CGraphSlamEngine<graph_t>> engineHolder;
@@ -329,8 +326,7 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 	noPause.reset();
 	if (s.quiet)
 		for (mrpt::system::COutputLogger* l :
-			 {static_cast<mrpt::system::COutputLogger*>(&engine),
-			  static_cast<mrpt::system::COutputLogger*>(nrd.get()),
+			 {static_cast<mrpt::system::COutputLogger*>(&engine), static_cast<mrpt::system::COutputLogger*>(nrd.get()),
 			  static_cast<mrpt::system::COutputLogger*>(erd.get()),
 			  static_cast<mrpt::system::COutputLogger*>(gso.get())})
 			l->setMinLoggingLevel(mrpt::system::LVL_ERROR);
@@ -358,13 +354,12 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 	io::writeTrajectory(outDir.markerPath(), rec.scanTrajectory(graph.nodes));  // last: with it the set is complete
 
 	char summary[1024];
-	std::snprintf(summary, sizeof summary,
-				"gv-graphslam: %s + %s + %s: %s, %s, %s, %s (%s), %s; SLAM %.2f s -> %s/\n",
-				s.nodeReg.c_str(), s.edgeReg.c_str(), s.optimizer.c_str(), io::counted(steps, "entry", "entries").c_str(),
-				io::counted(rec.scanCount(), "scan").c_str(), io::counted(graph.nodeCount(), "node").c_str(),
-				io::counted(graph.edgeCount(), "edge").c_str(),
-				io::counted(loopClosures(graph, lc.lcMinNodeIdDiff), "loop closure").c_str(),
-				io::counted(map.vectors().size(), "map vector").c_str(), slamSeconds, dir.c_str());
+	std::snprintf(summary, sizeof summary, "gv-graphslam: %s + %s + %s: %s, %s, %s, %s (%s), %s; SLAM %.2f s -> %s/\n",
+				  s.nodeReg.c_str(), s.edgeReg.c_str(), s.optimizer.c_str(),
+				  io::counted(steps, "entry", "entries").c_str(), io::counted(rec.scanCount(), "scan").c_str(),
+				  io::counted(graph.nodeCount(), "node").c_str(), io::counted(graph.edgeCount(), "edge").c_str(),
+				  io::counted(loopClosures(graph, lc.lcMinNodeIdDiff), "loop closure").c_str(),
+				  io::counted(map.vectors().size(), "map vector").c_str(), slamSeconds, dir.c_str());
 	return summary;
 }
 }  // namespace
@@ -376,14 +371,12 @@ int main(int argc, char** argv)
 	const auto argvLong = longOptions(argc, argv);
 	std::vector<const char*> cargv;
 	for (const auto& a : argvLong) cargv.push_back(a.c_str());
-	return io::runTool(
-		args, int(cargv.size()), cargv.data(),
-		[&] {
-			DeciderRegistry reg;
-			if (listings(args, reg)) return 0;
-			const Settings s = settingsFrom(args, reg);
-			const std::string summary = run(s, reg);
-			if (!s.quiet) std::fputs(summary.c_str(), stdout);
-			return 0;
-		});
+	return io::runTool(args, int(cargv.size()), cargv.data(), [&] {
+		DeciderRegistry reg;
+		if (listings(args, reg)) return 0;
+		const Settings s = settingsFrom(args, reg);
+		const std::string summary = run(s, reg);
+		if (!s.quiet) std::fputs(summary.c_str(), stdout);
+		return 0;
+	});
 }

@@ -22,7 +22,6 @@
 #include <mrpt/maps/CGridVectorMap.h>
 #include <mrpt/poses/CPose3D.h>
 
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -44,8 +43,10 @@ std::vector<std::optional<mrpt::math::TPose2D>> posesFor(const io::LogData& log,
 		for (size_t i = 0; i < log.scans.size(); ++i)
 		{
 			const auto& r = log.scans[i];
-			if (r.hasLogPose) out[i] = r.logPose;
-			else if (r.hasOdometry) out[i] = r.odometry;
+			if (r.hasLogPose)
+				out[i] = r.logPose;
+			else if (r.hasOdometry)
+				out[i] = r.odometry;
 		}
 		return out;
 	}
@@ -83,8 +84,7 @@ int run(const io::ArgParser& args)
 	progress.show("gv-map: scans", log.scans.size(), log.scans.size());
 	progress.done();
 	const double secs = std::chrono::duration<double>(Clock::now() - t0).count();
-	if (used == 0)
-		throw std::runtime_error((poseSource == "log" ? input : poseSource) + ": no scan has a pose");
+	if (used == 0) throw std::runtime_error((poseSource == "log" ? input : poseSource) + ": no scan has a pose");
 
 	const auto& vectors = map.vectors();
 	const auto grid = OccupancyConversion::toOccupancyGrid(vectors, cfg.occupancy, cfg.grid);
@@ -105,8 +105,10 @@ int run(const io::ArgParser& args)
 					io::counted(log.scans.size(), "scan").c_str(), secs, used / std::max(secs, 1e-9),
 					io::counted(vectors.size(), "grid vector").c_str());
 		std::printf("%s", MemoryAccounting::summary(mem).c_str());
-		std::printf("wrote %s{map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, occupancy.yaml, map.3Dscene, memory.json%s}\n",
-					dir.c_str(), simplemap ? ", map.simplemap" : "");
+		std::printf(
+			"wrote %s{map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, occupancy.yaml, map.3Dscene, "
+			"memory.json%s}\n",
+			dir.c_str(), simplemap ? ", map.simplemap" : "");
 	}
 	return 0;
 }
@@ -114,20 +116,20 @@ int run(const io::ArgParser& args)
 
 int main(int argc, char** argv)
 {
-	io::ArgParser args("gv-map", "--input LOG --poses {log|FILE} --out DIR [--config FILE.ini] [--simplemap] [--quiet]");
+	io::ArgParser args("gv-map",
+					   "--input LOG --poses {log|FILE} --out DIR [--config FILE.ini] [--simplemap] [--quiet]");
 	args.option("input", "LOG", "CARMEN log (.log/.clf, optionally .gz) or MRPT rawlog", io::ArgParser::kRequired);
-	args.option("poses", "log|FILE", "poses stored in the log, or a 't x y theta' trajectory file", io::ArgParser::kRequired);
+	args.option("poses", "log|FILE", "poses stored in the log, or a 't x y theta' trajectory file",
+				io::ArgParser::kRequired);
 	args.option("out", "DIR", "output directory (created if missing)", io::ArgParser::kRequired);
 	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_*] sections)",
 				"the library's defaults (gv-config --ini)");
 	args.flag("simplemap", "also write map.simplemap: the mapped scans at their poses (for MRPT's pf-localization)");
 	args.flag("quiet", "no progress and no summary");
-	return io::runTool(
-		args, argc, argv,
-		[&] {
-			args.requirePositional(0, 0);
-			for (const char* req : {"input", "poses", "out"})
-				if (!args.has(req)) args.fail(std::string("missing --") + req);
-			return run(args);
-		});
+	return io::runTool(args, argc, argv, [&] {
+		args.requirePositional(0, 0);
+		for (const char* req : {"input", "poses", "out"})
+			if (!args.has(req)) args.fail(std::string("missing --") + req);
+		return run(args);
+	});
 }

@@ -13,7 +13,8 @@ double timeMrptLaserSimulator(const gridvector::sim::SimResult& r)
 	constexpr float res = 0.05f;
 	double x0 = 1e9, y0 = 1e9, x1 = -1e9, y1 = -1e9;
 	for (const auto& w : r.world.walls)
-		for (const auto& p : {w.a, w.b}) x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+		for (const auto& p : {w.a, w.b})
+			x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
 	mrpt::maps::COccupancyGridMap2D grid;
 	grid.setSize(float(x0 - 1), float(x1 + 1), float(y0 - 1), float(y1 + 1), res, 1.0f);  // all free
 	for (const auto& w : r.world.walls)
@@ -29,6 +30,7 @@ double timeMrptLaserSimulator(const gridvector::sim::SimResult& r)
 	scan.aperture = float(r.laserResolution * (r.laser.beams - 1));
 	scan.maxRange = float(r.laser.maxRange);
 	const auto t0 = std::chrono::steady_clock::now();
-	for (const auto& s : r.scans) grid.laserScanSimulator(scan, mrpt::poses::CPose2D(s.truth), 0.5f, size_t(r.laser.beams));
+	for (const auto& s : r.scans)
+		grid.laserScanSimulator(scan, mrpt::poses::CPose2D(s.truth), 0.5f, size_t(r.laser.beams));
 	return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

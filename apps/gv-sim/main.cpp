@@ -57,18 +57,25 @@ bool assign(T& v, const std::string& s)
 template <class T>
 const char* kindOf(const T&)
 {
-	if constexpr (std::is_same_v<T, bool>) return "on/off, true/false, yes/no or 1/0";
-	else if constexpr (std::is_integral_v<T>) return "an integer";
-	else return "a finite number";
+	if constexpr (std::is_same_v<T, bool>)
+		return "on/off, true/false, yes/no or 1/0";
+	else if constexpr (std::is_integral_v<T>)
+		return "an integer";
+	else
+		return "a finite number";
 }
 
 template <class T>
 const char* typeName(const T&)
 {
-	if constexpr (std::is_same_v<T, bool>) return "on|off";
-	else if constexpr (std::is_integral_v<T>) return "N";
-	else if constexpr (std::is_floating_point_v<T>) return "X";
-	else return "NAME";
+	if constexpr (std::is_same_v<T, bool>)
+		return "on|off";
+	else if constexpr (std::is_integral_v<T>)
+		return "N";
+	else if constexpr (std::is_floating_point_v<T>)
+		return "X";
+	else
+		return "NAME";
 }
 
 /** SimOptions::validate on the values an .ini file set (the flags' range checks), naming the file. */
@@ -123,12 +130,14 @@ void printSummary(const sim::SimResult& r, const std::string& dir, double second
 	char b[512];
 	std::snprintf(b, sizeof b, "gv-sim: world %s, seed %lld: %s, %.1f m path, %.0f s, %s, %s (%s), %s",
 				  r.world.name.c_str(), (long long)r.options.seed, io::counted(s.scans, "scan").c_str(), s.pathLength,
-				  s.duration, io::counted(s.people, "person", "people").c_str(), io::counted(r.world.doors.size(), "door").c_str(),
-				  io::counted(s.doorSwings, "swing").c_str(), io::counted(r.world.objects.size(), "moved object").c_str());
-	std::cout << b << "\n  beams " << s.beams << ": static " << pct(double(s.staticHits), double(s.beams)) << ", dynamic "
-			  << pct(double(s.dynamicHits), double(s.beams)) << " (people " << pct(double(s.personHits), double(s.beams))
-			  << ", doors " << pct(double(s.doorHits), double(s.beams)) << ", moved object "
-			  << pct(double(s.objectHits), double(s.beams)) << "), no return " << pct(double(s.noHits), double(s.beams)) << "\n";
+				  s.duration, io::counted(s.people, "person", "people").c_str(),
+				  io::counted(r.world.doors.size(), "door").c_str(), io::counted(s.doorSwings, "swing").c_str(),
+				  io::counted(r.world.objects.size(), "moved object").c_str());
+	std::cout << b << "\n  beams " << s.beams << ": static " << pct(double(s.staticHits), double(s.beams))
+			  << ", dynamic " << pct(double(s.dynamicHits), double(s.beams)) << " (people "
+			  << pct(double(s.personHits), double(s.beams)) << ", doors " << pct(double(s.doorHits), double(s.beams))
+			  << ", moved object " << pct(double(s.objectHits), double(s.beams)) << "), no return "
+			  << pct(double(s.noHits), double(s.beams)) << "\n";
 	if (r.scans.size() >= 3)
 		std::cout << "  odometry vs truth: " << eval::formatText(eval::evaluateTrajectory(odo, truth)) << "\n";
 	std::snprintf(b, sizeof b, "%.2f", seconds);
@@ -155,7 +164,8 @@ int main(int argc, char** argv)
 		args.requirePositional(0, 0);
 		if (args.has("list-worlds"))
 		{
-			for (const auto& n : sim::builtinWorldNames()) std::cout << n << ": " << sim::makeWorld(n).description << "\n";
+			for (const auto& n : sim::builtinWorldNames())
+				std::cout << n << ": " << sim::makeWorld(n).description << "\n";
 			return 0;
 		}
 		if (args.has("config")) loadIni(opt, args.get("config"));
@@ -174,7 +184,8 @@ int main(int argc, char** argv)
 			args.fail("--" + flag + " " + e.problem + ", got '" + args.get(flag, "?") + "'");
 		}
 		const std::string dir = args.get("out", "gv-sim-" + opt.world + "-seed" + std::to_string(opt.seed));
-		io::OutputDirectory outDir(dir, sim::SimFiles::info);  // fail before simulating, create when writing; sim_info.txt last
+		io::OutputDirectory outDir(
+			dir, sim::SimFiles::info);  // fail before simulating, create when writing; sim_info.txt last
 		const bool quiet = args.has("quiet");
 		const auto t0 = std::chrono::steady_clock::now();
 		io::Progress progress("simulating " + opt.world, quiet);
@@ -187,9 +198,10 @@ int main(int argc, char** argv)
 		if (args.has("peer-timing"))
 		{
 			const double simSecs = std::chrono::duration<double>(tSim - t0).count();
-			std::printf("timing: gv-sim %.3f s for %zu scans (simulation only); MRPT COccupancyGridMap2D::laserScanSimulator "
-						"on a 5 cm grid of the static walls, same poses: %.3f s\n",
-						simSecs, r.scans.size(), timeMrptLaserSimulator(r));
+			std::printf(
+				"timing: gv-sim %.3f s for %zu scans (simulation only); MRPT COccupancyGridMap2D::laserScanSimulator "
+				"on a 5 cm grid of the static walls, same poses: %.3f s\n",
+				simSecs, r.scans.size(), timeMrptLaserSimulator(r));
 		}
 		return 0;
 	});

@@ -13,7 +13,7 @@
 // (sequential mode, no E-step; parameters: defaults, or --config), so the tested scans are held
 // out of both maps; with --map every scan goes into the occupancy grid, and --config sets the
 // map's [gridvector_matching] group only.
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 #include "common/ArgParser.h"
 #include "io/Counted.h"
 #include <gridvector/io/LogReader.h>
@@ -65,16 +65,18 @@ void report(const char* name, const Errors& e)
 {
 	size_t good = 0;
 	for (size_t k = 0; k < e.trans.size(); ++k) good += e.trans[k] < 0.05 && e.rot[k] < 1.0;
-	std::printf("%s: determineMatching2D %.1f us CPU per call (%zu calls, %.0f points and %.0f pairs per call); "
-				"ICP %.2f ms CPU per alignment\n",
-				name, 1e6 * e.matchSeconds / double(e.matchCalls), e.matchCalls, double(e.points) / double(e.matchCalls),
-				double(e.pairs) / double(e.matchCalls), 1e3 * e.icpSeconds / double(e.trans.size()));
+	std::printf(
+		"%s: determineMatching2D %.1f us CPU per call (%zu calls, %.0f points and %.0f pairs per call); "
+		"ICP %.2f ms CPU per alignment\n",
+		name, 1e6 * e.matchSeconds / double(e.matchCalls), e.matchCalls, double(e.points) / double(e.matchCalls),
+		double(e.pairs) / double(e.matchCalls), 1e3 * e.icpSeconds / double(e.trans.size()));
 	std::printf("%s: computeObservationLikelihood %.1f us CPU per call (%zu calls)\n", name,
 				1e6 * e.likelihoodSeconds / double(e.likelihoodCalls), e.likelihoodCalls);
-	std::printf("%s: error translation median %.4f p90 %.4f max %.4f m; rotation median %.3f p90 %.3f max %.3f deg; "
-				"within 5 cm and 1 deg: %zu of %zu\n",
-				name, percentile(e.trans, 0.5), percentile(e.trans, 0.9), percentile(e.trans, 1.0),
-				percentile(e.rot, 0.5), percentile(e.rot, 0.9), percentile(e.rot, 1.0), good, e.trans.size());
+	std::printf(
+		"%s: error translation median %.4f p90 %.4f max %.4f m; rotation median %.3f p90 %.3f max %.3f deg; "
+		"within 5 cm and 1 deg: %zu of %zu\n",
+		name, percentile(e.trans, 0.5), percentile(e.trans, 0.9), percentile(e.trans, 1.0), percentile(e.rot, 0.5),
+		percentile(e.rot, 0.9), percentile(e.rot, 1.0), good, e.trans.size());
 }
 
 /** Process CPU time [s]: other jobs on the core do not count. */
@@ -125,11 +127,13 @@ int run(const gridvector::io::ArgParser& args)
 	args.requirePositional(2, 2);
 	const std::string logPath = args.positional()[0], trajPath = args.positional()[1];
 	const long every = args.getInt("every", Defaults::every, 2, 1000000);
-	const double offset = args.getDouble("offset", Defaults::offset), offsetDeg = args.getDouble("offset-deg", Defaults::offsetDeg);
+	const double offset = args.getDouble("offset", Defaults::offset),
+				 offsetDeg = args.getDouble("offset-deg", Defaults::offsetDeg);
 	const double gridRes = args.getDouble("grid-resolution", Defaults::gridResolution);
 	const long repeat = args.getInt("repeat", Defaults::repeat, 1, 1000000);
 	const bool quiet = args.has("quiet");
-	if (!(offset >= 0) || !(offsetDeg >= 0) || !(gridRes > 0)) args.fail("--offset, --offset-deg must be >= 0, --grid-resolution > 0");
+	if (!(offset >= 0) || !(offsetDeg >= 0) || !(gridRes > 0))
+		args.fail("--offset, --offset-deg must be >= 0, --grid-resolution > 0");
 	gridvector::io::ReadOptions ro;
 	ro.quiet = quiet;
 	const gridvector::io::LogData data = gridvector::io::readLog(logPath, ro);
@@ -181,8 +185,7 @@ int run(const gridvector::io::ArgParser& args)
 		if (pts.size() == 0) continue;
 		const double a = dir(rng), sign = rng() % 2 ? 1.0 : -1.0;
 		const TPose2D ref = traj[i].second;
-		const TPose2D guess =
-			gridvector::se2::compose(ref, TPose2D(offset * std::cos(a), offset * std::sin(a), sign * offsetDeg * M_PI / 180));
+		const TPose2D guess = ref + TPose2D(offset * std::cos(a), offset * std::sin(a), sign * offsetDeg * M_PI / 180);
 		alignOne(gv, pts, ref, guess, repeat, eGv);
 		alignOne(grid, pts, ref, guess, repeat, eGrid);
 		likelihoodOne(gv, *data.scans[i].scan, ref, guess, repeat, eGv);
@@ -204,11 +207,13 @@ int main(int argc, char** argv)
 	using gridvector::io::shortestText;
 	args.option("map", "MAP.gvmap", "the grid-vector map", "built from every other scan at its TRAJ pose");
 	args.option("every", "N", "test scans N/2, N/2 + N, ...", std::to_string(Defaults::every));
-	args.option("offset", "M", "guess this far from the TRAJ pose, in a random direction [m]", shortestText(Defaults::offset));
+	args.option("offset", "M", "guess this far from the TRAJ pose, in a random direction [m]",
+				shortestText(Defaults::offset));
 	args.option("offset-deg", "D", "... and turned by +-D [deg]", shortestText(Defaults::offsetDeg));
 	args.option("seed", "S", "seed of the guesses' directions", std::to_string(Defaults::seed));
 	args.option("grid-resolution", "R", "MRPT occupancy grid's cell size [m]", shortestText(Defaults::gridResolution));
-	args.option("config", "FILE.ini", "gridvector parameters for the map built here; with --map its [gridvector_matching] only",
+	args.option("config", "FILE.ini",
+				"gridvector parameters for the map built here; with --map its [gridvector_matching] only",
 				"the library's defaults (gv-config --ini)");
 	args.option("repeat", "R", "time each determineMatching2D / likelihood call R times (steadier figures)",
 				std::to_string(Defaults::repeat));

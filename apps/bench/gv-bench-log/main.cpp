@@ -11,7 +11,8 @@ using namespace gridvector;
 
 int main(int argc, char** argv)
 {
-	io::ArgParser args("gv-bench-log", "IN-corrected.log[.gz] OUT_PREFIX [options]   (writes OUT_PREFIX.log, OUT_PREFIX.ref.txt)");
+	io::ArgParser args("gv-bench-log",
+					   "IN-corrected.log[.gz] OUT_PREFIX [options]   (writes OUT_PREFIX.log, OUT_PREFIX.ref.txt)");
 	const sim::BenchmarkOptions defaults;  // mkbench.py's
 	args.option("seed", "N", "random seed", std::to_string(defaults.seed));
 	args.option("sigma-t", "X", "relative translation noise", io::shortestText(defaults.noise.sigmaT));
@@ -31,8 +32,8 @@ int main(int argc, char** argv)
 		if (o.dt <= 0) args.fail("--dt must be > 0");
 		const auto s = sim::makeBenchmarkLog(args.positional()[0], args.positional()[1], o);
 		if (!args.has("quiet"))
-			std::cout << "gv-bench-log: " << io::counted(s.scans, "scan") << " from " << args.positional()[0] << " (seed " << o.seed
-					  << ") -> " << s.logPath << ", " << s.refPath << "\n";
+			std::cout << "gv-bench-log: " << io::counted(s.scans, "scan") << " from " << args.positional()[0]
+					  << " (seed " << o.seed << ") -> " << s.logPath << ", " << s.refPath << "\n";
 		return 0;
 	});
 }

@@ -197,7 +197,8 @@ void benchLog(const std::string& path, const BenchOptions& o)
 			const auto& st = map.lastInsertStats();
 			work[t] = double(st.wipe.candidates);
 			cellsWiped[t] = double(st.wipe.cellsHit + st.wipe.cellsVisited);
-			progress.show(path + ": sequential insertion " + std::to_string(rep + 1) + "/" + std::to_string(o.repeat), t + 1, n);
+			progress.show(path + ": sequential insertion " + std::to_string(rep + 1) + "/" + std::to_string(o.repeat),
+						  t + 1, n);
 		}
 	}
 	// MRPT's occupancy grid from the same scans and poses
@@ -247,35 +248,48 @@ void benchLog(const std::string& path, const BenchOptions& o)
 	for (const auto& s : scans) perScanVectors += s.vectors.size();
 
 	std::printf("== %s: %zu scans, %zu per-scan vectors\n", path.c_str(), n, perScanVectors);
-	std::printf("sequential: %zu vectors, %.1f m; Table 1: n_g %zu, n_v %zu, n_g/n_v %.2f; with width %zu cells (n_g/cells %.2f); bytes grid %zu vs vectors %zu\n",
-				mem.vectorCount, mem.vectorLength, mem.n_g, mem.n_v, mem.ratio, mem.cells, mem.ratioCells,
-				mem.bytesGrid, mem.bytesGridVector);
+	std::printf(
+		"sequential: %zu vectors, %.1f m; Table 1: n_g %zu, n_v %zu, n_g/n_v %.2f; with width %zu cells (n_g/cells "
+		"%.2f); bytes grid %zu vs vectors %zu\n",
+		mem.vectorCount, mem.vectorLength, mem.n_g, mem.n_v, mem.ratio, mem.cells, mem.ratioCells, mem.bytesGrid,
+		mem.bytesGridVector);
 	std::printf("batch:      %zu vectors, %.1f m; n_g/n_v %.2f; buildPerScan %.3f s, mergeAll %.3f s\n",
 				memB.vectorCount, memB.vectorLength, memB.ratio, seconds(b0, b1), seconds(b1, b2));
-	std::printf("static map (Table 1: E-step at these poses, dynamic removed, static merged): %zu vectors, %.1f m (E-step: dynamic %.1f m of per-scan vectors); n_g/n_v %.2f\n",
-				memS.vectorCount, memS.vectorLength, split.dynamicLength, memS.ratio);
-	std::printf("agreement with MRPT grid (cells within %.2f m of a vector, known in both): sequential %.2f %% (%zu/%zu of %zu; occupied %zu/%zu), batch %.2f %% (%zu/%zu)\n",
-				band, ag.pct(), ag.same, ag.both, ag.band, ag.occSame, ag.occBoth, agB.pct(), agB.same, agB.both);
+	std::printf(
+		"static map (Table 1: E-step at these poses, dynamic removed, static merged): %zu vectors, %.1f m (E-step: "
+		"dynamic %.1f m of per-scan vectors); n_g/n_v %.2f\n",
+		memS.vectorCount, memS.vectorLength, split.dynamicLength, memS.ratio);
+	std::printf(
+		"agreement with MRPT grid (cells within %.2f m of a vector, known in both): sequential %.2f %% (%zu/%zu of "
+		"%zu; occupied %zu/%zu), batch %.2f %% (%zu/%zu)\n",
+		band, ag.pct(), ag.same, ag.both, ag.band, ag.occSame, ag.occBoth, agB.pct(), agB.same, agB.both);
 	std::printf("MRPT grid vs MRPT grid of the same scans inserted in reverse order, same cells: %.2f %% (%zu/%zu)\n",
 				agM.pct(), agM.same, agM.both);
-	std::printf("speed: extract %.0f scans/s, insertScan %.0f scans/s, extract+insert %.0f scans/s; MRPT grid %.0f scans/s; ratio (extract+insert)/MRPT %.2f\n",
-				n / te.total, n / ti.total, n / (te.total + ti.total), n / tm.total, tm.total / (te.total + ti.total));
+	std::printf(
+		"speed: extract %.0f scans/s, insertScan %.0f scans/s, extract+insert %.0f scans/s; MRPT grid %.0f scans/s; "
+		"ratio (extract+insert)/MRPT %.2f\n",
+		n / te.total, n / ti.total, n / (te.total + ti.total), n / tm.total, tm.total / (te.total + ti.total));
 	std::printf("insertScan per scan: first 10 %% %.3f ms, last 10 %% %.3f ms (map %zu vectors at the end)\n",
 				1e3 * ti.first10, 1e3 * ti.last10, map.size());
 	std::printf("insertScan per scan by decile [ms]:");
 	for (int d = 0; d < 10; ++d)
 	{
 		const size_t a = n * d / 10, b = std::max(a + 1, n * (d + 1) / 10);
-		std::printf(" %.3f", 1e3 * std::accumulate(tInsert.begin() + long(a), tInsert.begin() + long(std::min(b, n)), 0.0) / double(b - a));
+		std::printf(" %.3f",
+					1e3 * std::accumulate(tInsert.begin() + long(a), tInsert.begin() + long(std::min(b, n)), 0.0) /
+						double(b - a));
 	}
 	const Timing tw = perScanTiming(work), tc = perScanTiming(cellsWiped);
-	std::printf("\nwork per scan, first/last 10 %%: Eq. 8 triangle-vector candidates %.0f / %.0f, map cells wiped %.0f / %.0f\n",
-				tw.first10, tw.last10, tc.first10, tc.last10);
-	std::printf("| %s | %zu | %zu | %.1f | %.1f | %.2f | %.2f | %.2f | %.1f %% | %.1f %% | %.0f | %.0f | %.2f | %.3f / %.3f | %.2f |\n",
-				path.substr(path.find_last_of('/') + 1).c_str(), n, mem.vectorCount, mem.vectorLength, mem.spaceSize,
-				mem.ratio, memS.ratio, mem.ratioCells, ag.pct(), agB.pct(), n / (te.total + ti.total), n / tm.total,
-				tm.total / (te.total + ti.total), 1e3 * ti.first10, 1e3 * ti.last10,
-				seconds(b0, b2));
+	std::printf(
+		"\nwork per scan, first/last 10 %%: Eq. 8 triangle-vector candidates %.0f / %.0f, map cells wiped %.0f / "
+		"%.0f\n",
+		tw.first10, tw.last10, tc.first10, tc.last10);
+	std::printf(
+		"| %s | %zu | %zu | %.1f | %.1f | %.2f | %.2f | %.2f | %.1f %% | %.1f %% | %.0f | %.0f | %.2f | %.3f / %.3f | "
+		"%.2f |\n",
+		path.substr(path.find_last_of('/') + 1).c_str(), n, mem.vectorCount, mem.vectorLength, mem.spaceSize, mem.ratio,
+		memS.ratio, mem.ratioCells, ag.pct(), agB.pct(), n / (te.total + ti.total), n / tm.total,
+		tm.total / (te.total + ti.total), 1e3 * ti.first10, 1e3 * ti.last10, seconds(b0, b2));
 	std::fflush(stdout);
 }
 }  // namespace
@@ -290,20 +304,21 @@ int main(int argc, char** argv)
 	args.flag("quiet", "no progress (the table on stdout is the output)");
 	args.option("samples", "N", "Eq. 6 sub-samples per axis of a grid cell (0: automatic)",
 				"[gridvector_occupancy] samples_per_axis");
-	return io::runTool(
-		args, argc, argv,
-		[&] {
-			args.requirePositional(1, 100);
-			BenchOptions o;
-			if (args.has("config")) o.cfg.loadFromFile(args.get("config"));
-			o.maxScans = args.getInt("max-scans", 0, 0, 100000000);
-			o.band = args.getDouble("band", kBand);
-			if (o.band <= 0) args.fail("--band must be > 0 (metres), got " + args.get("band"));  // -1 compared no cell
-			o.repeat = int(args.getInt("repeat", 1, 1, 100));
-			o.samples = int(args.getInt("samples", o.cfg.occupancy.samplesPerAxis, 0, 16));
-			o.quiet = args.has("quiet");
-			std::printf("| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/n_v static | n_g/cells | agree seq | agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
-			for (const auto& log : args.positional()) benchLog(log, o);
-			return 0;
-		});
+	return io::runTool(args, argc, argv, [&] {
+		args.requirePositional(1, 100);
+		BenchOptions o;
+		if (args.has("config")) o.cfg.loadFromFile(args.get("config"));
+		o.maxScans = args.getInt("max-scans", 0, 0, 100000000);
+		o.band = args.getDouble("band", kBand);
+		if (o.band <= 0) args.fail("--band must be > 0 (metres), got " + args.get("band"));  // -1 compared no cell
+		o.repeat = int(args.getInt("repeat", 1, 1, 100));
+		o.samples = int(args.getInt("samples", o.cfg.occupancy.samplesPerAxis, 0, 16));
+		o.quiet = args.has("quiet");
+		std::printf(
+			"| log | scans | vectors | length [m] | space [m^2] | n_g/n_v | n_g/n_v static | n_g/cells | agree seq | "
+			"agree batch | gv scans/s | MRPT scans/s | speed ratio | ms/scan first/last 10%% | batch [s] "
+			"|\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+		for (const auto& log : args.positional()) benchLog(log, o);
+		return 0;
+	});
 }

@@ -48,17 +48,16 @@ std::vector<GridVector> scanByScan(const std::vector<TPose2D>& poses, const std:
 	first.push_back(all.size());
 	VectorIndex index(VectorIndex::kCellSize);
 	for (size_t i = 0; i < all.size(); ++i) index.insert(uint32_t(i), Box2D::of(all[i]));
-	ScanWipe wiper(cfg.map.hitBand, cfg.map.wipeCountsBeams);
+	ScanWipe wiper(cfg.map.hitBand, GlobalMap::kBatchWipeCountsBeams);  // the unit of the product it is timed against
 	std::vector<ScanWipe::Segment> segs;
 	total = {};
 	for (size_t t = 0; t < scans.size(); ++t)
 	{
 		segs.clear();
 		for (size_t i = first[t]; i < first[t + 1]; ++i) segs.push_back(ScanWipe::segmentOf(all[i]));
-		const auto st = wiper.apply(GlobalMap::sensorPosition(poses[t], scans[t]), segs, all, index,
-									[&](size_t, uint32_t s) {
-										return s >= first[t] && s < first[t + 1] ? WipePart::Outside : WipePart::Hit;
-									});
+		const auto st = wiper.apply(
+			GlobalMap::sensorPosition(poses[t], scans[t]), segs, all, index,
+			[&](size_t, uint32_t s) { return s >= first[t] && s < first[t + 1] ? WipePart::Outside : WipePart::Hit; });
 		total.triangles += st.triangles, total.candidates += st.candidates;
 		total.vectorsTouched += st.vectorsTouched, total.cellsHit += st.cellsHit, total.cellsVisited += st.cellsVisited;
 	}
@@ -129,12 +128,14 @@ int run(const io::ArgParser& args)
 	const size_t differ = differingCells(a, b);
 	std::printf("log: %s\nkeyframes: %zu of %zu scans, %zu vectors, %zu cells\n", log.c_str(), key.size(),
 				data.scans.size(), a.size(), cells);
-	std::printf("work: %zu triangle/vector pairs from the index, %zu (scan, vector) pairs updated, %zu cells hit, "
-				"%zu cells passed\n",
-				st.candidates, st.vectorsTouched, st.cellsHit, st.cellsVisited);
-	std::printf("buildPerScan (WipeProduct): %.3f s CPU; scan by scan (ScanWipe): %.3f s CPU; ratio %.2f "
-				"(best of %d each)\n",
-				product, reference, reference / product, repeat);
+	std::printf(
+		"work: %zu triangle/vector pairs from the index, %zu (scan, vector) pairs updated, %zu cells hit, "
+		"%zu cells passed\n",
+		st.candidates, st.vectorsTouched, st.cellsHit, st.cellsVisited);
+	std::printf(
+		"buildPerScan (WipeProduct): %.3f s CPU; scan by scan (ScanWipe): %.3f s CPU; ratio %.2f "
+		"(best of %d each)\n",
+		product, reference, reference / product, repeat);
 	std::printf("cells differing: %zu (%s)\n", differ, differ == 0 ? "identical" : "NOT identical");
 	return differ == 0 ? 0 : 1;
 }

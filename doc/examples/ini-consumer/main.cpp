@@ -21,7 +21,8 @@ int main()
 	std::cout << map.maps.size() << " map(s)";
 	for (const auto& m : map.maps) std::cout << ": " << m->GetRuntimeClass()->className;
 	std::cout << "\n";
-	return map.maps.size() == 1 && std::string(map.maps[0]->GetRuntimeClass()->className) == "mrpt::maps::CGridVectorMap"
+	return map.maps.size() == 1 &&
+				   std::string(map.maps[0]->GetRuntimeClass()->className) == "mrpt::maps::CGridVectorMap"
 			   ? 0
 			   : 1;
 }

@@ -32,8 +32,7 @@ class GridVector
    public:
 	GridVector() = default;
 	/** A vector from start to end with a prior-initialised grid. */
-	GridVector(const mrpt::math::TPoint2D& start, const mrpt::math::TPoint2D& end,
-			   const GridOptions& grid);
+	GridVector(const mrpt::math::TPoint2D& start, const mrpt::math::TPoint2D& end, const GridOptions& grid);
 
 	/** Rebuild a vector from stored parts (deserialisation). Throws
 	 * std::invalid_argument if cells.size() != (2*halfWidth+1)*cols. */

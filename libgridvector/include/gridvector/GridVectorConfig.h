@@ -29,10 +29,7 @@ struct Range
 	static constexpr Range open(double lo, double hi) { return {lo, hi, true, true, false}; }  //!< (lo, hi)
 	static constexpr Range boolean() { return {0, 1, false, false, true}; }  //!< true/false
 
-	constexpr bool contains(double v) const
-	{
-		return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi);
-	}
+	constexpr bool contains(double v) const { return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi); }
 	/** "[0, 1]", "(0, 90)", ..., or "true/false". */
 	std::string text() const;
 };
@@ -54,14 +51,21 @@ struct ExtractionOptions
 	void visit(V&& v)
 	{
 		v("min_range", minRange, "Readings at or below this range are invalid [m]", Range::closed(0, 10));
-		v("break_distance", breakDistance, "Range jump between neighbouring points that breaks a segment [m]", Range::above(0, 10));
-		v("break_angle_deg", breakAngleDeg, "Adaptive breakpoint: smallest incidence angle of a surface [deg]", Range::open(0, 90));
-		v("split_threshold", splitThreshold, "Split a segment where a point lies further than this from its line [m]", Range::above(0, 1));
-		v("merge_threshold", mergeThreshold, "Merge neighbouring segments when the joint fit's largest residual is below this [m]", Range::above(0, 1));
+		v("break_distance", breakDistance, "Range jump between neighbouring points that breaks a segment [m]",
+		  Range::above(0, 10));
+		v("break_angle_deg", breakAngleDeg, "Adaptive breakpoint: smallest incidence angle of a surface [deg]",
+		  Range::open(0, 90));
+		v("split_threshold", splitThreshold, "Split a segment where a point lies further than this from its line [m]",
+		  Range::above(0, 1));
+		v("merge_threshold", mergeThreshold,
+		  "Merge neighbouring segments when the joint fit's largest residual is below this [m]", Range::above(0, 1));
 		v("min_points", minPoints, "Fewest laser points per vector", Range::closed(2, 1000));
 		v("min_length", minLength, "Shortest vector [m]", Range::closed(0, 100));
-		v("max_point_gap", maxPointGap, "Largest gap between consecutive points of one vector [m]", Range::above(0, 10));
-		v("break_noise_sigmas", breakNoiseSigmas, "Adaptive breakpoint: range noise allowance in scanner std. devs (Borges & Aldon: 3; 0: geometry only)", Range::closed(0, 10));
+		v("max_point_gap", maxPointGap, "Largest gap between consecutive points of one vector [m]",
+		  Range::above(0, 10));
+		v("break_noise_sigmas", breakNoiseSigmas,
+		  "Adaptive breakpoint: range noise allowance in scanner std. devs (Borges & Aldon: 3; 0: geometry only)",
+		  Range::closed(0, 10));
 	}
 };
 
@@ -77,8 +81,10 @@ struct GridOptions
 	void visit(V&& v)
 	{
 		v("resolution", resolution, "Cell size of every vector's grid [m]", Range::above(0, 1));
-		v("half_width", halfWidth, "Cells on each side of the vector's own row (width 2 half_width + 1)", Range::closed(0, 20));
-		v("prior_occupy", priorOccupy, "Prior n_occupy of a cell (Sec. 3.1: 1/2); at most prior_visit", Range::closed(0, 100));
+		v("half_width", halfWidth, "Cells on each side of the vector's own row (width 2 half_width + 1)",
+		  Range::closed(0, 20));
+		v("prior_occupy", priorOccupy, "Prior n_occupy of a cell (Sec. 3.1: 1/2); at most prior_visit",
+		  Range::closed(0, 100));
 		v("prior_visit", priorVisit, "Prior n_visit of a cell (Sec. 3.1: 1)", Range::above(0, 100));
 	}
 };
@@ -91,19 +97,25 @@ struct MapOptions
 	double maxThetaDiffDeg = 10.0;
 	double maxRhoDiff = 0.15;
 	bool mergeOnInsert = true;
-	bool wipeCountsBeams = false;
 	bool mergeHoldsWall = true;
 
 	template <class V>
 	void visit(V&& v)
 	{
-		v("hit_band", hitBand, "Eq. 8 part c: cells within this of the new vector count as hits [m]", Range::above(0, 1));
-		v("max_direction_diff_deg", maxDirectionDiffDeg, "Correspondence criterion 1: largest difference of directions psi [deg]", Range::closed(0, 180));
-		v("max_theta_diff_deg", maxThetaDiffDeg, "Correspondence criterion 2: largest difference of line normals theta [deg]", Range::closed(0, 180));
-		v("max_rho_diff", maxRhoDiff, "Correspondence criterion 2: largest difference of line offsets rho, measured from the pair's midpoint [m]", Range::closed(0, 10));
-		v("merge_on_insert", mergeOnInsert, "Merge corresponding vectors (Algorithm 2) as scans are inserted", Range::boolean());
-		v("merge_holds_wall", mergeHoldsWall, "Beyond the paper: refuse a merge whose new grid would not hold the parts' wall (a bent wall)", Range::boolean());
-		v("wipe_counts_beams", wipeCountsBeams, "Eq. 8: a wipe increment counts the fan's beams through a cell (false: 1 per cell and triangle, Fig. 2)", Range::boolean());
+		v("hit_band", hitBand, "Eq. 8 part c: cells within this of the new vector count as hits [m]",
+		  Range::above(0, 1));
+		v("max_direction_diff_deg", maxDirectionDiffDeg,
+		  "Correspondence criterion 1: largest difference of directions psi [deg]", Range::closed(0, 180));
+		v("max_theta_diff_deg", maxThetaDiffDeg,
+		  "Correspondence criterion 2: largest difference of line normals theta [deg]", Range::closed(0, 180));
+		v("max_rho_diff", maxRhoDiff,
+		  "Correspondence criterion 2: largest difference of line offsets rho, measured from the pair's midpoint [m]",
+		  Range::closed(0, 10));
+		v("merge_on_insert", mergeOnInsert, "Merge corresponding vectors (Algorithm 2) as scans are inserted",
+		  Range::boolean());
+		v("merge_holds_wall", mergeHoldsWall,
+		  "Beyond the paper: refuse a merge whose new grid would not hold the parts' wall (a bent wall)",
+		  Range::boolean());
 	}
 };
 
@@ -121,60 +133,65 @@ struct EStepOptions
 	template <class V>
 	void visit(V&& v)
 	{
-		v("static_threshold", staticThreshold, "Eq. 14: a column whose profile p(c_i | M) is at or above this is static", Range::open(0, 1));
-		v("final_static_threshold", finalStaticThreshold, "The same for the final map, after EM converged", Range::closed(0, 1));
-		v("final_relative_drop", finalRelativeDrop, "Final map: a column this far below its vector's median profile is dynamic too (0: off)", Range::closed(0, 1));
-		v("min_piece_length", minPieceLength, "Shortest static/dynamic sub-vector; shorter pieces join their neighbours [m]", Range::closed(0, 100));
-		v("use_peak_row", usePeakRow, "Fig. 4 profile of a column: its largest cell probability across the width (false: the mean)", Range::boolean());
-		v("free_weight", freeWeight, "Peak-row profile: weight of a beam through a cell against a hit (1: n_occupy / n_visit)", Range::above(0, 100));
-		v("min_visits", minVisits, "Peak-row profile: a cell counts from this n_visit on, the prior included (3: two observations)", Range::closed(0, 1000));
+		v("static_threshold", staticThreshold,
+		  "Eq. 14: a column whose profile p(c_i | M) is at or above this is static", Range::open(0, 1));
+		v("final_static_threshold", finalStaticThreshold, "The same for the final map, after EM converged",
+		  Range::closed(0, 1));
+		v("final_relative_drop", finalRelativeDrop,
+		  "Final map: a column this far below its vector's median profile is dynamic too (0: off)",
+		  Range::closed(0, 1));
+		v("min_piece_length", minPieceLength,
+		  "Shortest static/dynamic sub-vector; shorter pieces join their neighbours [m]", Range::closed(0, 100));
+		v("use_peak_row", usePeakRow,
+		  "Fig. 4 profile of a column: its largest cell probability across the width (false: the mean)",
+		  Range::boolean());
+		v("free_weight", freeWeight,
+		  "Peak-row profile: weight of a beam through a cell against a hit (1: n_occupy / n_visit)",
+		  Range::above(0, 100));
+		v("min_visits", minVisits,
+		  "Peak-row profile: a cell counts from this n_visit on, the prior included (3: two observations)",
+		  Range::closed(0, 1000));
 	}
 };
 
 /** Sec. 4.2 (after Sohn & Kim 2008): vector-matching scan registration. */
 struct MatcherOptions
 {
-	int maxIterations = 25;
 	double gatePsiInitialDeg = 20.0;
 	double gatePsiFinalDeg = 6.0;
 	double gateRhoInitial = 0.60;
 	double gateRhoFinal = 0.12;
-	double gateShrink = 0.7;
-	static constexpr double kMinGateShrink = 0.05;  //!< gate_shrink's lower bound (the matcher clamps to it)
 	double minOverlap = 0.10;
 	int minMatches = 2;
 	double minMatchedLength = 1.5;
 	double maxRms = 0.06;
 	double degenerateRatio = 0.1;
-	bool degenerateProjection = false;
-	double sigmaFloor = 0.03;
-	double convergenceTranslation = 1e-4;
-	double convergenceRotation = 1e-5;
-	double robustScaleGateShare = 0.5;
 	bool stepWithinGates = true;
-	bool angleRotationSeeds = false;
 
 	template <class V>
 	void visit(V&& v)
 	{
-		v("max_iterations", maxIterations, "Iterations of gating, rotation and translation per registration", Range::closed(1, 1000));
-		v("gate_psi_initial_deg", gatePsiInitialDeg, "Criterion 1 (direction) gate at the first iteration [deg]", Range::above(0, 180));
-		v("gate_psi_final_deg", gatePsiFinalDeg, "Criterion 1 gate once tightened; at most gate_psi_initial_deg [deg]", Range::above(0, 180));
-		v("gate_rho_initial", gateRhoInitial, "Criterion 2 (line offset) gate at the first iteration [m]", Range::above(0, 10));
-		v("gate_rho_final", gateRhoFinal, "Criterion 2 gate once tightened; at most gate_rho_initial [m]", Range::above(0, 10));
-		v("gate_shrink", gateShrink, "Factor by which the gates tighten per iteration (1: they stay)", Range::closed(kMinGateShrink, 1));
-		v("min_overlap", minOverlap, "Matched vectors overlap along their line by at least this [m]", Range::closed(0, 100));
+		v("gate_psi_initial_deg", gatePsiInitialDeg, "Criterion 1 (direction) gate at the first iteration [deg]",
+		  Range::above(0, 180));
+		v("gate_psi_final_deg", gatePsiFinalDeg, "Criterion 1 gate once tightened; at most gate_psi_initial_deg [deg]",
+		  Range::above(0, 180));
+		v("gate_rho_initial", gateRhoInitial, "Criterion 2 (line offset) gate at the first iteration [m]",
+		  Range::above(0, 10));
+		v("gate_rho_final", gateRhoFinal, "Criterion 2 gate once tightened; at most gate_rho_initial [m]",
+		  Range::above(0, 10));
+		v("min_overlap", minOverlap, "Matched vectors overlap along their line by at least this [m]",
+		  Range::closed(0, 100));
 		v("min_matches", minMatches, "Fewest matched vector pairs of an accepted registration", Range::closed(1, 1000));
-		v("min_matched_length", minMatchedLength, "Fewest metres of overlapping matched vectors of an accepted registration [m]", Range::closed(0, 1000));
+		v("min_matched_length", minMatchedLength,
+		  "Fewest metres of overlapping matched vectors of an accepted registration [m]", Range::closed(0, 1000));
 		v("max_rms", maxRms, "Largest RMS point-to-line residual of an accepted registration [m]", Range::above(0, 1));
-		v("degenerate_ratio", degenerateRatio, "A translation direction with less than this share of the strongest one's information is scaled down quadratically", Range::closed(0, 1));
-		v("degenerate_projection", degenerateProjection, "Beyond the paper: below degenerate_ratio, marginalise the weak direction out (rank-2 information)", Range::boolean());
-		v("sigma_floor", sigmaFloor, "Smallest residual std. dev. per metre of matched line in the information [m]", Range::above(0, 1));
-		v("convergence_translation", convergenceTranslation, "Converged when a step moves less than this [m]", Range::closed(0, 1));
-		v("convergence_rotation", convergenceRotation, "... and turns less than this [rad]", Range::closed(0, 1));
-		v("robust_scale_gate_share", robustScaleGateShare, "Beyond the paper: Cauchy scale = this x the current rho gate, at least sigma_floor", Range::above(0, 1000));
-		v("step_within_gates", stepWithinGates, "Beyond the paper: a Gauss-Newton step moves at most the current rho gate and turns at most the psi gate", Range::boolean());
-		v("angle_rotation_seeds", angleRotationSeeds, "The angle-difference rotation step only while the gates tighten, then Gauss-Newton alone", Range::boolean());
+		v("degenerate_ratio", degenerateRatio,
+		  "A translation direction with less than this share of the strongest one's information is scaled down "
+		  "quadratically",
+		  Range::closed(0, 1));
+		v("step_within_gates", stepWithinGates,
+		  "Beyond the paper: a Gauss-Newton step moves at most the current rho gate and turns at most the psi gate",
+		  Range::boolean());
 	}
 };
 
@@ -190,43 +207,37 @@ struct PoseGraphOptions
 	double odometrySigmaPhi = 0.03;
 	double odometrySigmaPhiPerM = 0.03;
 	int rejectRounds = 3;
-	double tolerance = 1e-6;
 	double graduationTrigger = 10.0;
-	double graduationPercentile = 95.0;
 	double graduationStartPhi = 1e4;
 	double graduationFactor = 0.01;
-	int graduationIterations = 8;
-	double graduationTolerance = 1e-3;
-	double lmInitialLambda = 1e-4;
-	double lmMinLambda = 1e-9;
-	double lmMaxLambda = 1e8;
-	int correlatedGroupGap = 0;
-	double correlatedGroupRho = 1.0;
 
 	template <class V>
 	void visit(V&& v)
 	{
-		v("use_mrpt_optimizer", useMrptOptimizer, "MRPT's optimize_graph_spa_levmarq instead of the built-in robust Levenberg-Marquardt", Range::boolean());
+		v("use_mrpt_optimizer", useMrptOptimizer,
+		  "MRPT's optimize_graph_spa_levmarq instead of the built-in robust Levenberg-Marquardt", Range::boolean());
 		v("max_iterations", maxIterations, "Optimiser iterations per M-step", Range::closed(1, 10000));
-		v("robust_kernel_width", robustKernelWidth, "Dynamic covariance scaling Phi of registration edges [chi2]", Range::above(0, 1e6));
-		v("reject_chi2", rejectChi2, "Registration edges whose chi2 stays above this after optimising are removed", Range::above(0, 1e9));
-		v("odometry_sigma_xy_per_m", odometrySigmaXYPerM, "Eq. 21 odometry edges: translation std. dev. per metre travelled [m/m]", Range::closed(0, 10));
+		v("robust_kernel_width", robustKernelWidth, "Dynamic covariance scaling Phi of registration edges [chi2]",
+		  Range::above(0, 1e6));
+		v("reject_chi2", rejectChi2, "Registration edges whose chi2 stays above this after optimising are removed",
+		  Range::above(0, 1e9));
+		v("odometry_sigma_xy_per_m", odometrySigmaXYPerM,
+		  "Eq. 21 odometry edges: translation std. dev. per metre travelled [m/m]", Range::closed(0, 10));
 		v("odometry_sigma_xy_min", odometrySigmaXYMin, "... its floor [m]", Range::above(0, 10));
 		v("odometry_sigma_phi", odometrySigmaPhi, "... rotation std. dev. per step [rad]", Range::above(0, 10));
-		v("odometry_sigma_phi_per_m", odometrySigmaPhiPerM, "... rotation std. dev. per metre travelled [rad/m]", Range::closed(0, 10));
-		v("reject_rounds", rejectRounds, "Beyond the paper: chi2 rejection and re-optimisation rounds at most (0: no rejection)", Range::closed(0, 100));
-		v("tolerance", tolerance, "Beyond the paper: the last stage stops when a step changes the cost by less than this share", Range::closed(0, 1));
-		v("graduation_trigger", graduationTrigger, "Beyond the paper: graduate Phi when the start's chi2 percentile or a loop edge exceeds this x robust_kernel_width", Range::above(0, 1e9));
-		v("graduation_percentile", graduationPercentile, "Beyond the paper: that percentile of the registration edges' chi2 [%]", Range::closed(0, 100));
-		v("graduation_start_phi", graduationStartPhi, "Beyond the paper: Phi of the first graduation stage [chi2]", Range::above(0, 1e12));
-		v("graduation_factor", graduationFactor, "Beyond the paper: Phi x this from one graduation stage to the next", Range::open(0, 1));
-		v("graduation_iterations", graduationIterations, "Beyond the paper: iterations per graduation stage before the last", Range::closed(1, 10000));
-		v("graduation_tolerance", graduationTolerance, "Beyond the paper: a stage before the last stops when a step changes the cost by less than this share", Range::closed(0, 1));
-		v("lm_initial_lambda", lmInitialLambda, "Beyond the paper: Levenberg-Marquardt damping at the start of each stage; at least lm_min_lambda", Range::above(0, 1e12));
-		v("lm_min_lambda", lmMinLambda, "Beyond the paper: Nielsen's update never damps below this", Range::above(0, 1e12));
-		v("lm_max_lambda", lmMaxLambda, "Beyond the paper: a stage gives up once the damping exceeds this; above lm_initial_lambda", Range::above(0, 1e20));
-		v("correlated_group_gap", correlatedGroupGap, "Beyond the paper: edges sharing a scan whose other ends are this many scans apart count as one (0: off)", Range::closed(0, 100000));
-		v("correlated_group_rho", correlatedGroupRho, "Beyond the paper: correlation within such a group (1: covariance intersection)", Range::closed(0, 1));
+		v("odometry_sigma_phi_per_m", odometrySigmaPhiPerM, "... rotation std. dev. per metre travelled [rad/m]",
+		  Range::closed(0, 10));
+		v("reject_rounds", rejectRounds,
+		  "Beyond the paper: chi2 rejection and re-optimisation rounds at most (0: no rejection)",
+		  Range::closed(0, 100));
+		v("graduation_trigger", graduationTrigger,
+		  "Beyond the paper: graduate Phi when the start's chi2 percentile or a loop edge exceeds this x "
+		  "robust_kernel_width",
+		  Range::above(0, 1e9));
+		v("graduation_start_phi", graduationStartPhi, "Beyond the paper: Phi of the first graduation stage [chi2]",
+		  Range::above(0, 1e12));
+		v("graduation_factor", graduationFactor, "Beyond the paper: Phi x this from one graduation stage to the next",
+		  Range::open(0, 1));
 	}
 };
 
@@ -242,14 +253,12 @@ struct MStepOptions
 	double overlapMinShare = 0.25;
 	int overlapRunGap = 10;
 	double consistencyChi2 = 16.0;
-	double recheckGateFactor = 1.5;
 	double minChangedShare = 0.0;
 	double passHeadingWeight = 1.0;
 	bool overlapMostOverlapping = true;
 	bool informationInEdgeFrame = true;
 	bool reconsiderRejected = true;
 	int reconsiderLimit = 2;
-	int reconsiderFreeSteps = 2;
 	bool loopSearch = true;
 	double loopSearchSigmas = 3.0;
 	double loopSearchMaxRadius = 8.0;
@@ -257,96 +266,77 @@ struct MStepOptions
 	int loopSearchHypotheses = 4;
 	double loopSearchMinShare = 0.4;
 	double loopSearchAmbiguity = 0.7;
-	double loopSearchDistinct = 0.3;
 	bool loopSearchWeakLinks = true;
-	double loopSearchCandidateSpacing = 0.0;
 	bool loopSearchAllVectors = true;
 	bool overlapReregisterMoved = true;
 	bool sequentialOdometryGuess = true;
-	double registerMinIncidenceDeg = 0.0;
-	double dropDistanceFactor = 1.5;
-	double dropLengthShare = 0.5;
-	double changedTranslation = 1e-3;
-	double changedRotation = 1e-4;
-	double movedGateShare = 0.5;
-	double searchedNearDistance = 0.5;
-	double searchedNearDeg = 10.0;
-	double loopWindowMinTranslation = 1.0;
-	double loopWindowMinRotationDeg = 10.0;
-	double consistencyInfoXY = 1.0;
-	double consistencyInfoPhi = 10.0;
-	double consistencyChainVarXY = 1e-3;
-	double consistencyChainVarPhi = 1e-4;
-	int strongMinCorrespondences = 4;
-	double strongMinShare = 0.4;
-	double strongMinDegeneracy = 0.05;
-	double loopCornerMinLength = 0.3;
-	double loopCornerMinAngleDeg = 30.0;
-	double loopCornerMaxGap = 1.0;
-	double loopCornerTurnToleranceDeg = 10.0;
-	double loopDuplicateDistance = 0.1;
-	double loopDuplicateDeg = 2.0;
-	double loopScoreGateFactor = 2.0;
-	double loopDistinctDeg = 5.0;
 
 	template <class V>
 	void visit(V&& v)
 	{
-		v("max_iterations", maxIterations, "EM iterations at most (fewer when no constraint changes)", Range::closed(1, 1000));
-		v("keyframe_distance", keyframeDistance, "EM works on scans whose odometry moved this far; the others follow [m]", Range::closed(0, 100));
+		v("max_iterations", maxIterations, "EM iterations at most (fewer when no constraint changes)",
+		  Range::closed(1, 1000));
+		v("keyframe_distance", keyframeDistance,
+		  "EM works on scans whose odometry moved this far; the others follow [m]", Range::closed(0, 100));
 		v("keyframe_rotation_deg", keyframeRotationDeg, "... or turned this much [deg]", Range::closed(0, 180));
-		v("sequential_window", sequentialWindow, "Register each scan against this many predecessors", Range::closed(1, 1000));
-		v("overlap_distance", overlapDistance, "Poses closer than this are candidates for an overlap edge [m]", Range::closed(0, 1000));
-		v("overlap_min_length", overlapMinLength, "Corresponding static length that makes two scans overlap [m]", Range::closed(0, 1000));
-		v("overlap_min_share", overlapMinShare, "Matched share of the shorter scan's static length for an overlap edge", Range::closed(0, 1));
-		v("overlap_run_gap", overlapRunGap, "Candidate poses further apart than this many scans belong to different passes", Range::closed(1, 1000000));
-		v("consistency_chi2", consistencyChi2, "Two overlap edges support each other when their cycle closes within this chi2", Range::above(0, 1e9));
-		v("recheck_gate_factor", recheckGateFactor, "Eq. 24-25: gates x this when testing whether an edge's correspondences changed", Range::closed(1, 100));
-		v("min_changed_share", minChangedShare, "EM has converged when at most this share of constraints changed", Range::closed(0, 1));
-		v("pass_heading_weight", passHeadingWeight, "An earlier pass's candidate pose: nearest in position + this x heading difference [m/rad]", Range::closed(0, 1000));
-		v("information_in_edge_frame", informationInEdgeFrame, "Rotate a registration's information into the frame of Eq. 21's error", Range::boolean());
-		v("overlap_most_overlapping", overlapMostOverlapping, "Beyond the paper: a pass whose nearest pose shares too little offers its most overlapping poses", Range::boolean());
-		v("reconsider_rejected", reconsiderRejected, "Beyond the paper: edges the chi2 test rejected return to the optimiser at the next M-step", Range::boolean());
-		v("reconsider_limit", reconsiderLimit, "... until a pair was rejected this many times with the same correspondences (0: no limit)", Range::closed(0, 1000));
-		v("reconsider_free_steps", reconsiderFreeSteps, "Rejections in the first this many M-steps do not count towards reconsider_limit", Range::closed(0, 1000));
-		v("loop_search", loopSearch, "Beyond the paper: search loop closures from vector corners in a window growing with the pose uncertainty", Range::boolean());
-		v("loop_search_sigmas", loopSearchSigmas, "Loop-search window half-size in odometry-model std. devs of the path between the poses", Range::above(0, 100));
-		v("loop_search_max_radius", loopSearchMaxRadius, "Largest loop-search translation window (and candidate distance) [m]", Range::closed(0, 1000));
-		v("loop_search_vectors", loopSearchVectors, "Longest static vectors per scan whose corners give loop hypotheses", Range::closed(1, 1000));
-		v("loop_search_hypotheses", loopSearchHypotheses, "Best-ranked loop hypotheses refined by the matcher", Range::closed(1, 1000));
-		v("loop_search_min_share", loopSearchMinShare, "Matched share of the shorter scan's static length for a loop edge", Range::closed(0, 1));
-		v("loop_search_ambiguity", loopSearchAmbiguity, "A distinct solution matching this share of the best's length makes the place ambiguous", Range::closed(0, 1));
-		v("loop_search_distinct", loopSearchDistinct, "Loop-search solutions further apart than this are distinct [m]", Range::closed(0, 100));
-		v("loop_search_weak_links", loopSearchWeakLinks, "Also search between passes linked only by degenerate or rejected edges", Range::boolean());
-		v("loop_search_candidate_spacing", loopSearchCandidateSpacing, "Also register the pass's poses this far apart along the path (0: the nearest only) [m]", Range::closed(0, 1000));
-		v("loop_search_all_vectors", loopSearchAllVectors, "Beyond the paper: a loop search that finds nothing on the static vectors searches all vectors", Range::boolean());
-		v("overlap_reregister_moved", overlapReregisterMoved, "Beyond the paper: an overlap registration that moved beyond the initial gates is redone from the estimate optimised without it", Range::boolean());
-		v("sequential_odometry_guess", sequentialOdometryGuess, "Beyond the paper, first M-step: a sequential pair that failed from the chained guess is tried from the odometry", Range::boolean());
-		v("register_min_incidence_deg", registerMinIncidenceDeg, "Overlap and loop registrations leave out static vectors seen under less than this incidence (0: all) [deg]", Range::closed(0, 90));
-		v("drop_distance_factor", dropDistanceFactor, "Beyond the paper: a non-sequential edge whose poses are further apart than this x overlap_distance is dropped", Range::above(0, 1000));
-		v("drop_length_share", dropLengthShare, "Beyond the paper: an overlap edge whose overlap falls below this x overlap_min_length is dropped", Range::closed(0, 100));
-		v("changed_translation", changedTranslation, "Eq. 24-25: a re-registered edge changed when its pose moved more than this [m]", Range::closed(0, 1));
-		v("changed_rotation", changedRotation, "... or turned more than this [rad]", Range::closed(0, 1));
-		v("moved_gate_share", movedGateShare, "Beyond the paper: a failed pair is retried once its relative pose moved this x the final gates", Range::closed(0, 100));
-		v("searched_near_distance", searchedNearDistance, "Beyond the paper: a pair is not loop-searched again from within this of a pose it was searched from [m]", Range::closed(0, 100));
-		v("searched_near_deg", searchedNearDeg, "... and within this turn [deg]", Range::closed(0, 180));
-		v("loop_window_min_translation", loopWindowMinTranslation, "Beyond the paper: loop-search translation window floor; at most loop_search_max_radius [m]", Range::closed(0, 1000));
-		v("loop_window_min_rotation_deg", loopWindowMinRotationDeg, "Beyond the paper: loop-search rotation window floor [deg]", Range::closed(0, 180));
-		v("consistency_info_xy", consistencyInfoXY, "Beyond the paper: consistency test, information added to an edge's translation [1/m^2]", Range::above(0, 1e9));
-		v("consistency_info_phi", consistencyInfoPhi, "... and to its rotation [1/rad^2]", Range::above(0, 1e9));
-		v("consistency_chain_var_xy", consistencyChainVarXY, "Beyond the paper: consistency test, chain translation variance per scan step [m^2]", Range::closed(0, 100));
-		v("consistency_chain_var_phi", consistencyChainVarPhi, "... its rotation variance per step [rad^2]", Range::closed(0, 100));
-		v("strong_min_correspondences", strongMinCorrespondences, "Beyond the paper: an unsupported overlap edge is kept with at least this many correspondences,", Range::closed(0, 1000));
-		v("strong_min_share", strongMinShare, "... this matched share of the shorter scan's static length", Range::closed(0, 1));
-		v("strong_min_degeneracy", strongMinDegeneracy, "... and this translation degeneracy ratio", Range::closed(0, 1));
-		v("loop_corner_min_length", loopCornerMinLength, "Beyond the paper: loop-search corners only from static vectors this long [m]", Range::closed(0, 100));
-		v("loop_corner_min_angle_deg", loopCornerMinAngleDeg, "... whose directions differ by at least this [deg]", Range::closed(0, 90));
-		v("loop_corner_max_gap", loopCornerMaxGap, "... and whose lines meet within this of both segments [m]", Range::closed(0, 100));
-		v("loop_corner_turn_tolerance_deg", loopCornerTurnToleranceDeg, "Beyond the paper: two scans' corners pair when their turns agree within this [deg]", Range::closed(0, 180));
-		v("loop_duplicate_distance", loopDuplicateDistance, "Beyond the paper: loop hypotheses closer than this are one [m]", Range::closed(0, 100));
-		v("loop_duplicate_deg", loopDuplicateDeg, "... and turned less than this apart [deg]", Range::closed(0, 180));
-		v("loop_score_gate_factor", loopScoreGateFactor, "Beyond the paper: hypotheses are scored under the final matcher gates x this", Range::above(0, 100));
-		v("loop_distinct_deg", loopDistinctDeg, "Beyond the paper: loop-search solutions turned more than this apart are distinct [deg]", Range::closed(0, 180));
+		v("sequential_window", sequentialWindow, "Register each scan against this many predecessors",
+		  Range::closed(1, 1000));
+		v("overlap_distance", overlapDistance, "Poses closer than this are candidates for an overlap edge [m]",
+		  Range::closed(0, 1000));
+		v("overlap_min_length", overlapMinLength, "Corresponding static length that makes two scans overlap [m]",
+		  Range::closed(0, 1000));
+		v("overlap_min_share", overlapMinShare, "Matched share of the shorter scan's static length for an overlap edge",
+		  Range::closed(0, 1));
+		v("overlap_run_gap", overlapRunGap,
+		  "Candidate poses further apart than this many scans belong to different passes", Range::closed(1, 1000000));
+		v("consistency_chi2", consistencyChi2,
+		  "Two overlap edges support each other when their cycle closes within this chi2", Range::above(0, 1e9));
+		v("min_changed_share", minChangedShare, "EM has converged when at most this share of constraints changed",
+		  Range::closed(0, 1));
+		v("pass_heading_weight", passHeadingWeight,
+		  "An earlier pass's candidate pose: nearest in position + this x heading difference [m/rad]",
+		  Range::closed(0, 1000));
+		v("information_in_edge_frame", informationInEdgeFrame,
+		  "Rotate a registration's information into the frame of Eq. 21's error", Range::boolean());
+		v("overlap_most_overlapping", overlapMostOverlapping,
+		  "Beyond the paper: a pass whose nearest pose shares too little offers its most overlapping poses",
+		  Range::boolean());
+		v("reconsider_rejected", reconsiderRejected,
+		  "Beyond the paper: edges the chi2 test rejected return to the optimiser at the next M-step",
+		  Range::boolean());
+		v("reconsider_limit", reconsiderLimit,
+		  "... until a pair was rejected this many times with the same correspondences (0: no limit)",
+		  Range::closed(0, 1000));
+		v("loop_search", loopSearch,
+		  "Beyond the paper: search loop closures from vector corners in a window growing with the pose uncertainty",
+		  Range::boolean());
+		v("loop_search_sigmas", loopSearchSigmas,
+		  "Loop-search window half-size in odometry-model std. devs of the path between the poses",
+		  Range::above(0, 100));
+		v("loop_search_max_radius", loopSearchMaxRadius,
+		  "Largest loop-search translation window (and candidate distance) [m]", Range::closed(0, 1000));
+		v("loop_search_vectors", loopSearchVectors,
+		  "Longest static vectors per scan whose corners give loop hypotheses", Range::closed(1, 1000));
+		v("loop_search_hypotheses", loopSearchHypotheses, "Best-ranked loop hypotheses refined by the matcher",
+		  Range::closed(1, 1000));
+		v("loop_search_min_share", loopSearchMinShare,
+		  "Matched share of the shorter scan's static length for a loop edge", Range::closed(0, 1));
+		v("loop_search_ambiguity", loopSearchAmbiguity,
+		  "A distinct solution matching this share of the best's length makes the place ambiguous",
+		  Range::closed(0, 1));
+		v("loop_search_weak_links", loopSearchWeakLinks,
+		  "Also search between passes linked only by degenerate or rejected edges", Range::boolean());
+		v("loop_search_all_vectors", loopSearchAllVectors,
+		  "Beyond the paper: a loop search that finds nothing on the static vectors searches all vectors",
+		  Range::boolean());
+		v("overlap_reregister_moved", overlapReregisterMoved,
+		  "Beyond the paper: an overlap registration that moved beyond the initial gates is redone from the estimate "
+		  "optimised without it",
+		  Range::boolean());
+		v("sequential_odometry_guess", sequentialOdometryGuess,
+		  "Beyond the paper, first M-step: a sequential pair that failed from the chained guess is tried from the "
+		  "odometry",
+		  Range::boolean());
 	}
 };
 
@@ -363,8 +353,10 @@ struct OccupancyOptions
 	{
 		v("resolution", resolution, "Cell size of the occupancy grid made by Eq. 6 [m]", Range::above(0, 10));
 		v("margin", margin, "Border around the vectors' bounding box [m]", Range::closed(0, 100));
-		v("samples_per_axis", samplesPerAxis, "Eq. 6 sample points per axis of an output cell (0: one per vector cell)", Range::closed(0, 16));
-		v("max_pooling", maxPooling, "An output cell takes its samples' largest Eq. 6 occupancy (false: the area average)", Range::boolean());
+		v("samples_per_axis", samplesPerAxis, "Eq. 6 sample points per axis of an output cell (0: one per vector cell)",
+		  Range::closed(0, 16));
+		v("max_pooling", maxPooling,
+		  "An output cell takes its samples' largest Eq. 6 occupancy (false: the area average)", Range::boolean());
 	}
 };
 
@@ -378,33 +370,25 @@ struct DoorOptions
 	double minDoorLength = 0.6;
 	double maxDoorLength = 1.4;
 	double minStateDiffDeg = 10.0;
-	double maxTeeOffset = 0.10;
-	double minSweepDeg = 90.0;
-	double leafChainGap = 0.10;
-	double leafChainMaxTurnDeg = 10.0;
-	double minOpenDeg = 30.0;
-	bool closedLeafHiddenEnds = false;
-	bool closedLeafToLatch = false;
 	bool duringEm = false;
 
 	template <class V>
 	void visit(V&& v)
 	{
-		v("max_corner_gap", maxCornerGap, "A static and a dynamic vector form a corner when an end of each is this close [m]", Range::closed(0, 10));
-		v("min_corner_angle_deg", minCornerAngleDeg, "... and their directions differ by at least this [deg]", Range::closed(0, 180));
-		v("max_vertex_distance", maxVertexDistance, "Corners whose vertices are closer than this share a hinge [m]", Range::closed(0, 10));
-		v("max_length_diff", maxLengthDiff, "Door leaves whose lengths differ by less than this are one door [m]", Range::closed(0, 10));
+		v("max_corner_gap", maxCornerGap,
+		  "A static and a dynamic vector form a corner when an end of each is this close [m]", Range::closed(0, 10));
+		v("min_corner_angle_deg", minCornerAngleDeg, "... and their directions differ by at least this [deg]",
+		  Range::closed(0, 180));
+		v("max_vertex_distance", maxVertexDistance, "Corners whose vertices are closer than this share a hinge [m]",
+		  Range::closed(0, 10));
+		v("max_length_diff", maxLengthDiff, "Door leaves whose lengths differ by less than this are one door [m]",
+		  Range::closed(0, 10));
 		v("min_door_length", minDoorLength, "Shortest door leaf [m]", Range::above(0, 10));
 		v("max_door_length", maxDoorLength, "Longest door leaf; at least min_door_length [m]", Range::above(0, 10));
-		v("min_state_diff_deg", minStateDiffDeg, "Two door states (leaf angles) differ by at least this [deg]", Range::closed(0, 180));
-		v("min_sweep_deg", minSweepDeg, "Beyond the paper: a leaf's swept arc from its closed state is at least this wide [deg]", Range::closed(0, 360));
-		v("leaf_chain_gap", leafChainGap, "Beyond the paper: a dynamic and a static piece meeting end to end within this are one leaf [m]", Range::closed(0, 10));
-		v("leaf_chain_max_turn_deg", leafChainMaxTurnDeg, "... turning by at most this at the joint [deg]", Range::closed(0, 180));
-		v("min_open_deg", minOpenDeg, "Beyond the paper: a door has a state at least this far from its wall's line (0: off) [deg]", Range::closed(0, 90));
-		v("max_tee_offset", maxTeeOffset, "Beyond the paper: a candidate's end this close to a wall's interior makes a T corner (0: end corners only) [m]", Range::closed(0, 10));
-		v("closed_leaf_hidden_ends", closedLeafHiddenEnds, "Beyond the paper: a closed leaf's ends hidden in the walls are matched as intervals", Range::boolean());
-		v("during_em", duringEm, "Sec. 5.3: detect doors after each E-step and keep their states out of later M-steps", Range::boolean());
-		v("closed_leaf_to_latch", closedLeafToLatch, "Beyond the paper: a closed leaf seen in part may reach the collinear wall ahead", Range::boolean());
+		v("min_state_diff_deg", minStateDiffDeg, "Two door states (leaf angles) differ by at least this [deg]",
+		  Range::closed(0, 180));
+		v("during_em", duringEm, "Sec. 5.3: detect doors after each E-step and keep their states out of later M-steps",
+		  Range::boolean());
 	}
 };
 
@@ -417,7 +401,10 @@ struct MatchingOptions
 	template <class V>
 	void visit(V&& v)
 	{
-		v("static_threshold", staticThreshold, "Beyond the paper, ICP against the map: only columns whose Fig. 4 profile is at least this take part (0: every column of non-dynamic vectors)", Range::closed(0, 1));
+		v("static_threshold", staticThreshold,
+		  "Beyond the paper, ICP against the map: only columns whose Fig. 4 profile is at least this take part (0: "
+		  "every column of non-dynamic vectors)",
+		  Range::closed(0, 1));
 	}
 };
 
@@ -456,9 +443,9 @@ struct GridVectorConfig
 	 * does not know (a typo must not silently fall back to a default), and naming
 	 * the section if a `<prefix>_...` section is neither a group nor one of
 	 * `otherSections` (read by the caller, e.g. a map's "likelihoodOpts"). */
-	void loadFromConfigFile(
-		const mrpt::config::CConfigFileBase& cfg, const std::string& prefix = "gridvector",
-		const std::string& sourceName = "config", const std::vector<std::string>& otherSections = {});
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& prefix = "gridvector",
+							const std::string& sourceName = "config",
+							const std::vector<std::string>& otherSections = {});
 	/** Loads an .ini file; throws std::runtime_error("FILE: problem"), also "FILE:LINE: problem"
 	 * for a key outside any section or a section header without its ']'. */
 	void loadFromFile(const std::string& iniPath, const std::string& prefix = "gridvector");

@@ -22,9 +22,12 @@ namespace
 template <class T>
 std::string toText(const T& value)
 {
-	if constexpr (std::is_same_v<T, bool>) return value ? "true" : "false";
-	else if constexpr (std::is_floating_point_v<T>) return io::shortestText(value);
-	else return std::to_string(value);
+	if constexpr (std::is_same_v<T, bool>)
+		return value ? "true" : "false";
+	else if constexpr (std::is_floating_point_v<T>)
+		return io::shortestText(value);
+	else
+		return std::to_string(value);
 }
 
 template <class Group>
@@ -53,15 +56,15 @@ void requireKnownSections(const mrpt::config::CConfigFileBase& cfg, const std::s
 		if (ok) continue;
 		std::string list;
 		for (const auto& k : known) list += (list.empty() ? "" : ", ") + k;
-		throw std::runtime_error(sourceName + ": unknown section [" + s + "] (the " + prefix + "_ sections are " + list + ")");
+		throw std::runtime_error(sourceName + ": unknown section [" + s + "] (the " + prefix + "_ sections are " +
+								 list + ")");
 	}
 }
 
 }  // namespace
 
-void GridVectorConfig::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& cfg, const std::string& prefix,
-	const std::string& sourceName, const std::vector<std::string>& otherSections)
+void GridVectorConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& prefix,
+										  const std::string& sourceName, const std::vector<std::string>& otherSections)
 {
 	std::vector<std::string> known = otherSections;
 	visitGroups([&](const char* group, auto&) { known.emplace_back(group); });
@@ -87,7 +90,8 @@ void GridVectorConfig::loadFromConfigFile(
 void GridVectorConfig::loadFromFile(const std::string& iniPath, const std::string& prefix)
 {
 	// read here, not by CConfigFile: it sizes the file by seeking, which fails on pipes (--config <(...))
-	if (std::filesystem::is_directory(iniPath)) throw std::runtime_error(iniPath + ": cannot read config file (it is a directory)");
+	if (std::filesystem::is_directory(iniPath))
+		throw std::runtime_error(iniPath + ": cannot read config file (it is a directory)");
 	std::ifstream in(iniPath, std::ios::binary);
 	if (!in) throw std::runtime_error(iniPath + ": cannot open config file");
 	const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -135,11 +139,11 @@ namespace
 template <class T>
 bool assignNamed(T& field, double value, const std::string& name)
 {
-	if constexpr (std::is_same_v<T, double>) field = value;
+	if constexpr (std::is_same_v<T, double>)
+		field = value;
 	else if constexpr (std::is_same_v<T, bool>)
 	{
-		if (value != 0 && value != 1)
-			throw std::invalid_argument(name + " is a bool, got " + toText(value));
+		if (value != 0 && value != 1) throw std::invalid_argument(name + " is a bool, got " + toText(value));
 		field = value != 0;
 	}
 	else
@@ -184,9 +188,12 @@ namespace
 template <class T>
 std::string jsonValue(const T& field)
 {
-	if constexpr (std::is_same_v<T, bool>) return field ? "true" : "false";
-	else if (std::isfinite(double(field))) return io::shortestText(double(field));
-	else return "null";  // JSON has no inf/nan
+	if constexpr (std::is_same_v<T, bool>)
+		return field ? "true" : "false";
+	else if (std::isfinite(double(field)))
+		return io::shortestText(double(field));
+	else
+		return "null";  // JSON has no inf/nan
 }
 
 std::string jsonString(const std::string& s)
@@ -271,21 +278,17 @@ void GridVectorConfig::validate(const std::string& prefix) const
 		const std::string section = prefix + "_" + group;
 		g.visit([&](const char* key, auto& field, const char*, const Range& range) {
 			using T = std::decay_t<decltype(field)>;
-			if constexpr (std::is_floating_point_v<T>) require(section, key, field, std::isfinite(field), "must be finite");
+			if constexpr (std::is_floating_point_v<T>)
+				require(section, key, field, std::isfinite(field), "must be finite");
 			if constexpr (!std::is_same_v<T, bool>)
 				require(section, key, field, range.contains(double(field)), "must be in " + range.text());
 		});
 	});
 	// a minimum above its maximum
-	const std::string g = prefix + "_grid", m = prefix + "_matcher", p = prefix + "_posegraph",
-					  s = prefix + "_mstep", d = prefix + "_doors";
+	const std::string g = prefix + "_grid", m = prefix + "_matcher", d = prefix + "_doors";
 	notAbove(g, "prior_occupy", grid.priorOccupy, "prior_visit", grid.priorVisit);
 	notAbove(m, "gate_psi_final_deg", matcher.gatePsiFinalDeg, "gate_psi_initial_deg", matcher.gatePsiInitialDeg);
 	notAbove(m, "gate_rho_final", matcher.gateRhoFinal, "gate_rho_initial", matcher.gateRhoInitial);
-	notBelow(p, "lm_initial_lambda", posegraph.lmInitialLambda, "lm_min_lambda", posegraph.lmMinLambda);
-	notBelow(p, "lm_max_lambda", posegraph.lmMaxLambda, "lm_initial_lambda", posegraph.lmInitialLambda, true);
-	notAbove(s, "loop_window_min_translation", mstep.loopWindowMinTranslation, "loop_search_max_radius",
-			 mstep.loopSearchMaxRadius);
 	notBelow(d, "max_door_length", doors.maxDoorLength, "min_door_length", doors.minDoorLength);
 }
 

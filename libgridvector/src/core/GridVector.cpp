@@ -24,8 +24,8 @@ GridVector::GridVector(const TPoint2D& start, const TPoint2D& end, const GridOpt
 	setGeometry(start, end, columnsFor(std::hypot(end.x - start.x, end.y - start.y), res_));
 }
 
-GridVector GridVector::fromParts(const TPoint2D& start, const TPoint2D& end,
-								 const GridOptions& grid, int cols, std::vector<GridCell> cells)
+GridVector GridVector::fromParts(const TPoint2D& start, const TPoint2D& end, const GridOptions& grid, int cols,
+								 std::vector<GridCell> cells)
 {
 	GridVector v(start, end, grid);
 	if (cols < 1 || cells.size() != size_t(v.rows()) * size_t(cols))
@@ -176,9 +176,7 @@ GridVector GridVector::compose(const mrpt::math::TPose2D& pose) const
 {
 	GridVector out = *this;
 	const double c = std::cos(pose.phi), s = std::sin(pose.phi);
-	auto tf = [&](const TPoint2D& p) {
-		return TPoint2D(pose.x + c * p.x - s * p.y, pose.y + s * p.x + c * p.y);
-	};
+	auto tf = [&](const TPoint2D& p) { return TPoint2D(pose.x + c * p.x - s * p.y, pose.y + s * p.x + c * p.y); };
 	out.start_ = tf(start_);
 	out.end_ = tf(end_);
 	out.updateDirection();

@@ -59,14 +59,12 @@ double LineMoments::residual(const Line2D& l) const
 {
 	const double c = std::cos(l.theta), s = std::sin(l.theta);
 	// sum w (c x + s y - rho)^2 expanded over the moments
-	return c * c * sxx + s * s * syy + 2 * c * s * sxy - 2 * l.rho * (c * sx + s * sy) +
-		   l.rho * l.rho * w;
+	return c * c * sxx + s * s * syy + 2 * c * s * sxy - 2 * l.rho * (c * sx + s * sy) + l.rho * l.rho * w;
 }
 
 PrefixMoments::PrefixMoments(const std::vector<mrpt::math::TPoint2D>& pts) : PrefixMoments(pts, 0, pts.size()) {}
 
-PrefixMoments::PrefixMoments(const std::vector<mrpt::math::TPoint2D>& pts, size_t first, size_t last)
-	: off_(first)
+PrefixMoments::PrefixMoments(const std::vector<mrpt::math::TPoint2D>& pts, size_t first, size_t last) : off_(first)
 {
 	m_.resize(last - first + 1);
 	for (size_t i = first; i < last; ++i)

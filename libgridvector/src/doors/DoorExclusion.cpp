@@ -41,8 +41,7 @@ SplitMap SplitMap::of(const std::vector<GridVector>& children, const EStep& este
 
 DoorExclusion::DoorExclusion(const GridVectorConfig& cfg, const EStep& estep)
 	: cfg_(cfg), estep_(estep), detector_(cfg.doors)
-{
-}
+{}
 
 uint64_t DoorExclusion::pieceId(uint64_t childId, size_t j)
 {

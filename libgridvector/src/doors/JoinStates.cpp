@@ -18,8 +18,9 @@ void addLeaf(Door& d, size_t k, double a, double r, std::vector<bool>& taken, co
 	d.leaves.push_back(k);
 	taken[k] = true;
 	const double minDiff = radians(opts.minStateDiffDeg);
-	if (r >= d.length - opts.maxLengthDiff &&
-		std::all_of(d.angles.begin(), d.angles.end(), [&](double b) { return std::abs(mrpt::math::wrapToPi(a - b)) >= minDiff; }))
+	if (r >= d.length - opts.maxLengthDiff && std::all_of(d.angles.begin(), d.angles.end(), [&](double b) {
+			return std::abs(mrpt::math::wrapToPi(a - b)) >= minDiff;
+		}))
 	{
 		d.angles.push_back(a);
 		std::sort(d.angles.begin(), d.angles.end());

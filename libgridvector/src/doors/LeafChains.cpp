@@ -46,8 +46,10 @@ std::vector<size_t> LeafChains::pieces(const std::vector<size_t>& indices) const
 	std::vector<size_t> out;
 	for (size_t k : indices)
 	{
-		if (k < n_) out.push_back(k);
-		else out.push_back(parts_[k - n_].first), out.push_back(parts_[k - n_].second);
+		if (k < n_)
+			out.push_back(k);
+		else
+			out.push_back(parts_[k - n_].first), out.push_back(parts_[k - n_].second);
 	}
 	std::sort(out.begin(), out.end());
 	out.erase(std::unique(out.begin(), out.end()), out.end());

@@ -25,7 +25,8 @@ std::pair<double, double> statesArc(const std::vector<double>& as)
 double closedDirection(double mid, const GridVector& wall)
 {
 	double closed = wall.psi();
-	if (std::abs(mrpt::math::wrapToPi(closed + M_PI - mid)) < std::abs(mrpt::math::wrapToPi(closed - mid))) closed += M_PI;
+	if (std::abs(mrpt::math::wrapToPi(closed + M_PI - mid)) < std::abs(mrpt::math::wrapToPi(closed - mid)))
+		closed += M_PI;
 	return closed;
 }
 

@@ -11,8 +11,7 @@ namespace gridvector::doors
 {
 using mrpt::math::TPoint2D;
 
-void teeCorners(const std::vector<GridVector>& v, size_t s, size_t d, const DoorOptions& opts,
-				std::vector<Corner>& out)
+void teeCorners(const std::vector<GridVector>& v, size_t s, size_t d, const DoorOptions& opts, std::vector<Corner>& out)
 {
 	const double half = v[s].length() / 2;
 	for (int de = 0; de < 2; ++de)

@@ -1,7 +1,9 @@
 #include "doors/DoorDetector.h"
 #include "doors/DoorExclusion.h"
 #include "em/EmSlam.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
+
+#include <cmath>
 
 #include <chrono>
 #include <algorithm>
@@ -41,7 +43,7 @@ constexpr double kRerunRotationDeg = 1.0;  // [deg]
 bool movedEnough(const std::vector<TPose2D>& a, const std::vector<TPose2D>& b)
 {
 	for (size_t t = 0; t < a.size() && t < b.size(); ++t)
-		if (se2::distance(a[t], b[t]) > kRerunTranslation ||
+		if (std::hypot(a[t].x - b[t].x, a[t].y - b[t].y) > kRerunTranslation ||
 			std::abs(mrpt::math::wrapToPi(a[t].phi - b[t].phi)) > kRerunRotationDeg * M_PI / 180)
 			return true;
 	return a.size() != b.size();
@@ -55,7 +57,7 @@ void rebase(std::vector<GridVector>& vs, const std::vector<TPose2D>& from, const
 		if (v.scanIndex < 0 || size_t(v.scanIndex) >= from.size() || size_t(v.scanIndex) >= to.size()) continue;
 		const TPose2D& a = from[size_t(v.scanIndex)];
 		const TPose2D& b = to[size_t(v.scanIndex)];
-		const TPose2D d = se2::compose(b, se2::relative(a, TPose2D(0, 0, 0)));
+		const TPose2D d = b + (TPose2D(0, 0, 0) - a);
 		const auto id = v.id;
 		const auto st = v.state;
 		v = v.compose(d);
@@ -73,9 +75,8 @@ std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<
 	std::vector<std::vector<MatchSegment>> out(poses.size());
 	for (const auto& c : children)
 	{
-		if (c.state != VectorState::Static || c.scanIndex < 0 || size_t(c.scanIndex) >= poses.size())
-			continue;
-		const TPose2D inv = se2::relative(poses[size_t(c.scanIndex)], TPose2D(0, 0, 0));
+		if (c.state != VectorState::Static || c.scanIndex < 0 || size_t(c.scanIndex) >= poses.size()) continue;
+		const TPose2D inv = TPose2D(0, 0, 0) - poses[size_t(c.scanIndex)];
 		MatchSegment m = MatchSegment::from(c.compose(inv));  // back to the scan's frame
 		out[size_t(c.scanIndex)].push_back(m);
 	}
@@ -89,7 +90,9 @@ std::vector<size_t> EmSlam::keyframes(const std::vector<TPose2D>& odometry, cons
 	for (size_t t = 0; t < odometry.size(); ++t)
 	{
 		const bool last = t + 1 == odometry.size();
-		if (k.empty() || last || se2::distance(odometry[k.back()], odometry[t]) >= o.keyframeDistance ||
+		if (k.empty() || last ||
+			std::hypot(odometry[k.back()].x - odometry[t].x, odometry[k.back()].y - odometry[t].y) >=
+				o.keyframeDistance ||
 			std::abs(mrpt::math::wrapToPi(odometry[t].phi - odometry[k.back()].phi)) >=
 				o.keyframeRotationDeg * M_PI / 180)
 			k.push_back(t);
@@ -102,8 +105,7 @@ std::vector<size_t> EmSlam::keyframes(const std::vector<TPose2D>& odometry, cons
 EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPose2D>& odometry,
 					 const IterationCallback& onIteration, const ProgressCallback& progress) const
 {
-	if (scans.size() != odometry.size())
-		throw std::invalid_argument("EmSlam: scans and odometry differ in length");
+	if (scans.size() != odometry.size()) throw std::invalid_argument("EmSlam: scans and odometry differ in length");
 	const auto key = keyframes(odometry, cfg_.mstep);
 	std::vector<LocalScan> ks;
 	std::vector<TPose2D> ko;
@@ -113,9 +115,12 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 		ks.back().scanIndex = int64_t(k);
 		ko.push_back(odometry[key[k]]);
 	}
-	EmResult res = runKeyframes(ks, ko, [&](const EmIteration& it, const std::vector<TPose2D>& kp) {
-		if (onIteration) onIteration(it, expand(kp, key, odometry));
-	}, progress, key);
+	EmResult res = runKeyframes(
+		ks, ko,
+		[&](const EmIteration& it, const std::vector<TPose2D>& kp) {
+			if (onIteration) onIteration(it, expand(kp, key, odometry));
+		},
+		progress, key);
 	res.poses = expand(res.poses, key, odometry);
 	for (auto& v : res.perScan)
 		if (v.scanIndex >= 0) v.scanIndex = int64_t(key[size_t(v.scanIndex)]);
@@ -135,8 +140,8 @@ std::vector<TPose2D> EmSlam::expand(const std::vector<TPose2D>& kp, const std::v
 		const size_t a = key[k], b = key[k + 1];
 		for (size_t t = a + 1; t < b; ++t)
 		{
-			const TPose2D pa = se2::compose(kp[k], se2::relative(odometry[a], odometry[t]));
-			const TPose2D pb = se2::compose(kp[k + 1], se2::relative(odometry[b], odometry[t]));
+			const TPose2D pa = kp[k] + (odometry[t] - odometry[a]);
+			const TPose2D pb = kp[k + 1] + (odometry[t] - odometry[b]);
 			const double w = double(t - a) / double(b - a);
 			out[t] = TPose2D(pa.x + w * (pb.x - pa.x), pa.y + w * (pb.y - pa.y),
 							 mrpt::math::wrapToPi(pa.phi + w * mrpt::math::wrapToPi(pb.phi - pa.phi)));
@@ -244,8 +249,7 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 	std::vector<TPose2D> ePoses;  // trajectory of the last E-step
 	res.poses = odometry;
 	int current = 0;
-	if (progress)
-		mstep.setProgress([&](const char* stage, double f) { progress(stage, current, f); });
+	if (progress) mstep.setProgress([&](const char* stage, double f) { progress(stage, current, f); });
 	for (int k = 1; k <= cfg_.mstep.maxIterations; ++k)
 	{
 		current = k;
@@ -260,8 +264,8 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		// No constraint changed after an E-step that changed no vector: the trajectory did not
 		// move, so the E-step would repeat itself (converged). A trajectory that moved too little
 		// since the last E-step has that E-step's map: nothing to re-evaluate (skipped).
-		const bool converged = k > 1 && it.changedShare <= cfg_.mstep.minChangedShare &&
-							   !res.iterations.empty() && res.iterations.back().changedVectors == 0;
+		const bool converged = k > 1 && it.changedShare <= cfg_.mstep.minChangedShare && !res.iterations.empty() &&
+							   res.iterations.back().changedVectors == 0;
 		t0 = std::chrono::steady_clock::now();
 		if (converged || (k > 1 && !movedEnough(ePoses, res.poses)))
 		{

@@ -26,7 +26,8 @@ struct EmIteration
 	double staticLength = 0, dynamicLength = 0;
 	MStepReport mstep;
 	double eSeconds = 0, mSeconds = 0;
-	double wipeSeconds = 0;  //!< of eSeconds: the map of the trajectory, Eq. 4 unmerged + Eq. 8 (GlobalMap::buildPerScan)
+	double wipeSeconds =
+		0;  //!< of eSeconds: the map of the trajectory, Eq. 4 unmerged + Eq. 8 (GlobalMap::buildPerScan)
 	double classifySeconds = 0;  //!< of eSeconds: Eq. 14-15 on that map (EStep::run)
 	bool eSkipped = false;  //!< no pose moved enough since the last E-step: its result stands
 	/** Sec. 5.3 (doors.during_em): doors on this E-step's map, kept out of the next M-step
@@ -42,7 +43,8 @@ struct EmResult
 	std::vector<GridVector> perScan;  //!< last E-step's children m_{i,t} (global, state set)
 	MergeResult staticMap, dynamicMap;  //!< merged static / dynamic vectors (Eq. 4)
 	std::vector<GridVector> finalVectors;  //!< staticMap then dynamicMap vectors, state set (door leaves dynamic)
-	std::vector<Door> doors;  //!< Sec. 5.4 on finalVectors (Door::leaves, Door::wall index it; a wall cut at a door state keeps its index for its first piece)
+	std::vector<Door> doors;  //!< Sec. 5.4 on finalVectors (Door::leaves, Door::wall index it; a wall cut at a door
+							  //!< state keeps its index for its first piece)
 	double finalMapSeconds = 0;
 	double finalMergeSeconds = 0;  //!< of finalMapSeconds: the final split and the Eq. 4 merges (GlobalMap::mergeAll)
 	double doorSeconds = 0;  //!< of finalMapSeconds: Sec. 5.4 and the door-state cuts
@@ -58,8 +60,7 @@ class EmSlam
 	explicit EmSlam(const GridVectorConfig& cfg = {});
 
 	/** Called after each iteration with its figures and the trajectory. */
-	using IterationCallback =
-		std::function<void(const EmIteration&, const std::vector<mrpt::math::TPose2D>&)>;
+	using IterationCallback = std::function<void(const EmIteration&, const std::vector<mrpt::math::TPose2D>&)>;
 	/** Progress within an iteration: stage name, iteration, share of the stage done. */
 	using ProgressCallback = std::function<void(const char* stage, int iteration, double fraction)>;
 
@@ -69,18 +70,18 @@ class EmSlam
 	/** Diagnosis: called after each M-step with the iteration (1-based), the M-step (its
 	 * constraints index keyframes), the static vectors it registered (per keyframe, in its
 	 * frame) and the scan index of every keyframe. */
-	using MStepObserver = std::function<void(int iteration, const MStep&, const std::vector<std::vector<MatchSegment>>& statics,
-											 const std::vector<size_t>& keyframes)>;
+	using MStepObserver =
+		std::function<void(int iteration, const MStep&, const std::vector<std::vector<MatchSegment>>& statics,
+						   const std::vector<size_t>& keyframes)>;
 	void setMStepObserver(MStepObserver f) { observer_ = std::move(f); }
 
 	/** Static children of the E-step as registration segments, in their scan's frame. */
-	static std::vector<std::vector<MatchSegment>> staticSegments(
-		const std::vector<GridVector>& children, const std::vector<mrpt::math::TPose2D>& poses);
+	static std::vector<std::vector<MatchSegment>> staticSegments(const std::vector<GridVector>& children,
+																 const std::vector<mrpt::math::TPose2D>& poses);
 
 	/** Scans EM works on: the first, the last, and each one whose odometry moved
 	 * mstep.keyframe_distance or turned mstep.keyframe_rotation_deg since the last. */
-	static std::vector<size_t> keyframes(const std::vector<mrpt::math::TPose2D>& odometry,
-										 const MStepOptions& o);
+	static std::vector<size_t> keyframes(const std::vector<mrpt::math::TPose2D>& odometry, const MStepOptions& o);
 	/** Poses of all scans from the keyframes' and the odometry in between. */
 	static std::vector<mrpt::math::TPose2D> expand(const std::vector<mrpt::math::TPose2D>& keyPoses,
 												   const std::vector<size_t>& key,

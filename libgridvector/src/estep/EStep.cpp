@@ -14,21 +14,21 @@ EStep::EStep(const EStepOptions& opts, const GridOptions& grid) : opts_(opts), g
 
 // Fig. 4: split where the profile meets the threshold, then merge the shortest
 // piece into its neighbours until every piece has at least minColumns.
-std::vector<ProfilePiece> EStep::pieces(const std::vector<double>& profile, double threshold,
-										int minColumns)
+std::vector<ProfilePiece> EStep::pieces(const std::vector<double>& profile, double threshold, int minColumns)
 {
 	std::vector<ProfilePiece> out;
 	for (int c = 0; c < int(profile.size()); ++c)
 	{
 		const bool st = profile[size_t(c)] >= threshold;
-		if (out.empty() || out.back().isStatic != st) out.push_back({c, c + 1, st});
-		else out.back().last = c + 1;
+		if (out.empty() || out.back().isStatic != st)
+			out.push_back({c, c + 1, st});
+		else
+			out.back().last = c + 1;
 	}
 	while (out.size() > 1)
 	{
-		auto shortest = std::min_element(out.begin(), out.end(), [](const auto& a, const auto& b) {
-			return a.columns() < b.columns();
-		});
+		auto shortest = std::min_element(out.begin(), out.end(),
+										 [](const auto& a, const auto& b) { return a.columns() < b.columns(); });
 		if (shortest->columns() >= minColumns) break;
 		// the short piece takes its neighbours' state and joins them
 		const size_t k = size_t(shortest - out.begin());
@@ -112,8 +112,7 @@ std::vector<GridVector> EStep::split(const GridVector& parent, std::vector<Profi
 // Fig. 4 and Eq. 14: the profile, its pieces, one child per piece.
 std::vector<GridVector> EStep::pieceVectors(const GridVector& parent, std::vector<ProfilePiece>* piecesOut) const
 {
-	const int minCols =
-		std::max(1, int(std::ceil(opts_.minPieceLength / parent.resolution() - 1e-9)));
+	const int minCols = std::max(1, int(std::ceil(opts_.minPieceLength / parent.resolution() - 1e-9)));
 	std::vector<GridVector> out;
 	const auto prof = profile(parent);
 	const auto ps = pieces(prof, opts_.staticThreshold, minCols);
@@ -277,8 +276,10 @@ std::vector<ProfilePiece> EStep::observedRuns(const GridVector& v, int minGapCol
 			++gap;
 			continue;
 		}
-		if (out.empty() || gap >= minGapColumns) out.push_back({c, c + 1, true});
-		else out.back().last = c + 1;  // a short gap stays inside the run
+		if (out.empty() || gap >= minGapColumns)
+			out.push_back({c, c + 1, true});
+		else
+			out.back().last = c + 1;  // a short gap stays inside the run
 		gap = 0;
 	}
 	return out;

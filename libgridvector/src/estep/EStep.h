@@ -43,8 +43,7 @@ class EStep
 	explicit EStep(const EStepOptions& opts = {}, const GridOptions& grid = {});
 
 	/** Split-and-merge of a profile (Fig. 4). */
-	static std::vector<ProfilePiece> pieces(const std::vector<double>& profile, double threshold,
-											int minColumns);
+	static std::vector<ProfilePiece> pieces(const std::vector<double>& profile, double threshold, int minColumns);
 	/** The occupancy profile along a vector (Fig. 4), one value per column. */
 	std::vector<double> profile(const GridVector& v) const;
 	/** The children of one vector; `piecesOut`: the column range of each child. */

@@ -33,7 +33,8 @@ std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const Map
 	std::vector<DoorObservation> out(truth.doors.size());
 	std::vector<std::vector<const sim::HitRun*>> runs(truth.doors.size());
 	for (const auto& h : truth.hits)
-		if (h.kind == sim::HitKind::Door && h.id >= 0 && size_t(h.id) < truth.doors.size()) runs[size_t(h.id)].push_back(&h);
+		if (h.kind == sim::HitKind::Door && h.id >= 0 && size_t(h.id) < truth.doors.size())
+			runs[size_t(h.id)].push_back(&h);
 	for (const auto& s : truth.doorSwings)
 		if (s.door >= 0 && size_t(s.door) < out.size()) out[size_t(s.door)].swingTimes.push_back(s);
 	for (size_t i = 0; i < out.size(); ++i)
@@ -46,7 +47,8 @@ std::vector<DoorObservation> doorObservations(const sim::Truth& truth, const Map
 		std::stable_sort(runs[i].begin(), runs[i].end(), [](const auto* a, const auto* b) { return a->t < b->t; });
 		for (const sim::HitRun* h : runs[i])
 		{
-			if (o.passes.empty() || h->t - o.passes.back().t1 > opt.doorPassGap) o.passes.push_back({h->t, h->t, 0, false, 0, 0});
+			if (o.passes.empty() || h->t - o.passes.back().t1 > opt.doorPassGap)
+				o.passes.push_back({h->t, h->t, 0, false, 0, 0});
 			DoorPass& p = o.passes.back();
 			p.t1 = h->t;
 			p.runs++;
@@ -73,8 +75,10 @@ FalseStaticBreakdown falseStaticBreakdown(const std::vector<MapVector>& vectors,
 	{
 		if (h.kind == sim::HitKind::Door && h.id >= 0 && size_t(h.id) < truth.doors.size())
 			doorPlaces[size_t(h.id)].push_back(h.seg);
-		else if (h.kind == sim::HitKind::Object) object.push_back(h.seg);
-		else if (h.kind == sim::HitKind::Person) people.push_back(h.seg);
+		else if (h.kind == sim::HitKind::Object)
+			object.push_back(h.seg);
+		else if (h.kind == sim::HitKind::Person)
+			people.push_back(h.seg);
 	}
 	// places[0..doors) are the doors, then the object, then people
 	std::vector<SegmentIndex> places;
@@ -102,9 +106,12 @@ FalseStaticBreakdown falseStaticBreakdown(const std::vector<MapVector>& vectors,
 				const double dq = places[q].nearest(p, opt.dynamicTolerance);
 				if (dq < best) best = dq, which = q;
 			}
-			if (which == places.size()) b.other += w;
-			else if (which == objectIdx) b.movedObject += w;
-			else if (which == peopleIdx) b.people += w;
+			if (which == places.size())
+				b.other += w;
+			else if (which == objectIdx)
+				b.movedObject += w;
+			else if (which == peopleIdx)
+				b.people += w;
 			else
 			{
 				b.doors[which].falseStatic += w;
@@ -118,9 +125,9 @@ FalseStaticBreakdown falseStaticBreakdown(const std::vector<MapVector>& vectors,
 std::string formatText(const FalseStaticBreakdown& b)
 {
 	std::ostringstream os;
-	os << "false static:      " << f(b.total) << " m off every true wall: doors seen in one state " << f(b.oneStateDoors)
-	   << ", doors seen in two states " << f(b.twoStateDoors) << ", moved object " << f(b.movedObject) << ", people "
-	   << f(b.people) << ", other " << f(b.other) << " m\n";
+	os << "false static:      " << f(b.total) << " m off every true wall: doors seen in one state "
+	   << f(b.oneStateDoors) << ", doors seen in two states " << f(b.twoStateDoors) << ", moved object "
+	   << f(b.movedObject) << ", people " << f(b.people) << ", other " << f(b.other) << " m\n";
 	for (size_t i = 0; i < b.doors.size(); ++i)
 	{
 		const DoorObservation& d = b.doors[i];
@@ -129,15 +136,19 @@ std::string formatText(const FalseStaticBreakdown& b)
 		   << " m, " << d.passes.size() << " passes:";
 		for (const DoorPass& p : d.passes)
 		{
-			os << " [" << f(p.t0 - b.timeOrigin, "%.0f") << "-" << f(p.t1 - b.timeOrigin, "%.0f") << " s, " << io::counted(p.runs, "scan") << ", ";
-			if (!p.angled) os << "no angle]";
-			else if (p.maxDeg - p.minDeg < 1) os << f(p.minDeg, "%.0f") << " deg]";
-			else os << f(p.minDeg, "%.0f") << "-" << f(p.maxDeg, "%.0f") << " deg]";
+			os << " [" << f(p.t0 - b.timeOrigin, "%.0f") << "-" << f(p.t1 - b.timeOrigin, "%.0f") << " s, "
+			   << io::counted(p.runs, "scan") << ", ";
+			if (!p.angled)
+				os << "no angle]";
+			else if (p.maxDeg - p.minDeg < 1)
+				os << f(p.minDeg, "%.0f") << " deg]";
+			else
+				os << f(p.minDeg, "%.0f") << "-" << f(p.maxDeg, "%.0f") << " deg]";
 		}
 		os << "; swings at";
 		for (const auto& s : d.swingTimes)
-			os << " " << f(s.t0 - b.timeOrigin, "%.0f") << "-" << f(s.t1 - b.timeOrigin, "%.0f") << " s (" << f(std::abs(s.from) * kDeg, "%.0f") << "->"
-			   << f(std::abs(s.to) * kDeg, "%.0f") << ")";
+			os << " " << f(s.t0 - b.timeOrigin, "%.0f") << "-" << f(s.t1 - b.timeOrigin, "%.0f") << " s ("
+			   << f(std::abs(s.from) * kDeg, "%.0f") << "->" << f(std::abs(s.to) * kDeg, "%.0f") << ")";
 		os << "\n";
 	}
 	return os.str();
@@ -155,8 +166,10 @@ nlohmann::ordered_json toJson(const FalseStaticBreakdown& b)
 			if (p.angled) pass["min_deg"] = p.minDeg, pass["max_deg"] = p.maxDeg;
 			passes.push_back(pass);
 		}
-		doors.push_back(
-			{{"swings", d.swings}, {"seen_swinging", d.seenSwinging}, {"false_static_m", d.falseStatic}, {"passes", passes}});
+		doors.push_back({{"swings", d.swings},
+						 {"seen_swinging", d.seenSwinging},
+						 {"false_static_m", d.falseStatic},
+						 {"passes", passes}});
 	}
 	return {{"false_static_m", b.total},
 			{"one_state_doors_m", b.oneStateDoors},

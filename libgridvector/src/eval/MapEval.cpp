@@ -71,7 +71,11 @@ void evaluateDoors(MapMetrics& m, const sim::Truth& truth, const std::vector<sim
 	}
 	for (const auto& q : detected)
 		for (const auto& d : truth.doors)
-			if (near(q.hinge, d.hinge)) { m.detectedCorrect++; break; }
+			if (near(q.hinge, d.hinge))
+			{
+				m.detectedCorrect++;
+				break;
+			}
 	m.doorRecall = ratio(double(m.doorsFound), double(m.movingDoors));
 	m.doorRecallObserved = ratio(double(m.observedDoorsFound), double(m.observedSwingingDoors));
 	m.doorPrecision = ratio(double(m.detectedCorrect), double(m.detectedDoors));
@@ -85,7 +89,8 @@ int sampleCount(double length, double step)
 	if (!(step > 0) || !(n <= maxSamples))
 	{
 		char b[160];
-		std::snprintf(b, sizeof b, "a %g m long segment sampled every %g m: more than %g samples", length, step, maxSamples);
+		std::snprintf(b, sizeof b, "a %g m long segment sampled every %g m: more than %g samples", length, step,
+					  maxSamples);
 		throw std::invalid_argument(b);
 	}
 	return std::max(1, int(n));
@@ -143,12 +148,14 @@ std::vector<MapVector> readVectors(const std::string& path)
 		const auto t = io::splitTokens(line);
 		if (t.empty() || t[0][0] == '#') continue;
 		if (t.size() != 5 && t.size() != 6)
-			io::parseError(pos, "expected 'x1 y1 x2 y2 p_static [static|dynamic]', found " + io::counted(t.size(), "field"));
+			io::parseError(pos,
+						   "expected 'x1 y1 x2 y2 p_static [static|dynamic]', found " + io::counted(t.size(), "field"));
 		MapVector v;
 		v.seg = {io::parseDouble(t[0], pos, "x1"), io::parseDouble(t[1], pos, "y1"), io::parseDouble(t[2], pos, "x2"),
 				 io::parseDouble(t[3], pos, "y2")};
 		v.pStatic = io::parseDouble(t[4], pos, "p_static");
-		if (v.pStatic < 0 || v.pStatic > 1) io::parseError(pos, "p_static is " + io::printableToken(t[4]) + " (must be in [0, 1])");
+		if (v.pStatic < 0 || v.pStatic > 1)
+			io::parseError(pos, "p_static is " + io::printableToken(t[4]) + " (must be in [0, 1])");
 		v.isStatic = v.pStatic >= 0.5;
 		if (t.size() == 6)
 		{
@@ -189,7 +196,8 @@ MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& 
 	{
 		m.staticLength += s.length();
 		m.staticOnWalls += lengthWhere(s, step, [&](const Vec2& p) { return walls.within(p, tw); });
-		m.ghostLength += lengthWhere(s, step, [&](const Vec2& p) { return !walls.within(p, tw) && places.within(p, td); });
+		m.ghostLength +=
+			lengthWhere(s, step, [&](const Vec2& p) { return !walls.within(p, tw) && places.within(p, td); });
 		m.ghostLengthSeenSwinging +=
 			lengthWhere(s, step, [&](const Vec2& p) { return !walls.within(p, tw) && placesSwung.within(p, td); });
 	}
@@ -222,8 +230,8 @@ MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& 
 std::string formatText(const MapMetrics& m)
 {
 	std::ostringstream os;
-	os << "static vectors:    " << f(m.staticLength, "%.2f") << " m, precision " << f(m.staticPrecision)
-	   << " (" << f(m.staticOnWalls, "%.2f") << " m on true walls)\n"
+	os << "static vectors:    " << f(m.staticLength, "%.2f") << " m, precision " << f(m.staticPrecision) << " ("
+	   << f(m.staticOnWalls, "%.2f") << " m on true walls)\n"
 	   << "static precision (doors seen in one state are static): " << f(m.staticPrecisionSeenSwinging) << "\n"
 	   << "static recall:     " << f(m.staticRecall) << " (" << f(m.seenCovered, "%.2f") << " of "
 	   << f(m.seenWallLength, "%.2f") << " m of seen wall covered)\n"

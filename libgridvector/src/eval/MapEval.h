@@ -88,7 +88,8 @@ struct MapMetrics
  * overflow int, and sample for hours) or for a length or step that is not finite and positive. */
 int sampleCount(double length, double step);
 
-/** Does this truth hit run show a door leaf's state: at least doorMinRunLength long, of at least doorMinRunBeams beams? */
+/** Does this truth hit run show a door leaf's state: at least doorMinRunLength long, of at least doorMinRunBeams beams?
+ */
 bool showsLeafState(const sim::HitRun& h, const MapEvalOptions& opt);
 /** Per true door: was its leaf seen in two states, i.e. truth hit runs
  * (truth_dynamic.txt, `hit door`) showing a state (showsLeafState) whose leaf
@@ -105,6 +106,7 @@ MapMetrics evaluateMap(const std::vector<MapVector>& vectors, const sim::Truth& 
 					   const std::vector<sim::DoorTruth>* detectedDoors, const MapEvalOptions& opt = {});
 
 std::string formatText(const MapMetrics& m);
-nlohmann::ordered_json toJson(const MapMetrics& m);  //!< gv-eval map --json (keys in this order; a non-finite figure is null when dumped)
+nlohmann::ordered_json toJson(
+	const MapMetrics& m);  //!< gv-eval map --json (keys in this order; a non-finite figure is null when dumped)
 
 }  // namespace gridvector::eval

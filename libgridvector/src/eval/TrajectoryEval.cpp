@@ -89,7 +89,8 @@ io::Trajectory sortedByTime(io::Trajectory t)
 /** The index in `sorted` of the pose nearest in time to t, of the two around t, closer than maxTimeDiff; -1 if none. */
 long nearestInTime(const io::Trajectory& sorted, double t, double maxTimeDiff)
 {
-	const auto it = std::lower_bound(sorted.begin(), sorted.end(), t, [](const auto& e, double v) { return e.first < v; });
+	const auto it =
+		std::lower_bound(sorted.begin(), sorted.end(), t, [](const auto& e, double v) { return e.first < v; });
 	const long i = long(it - sorted.begin());
 	long best = -1;
 	for (long j : {i - 1, i})
@@ -150,11 +151,15 @@ PoseMatch matchPoses(const io::Trajectory& est, const io::Trajectory& ref, doubl
 	size_t i = 0;
 	while (i < est.size() && i < ref.size() && std::abs(est[i].first - ref[i].first) < maxTimeDiff) ++i;
 	if (est.size() != ref.size() || i < est.size())
-		throw std::runtime_error(m.why + ": matching by time would pick one of them, and matching by order needs one pose per scan of the same log (" +
-								 std::to_string(est.size()) + " estimate and " + io::counted(ref.size(), "reference pose") +
-								 (est.size() == ref.size() ? ", pose " + std::to_string(i + 1) + " at other times" : "") + ")");
+		throw std::runtime_error(
+			m.why +
+			": matching by time would pick one of them, and matching by order needs one pose per scan of the same log "
+			"(" +
+			std::to_string(est.size()) + " estimate and " + io::counted(ref.size(), "reference pose") +
+			(est.size() == ref.size() ? ", pose " + std::to_string(i + 1) + " at other times" : "") + ")");
 	m.byOrder = true;
-	for (i = 0; i < est.size(); ++i) m.pairs.emplace_back(est[i].second, ref[i].second), m.times.push_back(ref[i].first);
+	for (i = 0; i < est.size(); ++i)
+		m.pairs.emplace_back(est[i].second, ref[i].second), m.times.push_back(ref[i].first);
 	return m;
 }
 
@@ -181,7 +186,8 @@ TrajectoryMetrics evaluatePairs(const Pairs& p, const TrajectoryEvalOptions& opt
 	return m;
 }
 
-TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajectory& ref, const TrajectoryEvalOptions& opt)
+TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajectory& ref,
+									 const TrajectoryEvalOptions& opt)
 {
 	return evaluatePairs(matchByTimestamp(est, ref, opt.maxTimeDiff), opt);
 }
@@ -232,7 +238,8 @@ LocalizationMetrics evaluateLocalization(const Pairs& p, const std::vector<doubl
 	m.finalT = err.back();
 	m.finalRDeg = std::abs(wrap(p.back().first.phi - p.back().second.phi)) * 180.0 / M_PI;
 	m.converged = m.finalT < threshold;
-	if (const auto below = std::find_if(err.begin(), err.end(), [&](double e) { return e < threshold; }); below != err.end())
+	if (const auto below = std::find_if(err.begin(), err.end(), [&](double e) { return e < threshold; });
+		below != err.end())
 		m.firstBelow = times[size_t(below - err.begin())] - times.front();
 	if (!m.converged) return m;
 	size_t from = n - 1;
@@ -247,9 +254,10 @@ LocalizationMetrics evaluateLocalization(const Pairs& p, const std::vector<doubl
 
 std::string formatText(const LocalizationMetrics& m)
 {
-	return "n=" + std::to_string(m.matched) + " abs_rmse_m=" + num("%.4f", m.rmse) + " final_t_m=" + num("%.4f", m.finalT) +
-		   " final_r_deg=" + num("%.3f", m.finalRDeg) + " first_below_s=" + num("%.1f", m.firstBelow) +
-		   " converged=" + (m.converged ? "yes" : "no") + " converged_after_s=" + num("%.1f", m.convergedAfter) + " rmse_after_m=" + num("%.4f", m.rmseAfter) +
+	return "n=" + std::to_string(m.matched) + " abs_rmse_m=" + num("%.4f", m.rmse) +
+		   " final_t_m=" + num("%.4f", m.finalT) + " final_r_deg=" + num("%.3f", m.finalRDeg) +
+		   " first_below_s=" + num("%.1f", m.firstBelow) + " converged=" + (m.converged ? "yes" : "no") +
+		   " converged_after_s=" + num("%.1f", m.convergedAfter) + " rmse_after_m=" + num("%.4f", m.rmseAfter) +
 		   " max_after_m=" + num("%.4f", m.maxAfter);
 }
 

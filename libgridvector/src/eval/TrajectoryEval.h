@@ -66,8 +66,7 @@ TrajectoryMetrics evaluateTrajectory(const io::Trajectory& est, const io::Trajec
 mrpt::math::TPose2D alignmentTransform(const PosePairs& pairs);
 
 /** alignmentTransform(matchPoses(est, ref, maxTimeDiff).pairs): gv-eval traj's matching rule. */
-mrpt::math::TPose2D alignmentTransform(const io::Trajectory& est, const io::Trajectory& ref,
-									   double maxTimeDiff = 0.05);
+mrpt::math::TPose2D alignmentTransform(const io::Trajectory& est, const io::Trajectory& ref, double maxTimeDiff = 0.05);
 
 /** Localisation error: the estimate is in the reference's frame (a robot localised on a map built in
  * that frame), so nothing is aligned. */
@@ -77,8 +76,10 @@ struct LocalizationMetrics
 	double rmse = 0;  //!< translation RMSE over all matched poses [m]
 	double finalT = 0, finalRDeg = 0;  //!< error of the last matched pose [m], [deg]
 	bool converged = false;  //!< the last pose's error is below the threshold
-	double firstBelow = NAN;  //!< seconds from the first matched pose to the first one whose error is below the threshold
-	double convergedAfter = NAN;  //!< seconds from the first matched pose to the first one from which every error stays below the threshold
+	double firstBelow =
+		NAN;  //!< seconds from the first matched pose to the first one whose error is below the threshold
+	double convergedAfter =
+		NAN;  //!< seconds from the first matched pose to the first one from which every error stays below the threshold
 	double rmseAfter = NAN, maxAfter = NAN;  //!< translation RMSE and maximum from that pose on [m]
 };
 
@@ -91,6 +92,7 @@ nlohmann::ordered_json toJson(const LocalizationMetrics& m);  //!< gv-eval traj 
 
 /** evaltraj.py's output line: "n=... ate_rmse_m=... rel_local_t_m=... ...". */
 std::string formatText(const TrajectoryMetrics& m);
-nlohmann::ordered_json toJson(const TrajectoryMetrics& m);  //!< gv-eval traj --json (keys in this order; a non-finite figure is null when dumped)
+nlohmann::ordered_json toJson(
+	const TrajectoryMetrics& m);  //!< gv-eval traj --json (keys in this order; a non-finite figure is null when dumped)
 
 }  // namespace gridvector::eval

@@ -18,8 +18,7 @@ struct BeamTrig
 	std::vector<double> c, s;
 	const BeamTrig& update(const mrpt::obs::CObservation2DRangeScan& scan)
 	{
-		if (scan.getScanSize() == n && scan.aperture == aperture && scan.rightToLeft == rightToLeft)
-			return *this;
+		if (scan.getScanSize() == n && scan.aperture == aperture && scan.rightToLeft == rightToLeft) return *this;
 		n = scan.getScanSize(), aperture = scan.aperture, rightToLeft = scan.rightToLeft;
 		c.resize(n), s.resize(n);
 		for (size_t i = 0; i < n; ++i) c[i] = std::cos(scan.getScanAngle(i)), s[i] = std::sin(scan.getScanAngle(i));
@@ -28,13 +27,10 @@ struct BeamTrig
 };
 }  // namespace
 
-VectorExtractor::VectorExtractor(const ExtractionOptions& ext, const GridOptions& grid)
-	: ext_(ext), grid_(grid)
-{
-}
+VectorExtractor::VectorExtractor(const ExtractionOptions& ext, const GridOptions& grid) : ext_(ext), grid_(grid) {}
 
-void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
-								 std::vector<TPoint2D>& pts, std::vector<size_t>& runStarts) const
+void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan, std::vector<TPoint2D>& pts,
+								 std::vector<size_t>& runStarts) const
 {
 	pts.clear();
 	runStarts.clear();
@@ -42,7 +38,8 @@ void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
 	const double sx = scan.sensorPose.x(), sy = scan.sensorPose.y(), syaw = scan.sensorPose.yaw();
 	const double cs = std::cos(syaw), ss = std::sin(syaw);
 	const double dPhi = n > 1 ? std::abs(scan.aperture) / (n - 1) : 0.0;
-	// Borges & Aldon adaptive breakpoint: D = r sin(dphi) / sin(lambda - dphi) + k sigma (k: break_noise_sigmas, theirs 3)
+	// Borges & Aldon adaptive breakpoint: D = r sin(dphi) / sin(lambda - dphi) + k sigma (k: break_noise_sigmas, theirs
+	// 3)
 	const double lambda = ext_.breakAngleDeg * M_PI / 180.0;
 	const double adaptive = std::sin(dPhi) / std::max(1e-6, std::sin(lambda - dPhi));
 	const double noiseAllowance = ext_.breakNoiseSigmas * std::max(0.0f, scan.stdError);
@@ -64,8 +61,7 @@ void VectorExtractor::scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
 		if (!brk)
 		{
 			const double jump = std::hypot(p.x - pts.back().x, p.y - pts.back().y);
-			brk = jump > std::min(ext_.maxPointGap,
-								 std::max(ext_.breakDistance, prevR * adaptive + noiseAllowance));
+			brk = jump > std::min(ext_.maxPointGap, std::max(ext_.breakDistance, prevR * adaptive + noiseAllowance));
 		}
 		if (brk) runStarts.push_back(pts.size());
 		pts.push_back(p);
@@ -81,8 +77,7 @@ constexpr double kMaxRangeMargin = 0.01;
 bool VectorExtractor::validBeam(const mrpt::obs::CObservation2DRangeScan& scan, size_t i) const
 {
 	const float r = scan.getScanRange(i);
-	return scan.getScanRangeValidity(i) && std::isfinite(r) && r > ext_.minRange &&
-		   r < scan.maxRange - kMaxRangeMargin;
+	return scan.getScanRangeValidity(i) && std::isfinite(r) && r > ext_.minRange && r < scan.maxRange - kMaxRangeMargin;
 }
 
 void VectorExtractor::scanToPoints(const mrpt::obs::CObservation2DRangeScan& scan, std::vector<TPoint2D>& pts,
@@ -103,8 +98,8 @@ void VectorExtractor::scanToPoints(const mrpt::obs::CObservation2DRangeScan& sca
 	}
 }
 
-bool VectorExtractor::fitSegment(const std::vector<TPoint2D>& pts, const PrefixMoments& pm, size_t i,
-								 size_t j, ScanSegment& seg, double maxResidual) const
+bool VectorExtractor::fitSegment(const std::vector<TPoint2D>& pts, const PrefixMoments& pm, size_t i, size_t j,
+								 ScanSegment& seg, double maxResidual) const
 {
 	const LineMoments m = pm.range(i, j + 1);
 	if (!m.fit(seg.line)) return false;
@@ -120,8 +115,8 @@ bool VectorExtractor::fitSegment(const std::vector<TPoint2D>& pts, const PrefixM
 }
 
 // Split step: recursive end-point fit, splitting at the point farthest from the chord.
-void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoments& pm, size_t i,
-							size_t j, std::vector<ScanSegment>& out) const
+void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoments& pm, size_t i, size_t j,
+							std::vector<ScanSegment>& out) const
 {
 	if (j <= i) return;
 	const TPoint2D a = pts[i], b = pts[j];
@@ -132,8 +127,7 @@ void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoment
 	{
 		for (size_t q = i + 1; q < j; ++q)
 		{
-			const double d =
-				std::abs((b.x - a.x) * (a.y - pts[q].y) - (a.x - pts[q].x) * (b.y - a.y)) / len;
+			const double d = std::abs((b.x - a.x) * (a.y - pts[q].y) - (a.x - pts[q].x) * (b.y - a.y)) / len;
 			if (d > best) best = d, k = q;
 		}
 	}
@@ -149,8 +143,8 @@ void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoment
 }
 
 // Merge step: neighbouring segments whose joint least-squares fit stays tight.
-std::vector<ScanSegment> VectorExtractor::splitAndMerge(const std::vector<TPoint2D>& pts,
-														size_t first, size_t last) const
+std::vector<ScanSegment> VectorExtractor::splitAndMerge(const std::vector<TPoint2D>& pts, size_t first,
+														size_t last) const
 {
 	std::vector<ScanSegment> segs;
 	const PrefixMoments pm(pts, first, last + 1);

@@ -32,8 +32,7 @@ class VectorExtractor
 	/** Valid beam endpoints (robot frame), in scan order, and the index at
 	 * which each contiguous run starts (runs break at invalid beams and at
 	 * the adaptive breakpoint of Borges & Aldon 2004). */
-	void scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan,
-					std::vector<mrpt::math::TPoint2D>& pts,
+	void scanToRuns(const mrpt::obs::CObservation2DRangeScan& scan, std::vector<mrpt::math::TPoint2D>& pts,
 					std::vector<size_t>& runStarts) const;
 
 	/** Every `stride`-th valid beam endpoint (robot frame): the points scanToRuns lists, at
@@ -43,8 +42,8 @@ class VectorExtractor
 					  size_t stride) const;
 
 	/** Split-and-merge over one run of ordered points [first, last]. */
-	std::vector<ScanSegment> splitAndMerge(
-		const std::vector<mrpt::math::TPoint2D>& pts, size_t first, size_t last) const;
+	std::vector<ScanSegment> splitAndMerge(const std::vector<mrpt::math::TPoint2D>& pts, size_t first,
+										   size_t last) const;
 
 	/** Directed grid vector from a fitted segment: endpoints are the
 	 * projections of the extreme points, open space (sensor) on the left,
@@ -59,12 +58,12 @@ class VectorExtractor
 	/** Whether beam i's reading is one scanToRuns keeps (finite, valid, inside the ranges). */
 	bool validBeam(const mrpt::obs::CObservation2DRangeScan& scan, size_t i) const;
 
-	void split(const std::vector<mrpt::math::TPoint2D>& pts, const PrefixMoments& pm, size_t i,
-			   size_t j, std::vector<ScanSegment>& out) const;
+	void split(const std::vector<mrpt::math::TPoint2D>& pts, const PrefixMoments& pm, size_t i, size_t j,
+			   std::vector<ScanSegment>& out) const;
 	/** LS fit of [i, j] from prefix moments; false if degenerate or, when
 	 * maxResidual > 0, if the fit's residual provably exceeds it. */
-	bool fitSegment(const std::vector<mrpt::math::TPoint2D>& pts, const PrefixMoments& pm, size_t i,
-					size_t j, ScanSegment& seg, double maxResidual = 0) const;
+	bool fitSegment(const std::vector<mrpt::math::TPoint2D>& pts, const PrefixMoments& pm, size_t i, size_t j,
+					ScanSegment& seg, double maxResidual = 0) const;
 
 	ExtractionOptions ext_;
 	GridOptions grid_;

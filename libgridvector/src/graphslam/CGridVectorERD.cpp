@@ -46,8 +46,7 @@ void CGridVectorERD::printParams() const
 	params_.dumpToConsole();
 }
 
-bool CGridVectorERD::updateState(mrpt::obs::CActionCollection::Ptr,
-								 mrpt::obs::CSensoryFrame::Ptr observations,
+bool CGridVectorERD::updateState(mrpt::obs::CActionCollection::Ptr, mrpt::obs::CSensoryFrame::Ptr observations,
 								 mrpt::obs::CObservation::Ptr observation)
 {
 	mrpt::system::CTimeLoggerEntry timer(this->m_time_logger, "updateState");
@@ -108,8 +107,10 @@ std::vector<mrpt::graphs::TNodeID> CGridVectorERD::passCandidates(TNodeID n, TNo
 	{
 		const double d = it->second.distanceTo(pn);
 		if (d > params_.maxDistance) continue;
-		if (best.empty() || it->first - last > TNodeID(params_.passGap)) best.emplace_back(d, it->first);
-		else if (d < best.back().first) best.back() = {d, it->first};
+		if (best.empty() || it->first - last > TNodeID(params_.passGap))
+			best.emplace_back(d, it->first);
+		else if (d < best.back().first)
+			best.back() = {d, it->first};
 		last = it->first;
 	}
 	std::sort(best.begin(), best.end());
@@ -126,17 +127,16 @@ void CGridVectorERD::registerEdges(TNodeID n)
 	for (size_t i = 0; i < cands.size(); ++i) tryEdge(cands[i], n, i < sequential);
 }
 
-bool CGridVectorERD::acceptable(const MatchResult& r, const TPose2D& guess, bool sequential,
-								double widenDistance, double widenAngle) const
+bool CGridVectorERD::acceptable(const MatchResult& r, const TPose2D& guess, bool sequential, double widenDistance,
+								double widenAngle) const
 {
 	return r.ok() &&
-		closeTo(guess, r.pose, params_.maxCorrectionDistance + widenDistance,
-				(params_.maxCorrectionAngleDeg * M_PI / 180) + widenAngle) &&
-		validInformation(r.information) && (sequential || r.matchedShare >= params_.minMatchedShare);
+		   closeTo(guess, r.pose, params_.maxCorrectionDistance + widenDistance,
+				   (params_.maxCorrectionAngleDeg * M_PI / 180) + widenAngle) &&
+		   validInformation(r.information) && (sequential || r.matchedShare >= params_.minMatchedShare);
 }
 
-std::optional<MatchResult> CGridVectorERD::registerPair(TNodeID from, TNodeID to, const TPose2D& guess,
-														bool sequential)
+std::optional<MatchResult> CGridVectorERD::registerPair(TNodeID from, TNodeID to, const TPose2D& guess, bool sequential)
 {
 	const auto& a = nodeVectors_.at(from);
 	const auto& b = nodeVectors_.at(to);
@@ -168,8 +168,8 @@ bool CGridVectorERD::tryEdge(TNodeID from, TNodeID to, bool sequential)
 	const auto& nodes = this->m_graph->nodes;
 	const TPose2D guess = (nodes.at(to) - nodes.at(from)).asTPose();
 	const auto r = registerPair(from, to, guess, sequential);
-	MRPT_LOG_DEBUG_FMT("register %u -> %u (%s): %s", unsigned(from), unsigned(to),
-					   sequential ? "sequential" : "pass", r ? "edge" : "rejected");
+	MRPT_LOG_DEBUG_FMT("register %u -> %u (%s): %s", unsigned(from), unsigned(to), sequential ? "sequential" : "pass",
+					   r ? "edge" : "rejected");
 	if (!r)
 	{
 		++stats_.rejected;
@@ -198,10 +198,9 @@ void CGridVectorERD::getDescriptiveReport(std::string* report_str) const
 	std::ostringstream ss;
 	ss << "Grid-vector edge registration (vector matching) summary:\n" << std::string(80, '#') << "\n";
 	params_.dumpToTextStream(ss);
-	ss << mrpt::format(
-		"matcher runs %zu: sequential edges %zu, pass edges %zu (loop closures %zu), rejected %zu\n\n",
-		stats_.registrations, stats_.sequentialEdges, stats_.passEdges, stats_.loopClosures,
-		stats_.rejected);
+	ss << mrpt::format("matcher runs %zu: sequential edges %zu, pass edges %zu (loop closures %zu), rejected %zu\n\n",
+					   stats_.registrations, stats_.sequentialEdges, stats_.passEdges, stats_.loopClosures,
+					   stats_.rejected);
 	report_str->clear();
 	parent_t::getDescriptiveReport(report_str);
 	*report_str += ss.str();

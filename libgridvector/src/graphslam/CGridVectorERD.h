@@ -32,8 +32,7 @@ namespace gridvector::graphslam
  * Cost per new node: at most sequential_window + max_loop_candidates
  * registrations, plus a linear scan of the node estimates (as MRPT's ICP
  * deciders do). */
-class CGridVectorERD
-	: public mrpt::graphslam::deciders::CEdgeRegistrationDecider<mrpt::graphs::CNetworkOfPoses2DInf>
+class CGridVectorERD : public mrpt::graphslam::deciders::CEdgeRegistrationDecider<mrpt::graphs::CNetworkOfPoses2DInf>
 {
    public:
 	using graph_t = mrpt::graphs::CNetworkOfPoses2DInf;
@@ -42,8 +41,7 @@ class CGridVectorERD
 
 	CGridVectorERD();
 
-	bool updateState(mrpt::obs::CActionCollection::Ptr action,
-					 mrpt::obs::CSensoryFrame::Ptr observations,
+	bool updateState(mrpt::obs::CActionCollection::Ptr action, mrpt::obs::CSensoryFrame::Ptr observations,
 					 mrpt::obs::CObservation::Ptr observation) override;
 	void loadParams(const std::string& source_fname) override;
 	void printParams() const override;
@@ -76,8 +74,8 @@ class CGridVectorERD
 	 * (earlier passes, search_* > 0) from shifted guesses, best matched length. */
 	std::optional<MatchResult> registerPair(TNodeID from, TNodeID to, const mrpt::math::TPose2D& guess,
 											bool sequential);
-	bool acceptable(const MatchResult& r, const mrpt::math::TPose2D& guess, bool sequential,
-					double widenDistance, double widenAngle) const;
+	bool acceptable(const MatchResult& r, const mrpt::math::TPose2D& guess, bool sequential, double widenDistance,
+					double widenAngle) const;
 	std::vector<TNodeID> passCandidates(TNodeID n, TNodeID below) const;
 
 	EdgeDeciderOptions params_;

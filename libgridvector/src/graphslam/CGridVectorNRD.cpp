@@ -22,8 +22,7 @@ TPose2D compose(const TPose2D& a, const TPose2D& b) { return (CPose2D(a) + CPose
 constexpr double kWeak = 1e-6;  // information scale of a prior that must not bias the match
 }  // namespace
 
-CGridVectorNRD::CGridVectorNRD()
-	: extractor_(cfg_.extraction, cfg_.grid), matcher_(cfg_.matcher)
+CGridVectorNRD::CGridVectorNRD() : extractor_(cfg_.extraction, cfg_.grid), matcher_(cfg_.matcher)
 {
 	this->initializeLoggers("CGridVectorNRD");
 	this->setMinLoggingLevel(mrpt::system::VerbosityLevel(params_.classVerbosity));
@@ -52,8 +51,7 @@ void CGridVectorNRD::printParams() const
 	params_.dumpToConsole();
 }
 
-bool CGridVectorNRD::updateState(mrpt::obs::CActionCollection::Ptr action,
-								 mrpt::obs::CSensoryFrame::Ptr observations,
+bool CGridVectorNRD::updateState(mrpt::obs::CActionCollection::Ptr action, mrpt::obs::CSensoryFrame::Ptr observations,
 								 mrpt::obs::CObservation::Ptr observation)
 {
 	mrpt::system::CTimeLoggerEntry timer(this->m_time_logger, "updateState");
@@ -64,8 +62,7 @@ bool CGridVectorNRD::updateState(mrpt::obs::CActionCollection::Ptr action,
 
 PoseEstimate CGridVectorNRD::odometryPrior(const TPose2D& prediction) const
 {
-	Eigen::Matrix3d info =
-		PoseGraph::odometryInformation(relative(odomAtNode_, odometry_.pose()), cfg_.posegraph);
+	Eigen::Matrix3d info = PoseGraph::odometryInformation(relative(odomAtNode_, odometry_.pose()), cfg_.posegraph);
 	if (!odometry_.seen() || !params_.useOdometry) info *= kWeak;
 	return {prediction, info};
 }
@@ -89,9 +86,9 @@ bool CGridVectorNRD::processScan(const mrpt::obs::CObservation2DRangeScan& scan)
 	const PoseEstimate prior = odometryPrior(prediction);
 	since_ = prior;
 	const MatchResult r = matcher_.match(keyframe_, segs, prediction);
-	if (!r.ok()) ++stats_.failed;
-	else if (!closeTo(prediction, r.pose, params_.maxCorrectionDistance,
-					  params_.maxCorrectionAngleDeg * M_PI / 180) ||
+	if (!r.ok())
+		++stats_.failed;
+	else if (!closeTo(prediction, r.pose, params_.maxCorrectionDistance, params_.maxCorrectionAngleDeg * M_PI / 180) ||
 			 !validInformation(r.information))
 		++stats_.implausible;
 	else
@@ -99,8 +96,7 @@ bool CGridVectorNRD::processScan(const mrpt::obs::CObservation2DRangeScan& scan)
 		++stats_.matched;
 		since_ = fuse(prior, PoseEstimate{r.pose, r.information});
 	}
-	MRPT_LOG_DEBUG_FMT("scan %zu: %s, since node %s", stats_.scans, toString(r.status),
-					   since_.mean.asString().c_str());
+	MRPT_LOG_DEBUG_FMT("scan %zu: %s, since node %s", stats_.scans, toString(r.status), since_.mean.asString().c_str());
 	// fused over the relative pose's parameters, both terms; the edge in the error's frame
 	this->m_since_prev_node_PDF = toConstraint(since_, cfg_.mstep.informationInEdgeFrame);
 	if (!checkRegistrationCondition()) return false;
@@ -113,7 +109,7 @@ bool CGridVectorNRD::checkRegistrationCondition()
 {
 	const TPose2D& d = since_.mean;
 	return std::hypot(d.x, d.y) > params_.registrationMaxDistance ||
-		std::abs(d.phi) > params_.registrationMaxAngleDeg * M_PI / 180;
+		   std::abs(d.phi) > params_.registrationMaxAngleDeg * M_PI / 180;
 }
 
 void CGridVectorNRD::registerNode(std::vector<MatchSegment>&& keyframe)
@@ -133,12 +129,10 @@ void CGridVectorNRD::registerNode(std::vector<MatchSegment>&& keyframe)
 void CGridVectorNRD::getDescriptiveReport(std::string* report_str) const
 {
 	std::ostringstream ss;
-	ss << "Grid-vector node registration (vector matching + odometry) summary:\n"
-	   << std::string(80, '#') << "\n";
+	ss << "Grid-vector node registration (vector matching + odometry) summary:\n" << std::string(80, '#') << "\n";
 	params_.dumpToTextStream(ss);
-	ss << mrpt::format(
-		"scans %zu: matched %zu, match rejected %zu, implausible %zu; nodes %zu\n\n",
-		stats_.scans, stats_.matched, stats_.failed, stats_.implausible, stats_.nodes);
+	ss << mrpt::format("scans %zu: matched %zu, match rejected %zu, implausible %zu; nodes %zu\n\n", stats_.scans,
+					   stats_.matched, stats_.failed, stats_.implausible, stats_.nodes);
 	report_str->clear();
 	parent_t::getDescriptiveReport(report_str);
 	*report_str += ss.str();

@@ -30,8 +30,7 @@ namespace gridvector::graphslam
  * [gridvector_grid], [gridvector_matcher] and [gridvector_posegraph]
  * (odometry model) sections of GridVectorConfig. Cost per scan: one
  * extraction and one registration. */
-class CGridVectorNRD
-	: public mrpt::graphslam::deciders::CNodeRegistrationDecider<mrpt::graphs::CNetworkOfPoses2DInf>
+class CGridVectorNRD : public mrpt::graphslam::deciders::CNodeRegistrationDecider<mrpt::graphs::CNetworkOfPoses2DInf>
 {
    public:
 	using graph_t = mrpt::graphs::CNetworkOfPoses2DInf;
@@ -39,8 +38,7 @@ class CGridVectorNRD
 
 	CGridVectorNRD();
 
-	bool updateState(mrpt::obs::CActionCollection::Ptr action,
-					 mrpt::obs::CSensoryFrame::Ptr observations,
+	bool updateState(mrpt::obs::CActionCollection::Ptr action, mrpt::obs::CSensoryFrame::Ptr observations,
 					 mrpt::obs::CObservation::Ptr observation) override;
 	/** Reads the options; throws std::runtime_error("FILE: ...") on an unknown
 	 * key in the decider's own sections or a value out of range. */

@@ -57,10 +57,12 @@ void NodeDeciderOptions::load(const mrpt::config::CConfigFileBase& cfg, const st
 {
 	loadBoth(*this, cfg, source);
 	const std::string s = sharedSection, own = ownSection;
-	require(registrationMaxDistance > 0, source, s, "registration_max_distance", registrationMaxDistance, "must be > 0");
+	require(registrationMaxDistance > 0, source, s, "registration_max_distance", registrationMaxDistance,
+			"must be > 0");
 	require(registrationMaxAngleDeg > 0 && registrationMaxAngleDeg <= 180, source, s, "registration_max_angle",
 			registrationMaxAngleDeg, "must be in (0, 180]");
-	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity", classVerbosity, "must be in 0..3");
+	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity", classVerbosity,
+			"must be in 0..3");
 	require(maxCorrectionDistance > 0, source, own, "max_correction_distance", maxCorrectionDistance, "must be > 0");
 	require(maxCorrectionAngleDeg > 0 && maxCorrectionAngleDeg <= 180, source, own, "max_correction_angle_deg",
 			maxCorrectionAngleDeg, "must be in (0, 180]");
@@ -81,7 +83,8 @@ void EdgeDeciderOptions::load(const mrpt::config::CConfigFileBase& cfg, const st
 	ignoredKeyNote = ignoredLcNote(cfg, source, lcMinNodeIdDiff);
 	const std::string s = sharedSection, own = ownSection;
 	require(lcMinNodeIdDiff >= 1, source, engineSection, "LC_min_nodeid_diff", lcMinNodeIdDiff, "must be >= 1");
-	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity", classVerbosity, "must be in 0..3");
+	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity", classVerbosity,
+			"must be in 0..3");
 	require(maxDistance > 0, source, own, "max_distance", maxDistance, "must be > 0");
 	require(sequentialWindow >= 0, source, own, "sequential_window", sequentialWindow, "must be >= 0");
 	require(passGap >= 1, source, own, "pass_gap", passGap, "must be >= 1");

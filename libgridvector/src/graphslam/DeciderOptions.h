@@ -31,23 +31,27 @@ struct NodeDeciderOptions : public mrpt::config::CLoadableOptions
 	template <class V>
 	void visitShared(V&& v)
 	{
-		v("registration_max_distance", registrationMaxDistance, "Register a node once the robot moved this far from the last node [m]");
+		v("registration_max_distance", registrationMaxDistance,
+		  "Register a node once the robot moved this far from the last node [m]");
 		v("registration_max_angle", registrationMaxAngleDeg, "... or turned this much [deg]");
 		v("class_verbosity", classVerbosity, "Logger level: 0 debug, 1 info, 2 warn, 3 error");
 	}
 	template <class V>
 	void visitOwn(V&& v)
 	{
-		v("max_correction_distance", maxCorrectionDistance, "A vector match whose pose differs from the odometry prediction by more than this is rejected (odometry used instead) [m]");
+		v("max_correction_distance", maxCorrectionDistance,
+		  "A vector match whose pose differs from the odometry prediction by more than this is rejected (odometry used "
+		  "instead) [m]");
 		v("max_correction_angle_deg", maxCorrectionAngleDeg, "... or whose heading differs by more than this [deg]");
-		v("use_odometry", useOdometry, "Fuse the odometry increment with the vector match (information form); false: vector match alone, odometry only as the initial guess and fallback");
+		v("use_odometry", useOdometry,
+		  "Fuse the odometry increment with the vector match (information form); false: vector match alone, odometry "
+		  "only as the initial guess and fallback");
 	}
 
 	/** Reads both sections; `section` is ignored (fixed names, see above).
 	 * Throws std::runtime_error naming source and key on an unknown key or a
 	 * value out of range. */
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
-							const std::string& section) override;
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
 	void load(const mrpt::config::CConfigFileBase& source, const std::string& sourceName);
 	void dumpToTextStream(std::ostream& out) const override;
 	static std::string markdownTable();
@@ -86,7 +90,10 @@ struct EdgeDeciderOptions : public mrpt::config::CLoadableOptions
 	template <class V>
 	void visitEngine(V&& v)
 	{
-		v("LC_min_nodeid_diff", lcMinNodeIdDiff, "An edge between nodes whose IDs differ by more than this counts as a loop closure (read here, as MRPT's edge deciders and CLevMarqGSO read it; a different value in [EdgeRegistrationDeciderParameters] is reported and not used)");
+		v("LC_min_nodeid_diff", lcMinNodeIdDiff,
+		  "An edge between nodes whose IDs differ by more than this counts as a loop closure (read here, as MRPT's "
+		  "edge deciders and CLevMarqGSO read it; a different value in [EdgeRegistrationDeciderParameters] is reported "
+		  "and not used)");
 	}
 	template <class V>
 	void visitShared(V&& v)
@@ -96,20 +103,30 @@ struct EdgeDeciderOptions : public mrpt::config::CLoadableOptions
 	template <class V>
 	void visitOwn(V&& v)
 	{
-		v("max_distance", maxDistance, "Only nodes whose current estimate lies within this of the new node are registered against it [m]");
-		v("sequential_window", sequentialWindow, "Register the new node against this many predecessors before the previous one (n-2 ... n-1-window)");
-		v("match_previous_node", matchPreviousNode, "Also register against node n-1 (set it when the node decider is odometry-only, e.g. CFixedIntervalsNRD; CGridVectorNRD's edge already is a vector match)");
-		v("pass_gap", passGap, "Older candidate nodes whose IDs are closer than this belong to one pass through the place; one candidate per pass");
-		v("max_loop_candidates", maxLoopCandidates, "At most this many older passes (nearest first) are registered against per new node");
-		v("min_matched_share", minMatchedShare, "A non-sequential registration needs this share of the shorter scan's vector length matched (0..1]");
-		v("max_correction_distance", maxCorrectionDistance, "A registration that moves the relative pose further than this from the graph's estimate is rejected [m]");
+		v("max_distance", maxDistance,
+		  "Only nodes whose current estimate lies within this of the new node are registered against it [m]");
+		v("sequential_window", sequentialWindow,
+		  "Register the new node against this many predecessors before the previous one (n-2 ... n-1-window)");
+		v("match_previous_node", matchPreviousNode,
+		  "Also register against node n-1 (set it when the node decider is odometry-only, e.g. CFixedIntervalsNRD; "
+		  "CGridVectorNRD's edge already is a vector match)");
+		v("pass_gap", passGap,
+		  "Older candidate nodes whose IDs are closer than this belong to one pass through the place; one candidate "
+		  "per pass");
+		v("max_loop_candidates", maxLoopCandidates,
+		  "At most this many older passes (nearest first) are registered against per new node");
+		v("min_matched_share", minMatchedShare,
+		  "A non-sequential registration needs this share of the shorter scan's vector length matched (0..1]");
+		v("max_correction_distance", maxCorrectionDistance,
+		  "A registration that moves the relative pose further than this from the graph's estimate is rejected [m]");
 		v("max_correction_angle_deg", maxCorrectionAngleDeg, "... or turns it more than this [deg]");
-		v("search_offset", searchOffset, "Earlier passes: if the registration from the graph's estimate fails, retry from the estimate shifted by -d, 0, +d in x and y (0: no retry); the correction gate widens by d [m]");
+		v("search_offset", searchOffset,
+		  "Earlier passes: if the registration from the graph's estimate fails, retry from the estimate shifted by -d, "
+		  "0, +d in x and y (0: no retry); the correction gate widens by d [m]");
 		v("search_angle_deg", searchAngleDeg, "... and turned by -a, 0, +a; the angle gate widens by a [deg]");
 	}
 
-	void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
-							const std::string& section) override;
+	void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
 	void load(const mrpt::config::CConfigFileBase& source, const std::string& sourceName);
 	void dumpToTextStream(std::ostream& out) const override;
 	static std::string markdownTable();

@@ -34,9 +34,12 @@ struct EngineOptions
 	{
 		v("save_graph", saveGraph, "Write the engine's graph (save_graph_fname) into the output directory");
 		v("save_map", saveMap, "Write the engine's occupancy grid (save_map_fname)");
-		v("user_decides_about_output_dir", userDecidesAboutOutputDir, "MRPT's engine: ask before reusing the output directory");
+		v("user_decides_about_output_dir", userDecidesAboutOutputDir,
+		  "MRPT's engine: ask before reusing the output directory");
 		v("class_verbosity", classVerbosity, "MRPT's engine: logger level, 0 debug .. 3 error");
-		v("LC_min_nodeid_diff", lcMinNodeIdDiff, "MRPT's edge deciders and CLevMarqGSO: an edge between nodes whose IDs differ by more than this is a loop closure");
+		v("LC_min_nodeid_diff", lcMinNodeIdDiff,
+		  "MRPT's edge deciders and CLevMarqGSO: an edge between nodes whose IDs differ by more than this is a loop "
+		  "closure");
 	}
 
 	/** Reads the section; throws std::runtime_error "source: [GeneralConfiguration] key = 'text' is

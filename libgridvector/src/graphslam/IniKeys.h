@@ -43,8 +43,8 @@ void printValue(std::ostream& o, const T& v)
 }  // namespace detail
 
 /** Reads every key a visitor lists from `section` (missing keys keep their
- * defaults; a value that is not its key's type is an error "source: [s] k = 'text' is not ..."). With `strict`, a key present in the section but not listed is an
- * error "source: unknown key 'k' in section [s]" (a typo must not fall back
+ * defaults; a value that is not its key's type is an error "source: [s] k = 'text' is not ..."). With `strict`, a key
+ * present in the section but not listed is an error "source: unknown key 'k' in section [s]" (a typo must not fall back
  * silently to a default). Sections shared with MRPT's own deciders are read
  * non-strict: they legitimately hold keys meant for other deciders. */
 template <class Visit>

@@ -22,8 +22,10 @@ bool OdometryTracker::update(const mrpt::obs::CActionCollection::Ptr& action,
 							 const mrpt::obs::CObservation::Ptr& observation)
 {
 	CObservationOdometry::Ptr odo;
-	if (observation) odo = std::dynamic_pointer_cast<CObservationOdometry>(observation);
-	else if (observations) odo = observations->getObservationByClass<CObservationOdometry>();
+	if (observation)
+		odo = std::dynamic_pointer_cast<CObservationOdometry>(observation);
+	else if (observations)
+		odo = observations->getObservationByClass<CObservationOdometry>();
 	if (odo)
 	{
 		pose_ = odo->odometry.asTPose();

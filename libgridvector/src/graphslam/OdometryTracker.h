@@ -22,8 +22,7 @@ class OdometryTracker
 {
    public:
 	/** Returns true if the step carried odometry. */
-	bool update(const mrpt::obs::CActionCollection::Ptr& action,
-				const mrpt::obs::CSensoryFrame::Ptr& observations,
+	bool update(const mrpt::obs::CActionCollection::Ptr& action, const mrpt::obs::CSensoryFrame::Ptr& observations,
 				const mrpt::obs::CObservation::Ptr& observation);
 	const mrpt::math::TPose2D& pose() const { return pose_; }
 	bool seen() const { return seen_; }

@@ -12,21 +12,18 @@ namespace gridvector::graphslam
 PoseEstimate fuse(const PoseEstimate& a, const PoseEstimate& b)
 {
 	const Eigen::Matrix3d sum = a.information + b.information;
-	const Eigen::Vector3d d(b.mean.x - a.mean.x, b.mean.y - a.mean.y,
-							mrpt::math::wrapToPi(b.mean.phi - a.mean.phi));
+	const Eigen::Vector3d d(b.mean.x - a.mean.x, b.mean.y - a.mean.y, mrpt::math::wrapToPi(b.mean.phi - a.mean.phi));
 	const Eigen::Vector3d step = sum.completeOrthogonalDecomposition().solve(b.information * d);
 	PoseEstimate out;
-	out.mean = mrpt::math::TPose2D(a.mean.x + step.x(), a.mean.y + step.y(),
-								   mrpt::math::wrapToPi(a.mean.phi + step.z()));
+	out.mean =
+		mrpt::math::TPose2D(a.mean.x + step.x(), a.mean.y + step.y(), mrpt::math::wrapToPi(a.mean.phi + step.z()));
 	out.information = sum;
 	return out;
 }
 
-bool closeTo(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, double maxDistance,
-			 double maxAngle)
+bool closeTo(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, double maxDistance, double maxAngle)
 {
-	return std::hypot(b.x - a.x, b.y - a.y) <= maxDistance &&
-		std::abs(mrpt::math::wrapToPi(b.phi - a.phi)) <= maxAngle;
+	return std::hypot(b.x - a.x, b.y - a.y) <= maxDistance && std::abs(mrpt::math::wrapToPi(b.phi - a.phi)) <= maxAngle;
 }
 
 bool validInformation(const Eigen::Matrix3d& information)
@@ -43,8 +40,7 @@ mrpt::poses::CPosePDFGaussianInf toConstraint(const PoseEstimate& e, bool errorF
 {
 	mrpt::poses::CPosePDFGaussianInf c;
 	c.mean = mrpt::poses::CPose2D(e.mean);
-	const Eigen::Matrix3d info =
-		errorFrame ? PoseGraph::errorFrameInformation(e.information, e.mean) : e.information;
+	const Eigen::Matrix3d info = errorFrame ? PoseGraph::errorFrameInformation(e.information, e.mean) : e.information;
 	for (int r = 0; r < 3; ++r)
 		for (int k = 0; k < 3; ++k) c.cov_inv(r, k) = info(r, k);
 	return c;

@@ -20,8 +20,7 @@ struct PoseEstimate
 PoseEstimate fuse(const PoseEstimate& a, const PoseEstimate& b);
 
 /** True if b differs from a by at most maxDistance [m] and maxAngle [rad]. */
-bool closeTo(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, double maxDistance,
-			 double maxAngle);
+bool closeTo(const mrpt::math::TPose2D& a, const mrpt::math::TPose2D& b, double maxDistance, double maxAngle);
 
 /** True if the matrix is finite, symmetric and positive semi-definite. */
 bool validInformation(const Eigen::Matrix3d& information);

@@ -63,8 +63,7 @@ io::Trajectory RunRecorder::scanTrajectory(const Nodes& nodes) const
 
 void RunRecorder::buildMap(const Nodes& nodes, mrpt::maps::CGridVectorMap& map) const
 {
-	for (const auto& s : scans_)
-		map.insertObservation(*s.scan, mrpt::poses::CPose3D(CPose2D(poseOf(s, nodes))));
+	for (const auto& s : scans_) map.insertObservation(*s.scan, mrpt::poses::CPose3D(CPose2D(poseOf(s, nodes))));
 }
 
 }  // namespace gridvector::graphslam

@@ -23,8 +23,7 @@ class RunRecorder
 	using Nodes = graph_t::global_poses_t;
 
 	/** Call after each engine step with the step's inputs and the graph's node count then. */
-	void record(const mrpt::obs::CActionCollection::Ptr& action,
-				const mrpt::obs::CSensoryFrame::Ptr& observations,
+	void record(const mrpt::obs::CActionCollection::Ptr& action, const mrpt::obs::CSensoryFrame::Ptr& observations,
 				const mrpt::obs::CObservation::Ptr& observation, size_t nodeCount);
 
 	size_t scanCount() const { return scans_.size(); }

@@ -21,8 +21,8 @@ std::string temporaryNameFor(const std::string& path)
 {
 	static std::atomic<unsigned> counter{0};
 	const fs::path p(path);
-	const std::string name = "." + p.filename().string() + ".tmp" + std::to_string(::getpid()) + "_" +
-							 std::to_string(counter++);
+	const std::string name =
+		"." + p.filename().string() + ".tmp" + std::to_string(::getpid()) + "_" + std::to_string(counter++);
 	return (p.parent_path() / name).string();
 }
 
@@ -34,8 +34,8 @@ AtomicFile::AtomicFile(std::string path, Mode mode) : path_(std::move(path)), mo
 	if (path_.empty()) throw std::runtime_error("(empty path): cannot write (no file name given)");
 	if (fs::is_directory(path_)) fail("it is a directory");
 	tmp_ = temporaryNameFor(path_);
-	const auto flags = mode_ == Mode::Text ? std::ios::out | std::ios::trunc
-										   : std::ios::out | std::ios::trunc | std::ios::binary;
+	const auto flags =
+		mode_ == Mode::Text ? std::ios::out | std::ios::trunc : std::ios::out | std::ios::trunc | std::ios::binary;
 	errno = 0;
 	out_.open(tmp_, flags);
 	if (!out_) fail(errno ? errnoText() : "cannot create a temporary file next to it");
@@ -88,8 +88,7 @@ void ensureWritableDirectory(const std::string& dir)
 	if (!fs::exists(dir, ec)) fs::create_directories(dir, ec);
 	if (ec) throw std::runtime_error(dir + ": cannot write (" + ec.message() + ")");
 	if (!fs::is_directory(dir)) throw std::runtime_error(dir + ": cannot write (not a directory)");
-	if (::access(dir.c_str(), W_OK | X_OK) != 0)
-		throw std::runtime_error(dir + ": cannot write (" + errnoText() + ")");
+	if (::access(dir.c_str(), W_OK | X_OK) != 0) throw std::runtime_error(dir + ": cannot write (" + errnoText() + ")");
 }
 
 namespace
@@ -158,7 +157,8 @@ void OutputDirectory::removeStaleMarker() const
 	std::error_code ec;
 	if (fs::is_directory(fs::symlink_status(path, ec)))
 		throw std::runtime_error(path + ": cannot write (it is a directory)");
-	if (!fs::remove(path, ec) && ec) throw std::runtime_error(path + ": cannot remove a previous run's file (" + ec.message() + ")");
+	if (!fs::remove(path, ec) && ec)
+		throw std::runtime_error(path + ": cannot remove a previous run's file (" + ec.message() + ")");
 }
 
 OutputDirectory::~OutputDirectory()

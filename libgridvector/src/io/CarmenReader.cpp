@@ -107,30 +107,39 @@ LogData CarmenParser::parse(const std::vector<char>& text)
 void CarmenParser::dispatch(const Tokens& t)
 {
 	const std::string_view k = t[0];
-	if (k == "PARAM") onParam(t);
-	else if (k == "ODOM") onOdom(t);
-	else if (k == "FLASER") onFlaser(t, false);
-	else if (k == "RLASER") onFlaser(t, true);
-	else if (k == "ROBOTLASER1" || k == "ROBOTLASER2") onRobotLaser(t);
-	else if (k.size() == 9 && k.substr(0, 8) == "RAWLASER" && k[8] >= '1' && k[8] <= '4') onRawLaser(t, k[8] - '0');
-	else onOther(t);
+	if (k == "PARAM")
+		onParam(t);
+	else if (k == "ODOM")
+		onOdom(t);
+	else if (k == "FLASER")
+		onFlaser(t, false);
+	else if (k == "RLASER")
+		onFlaser(t, true);
+	else if (k == "ROBOTLASER1" || k == "ROBOTLASER2")
+		onRobotLaser(t);
+	else if (k.size() == 9 && k.substr(0, 8) == "RAWLASER" && k[8] >= '1' && k[8] <= '4')
+		onRawLaser(t, k[8] - '0');
+	else
+		onOther(t);
 }
 
 void CarmenParser::onOther(const Tokens& t)
 {
 	const std::string_view k = t[0];
-	const bool identifier = std::isupper(static_cast<unsigned char>(k[0])) &&
-							std::all_of(k.begin(), k.end(), [](char c) {
-								return std::isupper(static_cast<unsigned char>(c)) ||
-									   std::isdigit(static_cast<unsigned char>(c)) || c == '_';
-							});
-	if (!identifier) parseError(pos_, "unrecognised line starting with '" + printableToken(k) + "' (not a CARMEN message)");
+	const bool identifier =
+		std::isupper(static_cast<unsigned char>(k[0])) && std::all_of(k.begin(), k.end(), [](char c) {
+			return std::isupper(static_cast<unsigned char>(c)) || std::isdigit(static_cast<unsigned char>(c)) ||
+				   c == '_';
+		});
+	if (!identifier)
+		parseError(pos_, "unrecognised line starting with '" + printableToken(k) + "' (not a CARMEN message)");
 	out_.contents.ignored[str(k)]++;
 }
 
 void CarmenParser::onParam(const Tokens& t)
 {
-	if (t.size() < 3) parseError(pos_, "PARAM: expected 'PARAM name value ...', found " + io::counted(t.size(), "field"));
+	if (t.size() < 3)
+		parseError(pos_, "PARAM: expected 'PARAM name value ...', found " + io::counted(t.size(), "field"));
 	params_.apply(t[1], t[2], pos_);
 	out_.contents.paramLines++;
 }
@@ -305,7 +314,8 @@ void CarmenParser::finish()
 	for (size_t i = 1; i < out_.scans.size(); i++)
 		if (out_.scans[i].timestamp <= out_.scans[i - 1].timestamp) backwards++;
 	if (backwards)
-		out_.warnings.push_back(counted(backwards, "scan timestamp") + " " + agree(backwards, "does", "do") + " not increase (low-precision or unsorted timestamps in the file)");
+		out_.warnings.push_back(counted(backwards, "scan timestamp") + " " + agree(backwards, "does", "do") +
+								" not increase (low-precision or unsorted timestamps in the file)");
 	if (out_.scans.empty()) out_.warnings.push_back("no laser scans in the file");
 	pending_.clear();
 	out_.summary = summary();

@@ -55,12 +55,27 @@ std::string oneLineError(const std::string& text, size_t maxLen)
 	{
 		line = trim(line);
 		if (line.empty() || startsWith(line, "====")) continue;
-		if (startsWith(line, "Call stack backtrace")) { inStack = true; continue; }
-		if (startsWith(line, "Location:")) { inStack = false; continue; }
-		if (startsWith(line, "Message:")) { inStack = false; lastMessage = trim(line.substr(8)); continue; }
+		if (startsWith(line, "Call stack backtrace"))
+		{
+			inStack = true;
+			continue;
+		}
+		if (startsWith(line, "Location:"))
+		{
+			inStack = false;
+			continue;
+		}
+		if (startsWith(line, "Message:"))
+		{
+			inStack = false;
+			lastMessage = trim(line.substr(8));
+			continue;
+		}
 		if (inStack || isFrame(line)) continue;
-		if (!lastMessage.empty()) lastMessage += ' ' + line;
-		else out += (out.empty() ? "" : " ") + line;
+		if (!lastMessage.empty())
+			lastMessage += ' ' + line;
+		else
+			out += (out.empty() ? "" : " ") + line;
 	}
 	std::string s;
 	const std::string& text1 = lastMessage.empty() ? out : lastMessage;

@@ -62,11 +62,20 @@ bool parseIniValue(const std::string& text, bool& value)
 }
 
 template <>
-const char* iniKindOf<double>() { return "a finite number"; }
+const char* iniKindOf<double>()
+{
+	return "a finite number";
+}
 template <>
-const char* iniKindOf<int>() { return "an integer"; }
+const char* iniKindOf<int>()
+{
+	return "an integer";
+}
 template <>
-const char* iniKindOf<bool>() { return "true or false"; }
+const char* iniKindOf<bool>()
+{
+	return "true or false";
+}
 
 template <class T>
 void readIniText(const std::string& text, const std::string& section, const std::string& key, T& field,
@@ -86,10 +95,11 @@ template void readIniText(const std::string&, const std::string&, const std::str
 						  const std::string&, bool (*)(bool));
 
 template <class T>
-void readIniValue(const mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
-				  T& field, const std::string& sourceName, const std::string& what, typename IniCheck<T>::Fn valid)
+void readIniValue(const mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key, T& field,
+				  const std::string& sourceName, const std::string& what, typename IniCheck<T>::Fn valid)
 {
-	if (c.keyExists(section, key)) readIniText(iniValueText(c, section, key), section, key, field, sourceName, what, valid);
+	if (c.keyExists(section, key))
+		readIniText(iniValueText(c, section, key), section, key, field, sourceName, what, valid);
 }
 template void readIniValue(const mrpt::config::CConfigFileBase&, const std::string&, const std::string&, double&,
 						   const std::string&, const std::string&, bool (*)(double));

@@ -45,15 +45,14 @@ struct IniCheck
  * does (same error, `field` left alone then). For readers that take the text another way. */
 template <class T>
 void readIniText(const std::string& text, const std::string& section, const std::string& key, T& field,
-				 const std::string& sourceName, const std::string& what = {},
-				 typename IniCheck<T>::Fn valid = nullptr);
+				 const std::string& sourceName, const std::string& what = {}, typename IniCheck<T>::Fn valid = nullptr);
 
 /** If `key` is in `section`, reads it into `field` strictly. Throws std::runtime_error
  * "<sourceName>: [section] key = 'text' is not <what>" when the text is not a T or `valid`
  * (when given) refuses the value; `what` defaults to iniKindOf<T>(). `field` is left alone then. */
 template <class T>
-void readIniValue(const mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key,
-				  T& field, const std::string& sourceName, const std::string& what = {},
+void readIniValue(const mrpt::config::CConfigFileBase& c, const std::string& section, const std::string& key, T& field,
+				  const std::string& sourceName, const std::string& what = {},
 				  typename IniCheck<T>::Fn valid = nullptr);
 
 /** Throws std::runtime_error "<sourceName>: unknown key 'k' in section [section]" for a key of

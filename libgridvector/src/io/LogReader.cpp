@@ -43,7 +43,9 @@ void applyNoReturnRange(LogData& log)
 	applyMaxRange(log, *range);
 	log.noReturnRange = *range;
 	char buf[224];
-	std::snprintf(buf, sizeof buf, "readings of exactly %.2f m (the largest, in >= %g %% and >= %zu of the scans) are the scanner's no-return value: max range %.2f m instead of %.2f m",
+	std::snprintf(buf, sizeof buf,
+				  "readings of exactly %.2f m (the largest, in >= %g %% and >= %zu of the scans) are the scanner's "
+				  "no-return value: max range %.2f m instead of %.2f m",
 				  *range, 100 * kNoReturnMinShare, kNoReturnMinScans, *range, double(declared));
 	log.warnings.push_back(buf);
 	log.summary += std::string("; ") + buf;
@@ -56,8 +58,8 @@ LogData readLog(const std::string& path, const ReadOptions& opt)
 	std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::tolower(c)); });
 	if (endsWith(name, ".gz")) name.resize(name.size() - 3);
 	const std::vector<char> bytes = readFileBytes(path);
-	const bool rawlog = endsWith(name, ".rawlog") ||
-						(!endsWith(name, ".log") && !endsWith(name, ".clf") && !looksLikeText(bytes));
+	const bool rawlog =
+		endsWith(name, ".rawlog") || (!endsWith(name, ".log") && !endsWith(name, ".clf") && !looksLikeText(bytes));
 	if (rawlog) return parseRawlog(bytes, path, opt);
 	LogData log = parseCarmenLog(bytes, path, opt);
 	if (opt.detectNoReturnRange) applyNoReturnRange(log);
@@ -66,21 +68,24 @@ LogData readLog(const std::string& path, const ReadOptions& opt)
 
 void requireScans(const LogData& log)
 {
-	if (log.scans.empty()) throw std::runtime_error(log.source + ": no laser scans (" + describeContents(log.contents) + ")");
+	if (log.scans.empty())
+		throw std::runtime_error(log.source + ": no laser scans (" + describeContents(log.contents) + ")");
 }
 
 std::string describeContents(const LogContents& c)
 {
 	const auto n = [](size_t k) { return std::to_string(k); };
 	std::string s;
-	if (c.format == LogContents::Format::Carmen) s = n(c.odometryRecords) + " ODOM, " + n(c.paramLines) + " PARAM";
+	if (c.format == LogContents::Format::Carmen)
+		s = n(c.odometryRecords) + " ODOM, " + n(c.paramLines) + " PARAM";
 	else
 	{
 		s = c.sensoryFrames ? "actions+sensory-frames format (" + counted(c.actionSets, "action set") + ", " +
 								  counted(c.sensoryFrames, "sensory frame") + ")"
 							: "observation-only format (" + counted(c.observations, "observation") + ")";
-		s += c.odometryRecords ? "; odometry from " + counted(c.odometryRecords, "odometry observation")
-							   : c.movementActions ? "; odometry from robot-movement actions" : "; no odometry";
+		s += c.odometryRecords   ? "; odometry from " + counted(c.odometryRecords, "odometry observation")
+			 : c.movementActions ? "; odometry from robot-movement actions"
+								 : "; no odometry";
 	}
 	for (const auto& [k, count] : c.ignored) s += ", " + n(count) + " " + k + " ignored";
 	return s;

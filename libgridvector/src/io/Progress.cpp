@@ -10,8 +10,7 @@ using Clock = std::chrono::steady_clock;
 
 Progress::Progress(std::string label, bool quiet)
 	: label_(std::move(label)), enabled_(!quiet && ::isatty(STDERR_FILENO)), start_(Clock::now()), last_(start_)
-{
-}
+{}
 
 Progress::~Progress() { done(); }
 

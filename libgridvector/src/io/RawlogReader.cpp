@@ -67,7 +67,8 @@ LogData RawlogParser::parse(const std::vector<char>& bytes)
 		}
 		catch (const std::exception& e)
 		{
-			if (mem.getPosition() >= bytes.size()) fail("truncated or corrupt rawlog (this entry reads past the end of the file)");
+			if (mem.getPosition() >= bytes.size())
+				fail("truncated or corrupt rawlog (this entry reads past the end of the file)");
 			fail("corrupt rawlog object (" + gridvector::oneLineError(e) + ")");
 		}
 		onObject(obj);
@@ -117,7 +118,8 @@ void RawlogParser::onObservation(const CObservation::Ptr& obs, bool inFrame)
 		return odomObs_.add(t, odo->odometry.asTPose());
 	auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(obs);
 	if (!scan) return void(out_.contents.ignored[obs->GetRuntimeClass()->className]++);
-	if (!opt_.sensorLabel.empty() && scan->sensorLabel != opt_.sensorLabel) return void(out_.contents.ignored["scans of other sensors"]++);
+	if (!opt_.sensorLabel.empty() && scan->sensorLabel != opt_.sensorLabel)
+		return void(out_.contents.ignored["scans of other sensors"]++);
 	checkRanges(*scan);
 	if (obs->timestamp == INVALID_TIMESTAMP) noTimestamp_++;
 	ScanRecord r;
@@ -136,10 +138,12 @@ void RawlogParser::checkRanges(const CObservation2DRangeScan& s) const
 	{
 		const float r = s.getScanRange(i);
 		if (s.getScanRangeValidity(i) && (!std::isfinite(r) || r < 0))
-			fail("2D scan beam " + std::to_string(i) + " is valid with range " + std::to_string(r) + " (corrupt data?)");
+			fail("2D scan beam " + std::to_string(i) + " is valid with range " + std::to_string(r) +
+				 " (corrupt data?)");
 	}
 	if (!std::isfinite(s.aperture) || s.aperture <= 0 || !std::isfinite(s.maxRange) || s.maxRange <= 0)
-		fail("2D scan with aperture " + std::to_string(s.aperture) + " and max range " + std::to_string(s.maxRange) + " (corrupt data?)");
+		fail("2D scan with aperture " + std::to_string(s.aperture) + " and max range " + std::to_string(s.maxRange) +
+			 " (corrupt data?)");
 }
 
 void RawlogParser::finish()
@@ -155,8 +159,11 @@ void RawlogParser::finish()
 	size_t backwards = 0;  // as the CARMEN reader: scans are used in file order, said when time disagrees
 	for (size_t i = 1; i < out_.scans.size(); i++) backwards += out_.scans[i].timestamp <= out_.scans[i - 1].timestamp;
 	if (backwards > 0 && noTimestamp_ < out_.scans.size())
-		out_.warnings.push_back(counted(backwards, "scan timestamp") + " " + agree(backwards, "does", "do") + " not increase (unsorted or repeated timestamps in the file)");
-	if (noTimestamp_) out_.warnings.push_back(counted(noTimestamp_, "scan") + " " + agree(noTimestamp_, "has", "have") + " no timestamp (set to 0)");
+		out_.warnings.push_back(counted(backwards, "scan timestamp") + " " + agree(backwards, "does", "do") +
+								" not increase (unsorted or repeated timestamps in the file)");
+	if (noTimestamp_)
+		out_.warnings.push_back(counted(noTimestamp_, "scan") + " " + agree(noTimestamp_, "has", "have") +
+								" no timestamp (set to 0)");
 	if (out_.scans.empty()) out_.warnings.push_back("no 2D laser scans in the file");
 	out_.contents.format = LogContents::Format::Rawlog;
 	out_.contents.odometryRecords = odomObs_.size();
@@ -174,6 +181,9 @@ LogData parseRawlog(const std::vector<char>& bytes, const std::string& source, c
 	return p.parse(bytes);
 }
 
-LogData readRawlog(const std::string& path, const ReadOptions& opt) { return parseRawlog(readFileBytes(path), path, opt); }
+LogData readRawlog(const std::string& path, const ReadOptions& opt)
+{
+	return parseRawlog(readFileBytes(path), path, opt);
+}
 
 }  // namespace gridvector::io

@@ -76,7 +76,8 @@ void writeRawlog(const std::string& path, const LogData& log, const RawlogWriteO
 		for (const ScanRecord& r : log.scans)
 		{
 			if (!r.scan) throw std::runtime_error("scan record without a scan");
-			if (opt.format == RawlogFormat::Observations) writeObservations(ar, r);
+			if (opt.format == RawlogFormat::Observations)
+				writeObservations(ar, r);
 			else
 			{
 				const CPose2D odo(r.odometry);

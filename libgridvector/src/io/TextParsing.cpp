@@ -8,10 +8,7 @@
 
 namespace gridvector::io
 {
-void parseError(const TextPos& pos, const std::string& msg)
-{
-	throw std::runtime_error(pos.str() + ": " + msg);
-}
+void parseError(const TextPos& pos, const std::string& msg) { throw std::runtime_error(pos.str() + ": " + msg); }
 
 namespace
 {
@@ -35,8 +32,10 @@ std::string printableToken(std::string_view tok)
 	for (size_t i = 0; i < tok.size() && i < kMax; ++i)
 	{
 		const auto c = static_cast<unsigned char>(tok[i]);
-		if (c >= 0x20 && c < 0x7f) out += char(c);
-		else out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
+		if (c >= 0x20 && c < 0x7f)
+			out += char(c);
+		else
+			out += std::string("\\x") + hex[c >> 4] + hex[c & 15];
 	}
 	if (tok.size() > kMax) out += "...";
 	return out;
@@ -81,7 +80,8 @@ long parseInt(std::string_view tok, const TextPos& pos, const std::string& what,
 	if (s.empty() || end != s.c_str() + s.size() || errno == ERANGE)
 		parseError(pos, what + " is '" + printableToken(s) + "' (not an integer)");
 	if (v < lo || v > hi)
-		parseError(pos, what + " is " + printableToken(s) + " (must be in " + std::to_string(lo) + ".." + std::to_string(hi) + ")");
+		parseError(pos, what + " is " + printableToken(s) + " (must be in " + std::to_string(lo) + ".." +
+							std::to_string(hi) + ")");
 	return v;
 }
 

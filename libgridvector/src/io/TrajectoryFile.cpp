@@ -43,13 +43,16 @@ std::vector<std::optional<mrpt::math::TPose2D>> posesAtScans(const LogData& log,
 		for (size_t i = 0; i < n; ++i) out[i] = traj[i].second;
 		return out;
 	}
-	const auto earlier = [](const Trajectory::value_type& a, const Trajectory::value_type& b) { return a.first < b.first; };
+	const auto earlier = [](const Trajectory::value_type& a, const Trajectory::value_type& b) {
+		return a.first < b.first;
+	};
 	Trajectory sorted = traj;
 	std::stable_sort(sorted.begin(), sorted.end(), earlier);
 	for (size_t i = 0; i < n; ++i)
 	{
 		const double t = log.scans[i].timestamp;
-		const auto it = std::lower_bound(sorted.begin(), sorted.end(), t, [](const auto& p, double v) { return p.first < v; });
+		const auto it =
+			std::lower_bound(sorted.begin(), sorted.end(), t, [](const auto& p, double v) { return p.first < v; });
 		const Trajectory::value_type* best = nullptr;
 		for (auto c : {it, it == sorted.begin() ? sorted.end() : std::prev(it)})
 			if (c != sorted.end() && std::abs(c->first - t) <= maxDt &&
@@ -62,9 +65,10 @@ std::vector<std::optional<mrpt::math::TPose2D>> posesAtScans(const LogData& log,
 			{
 				char buf[96];
 				std::snprintf(buf, sizeof buf, "%.6f", best->first);
-				throw std::runtime_error(source + ": " + std::to_string(hi - lo) + " different poses at t = " + buf +
-										 ": scans cannot be matched to poses by time (a file with one pose per scan, in "
-										 "the log's order, is matched by position)");
+				throw std::runtime_error(
+					source + ": " + std::to_string(hi - lo) + " different poses at t = " + buf +
+					": scans cannot be matched to poses by time (a file with one pose per scan, in "
+					"the log's order, is matched by position)");
 			}
 		out[i] = best->second;
 	}

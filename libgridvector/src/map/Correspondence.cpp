@@ -14,8 +14,8 @@ double angleDiff(double a, double b) { return std::abs(mrpt::math::wrapToPi(a - 
 }  // namespace
 
 // Sec. 3.2: criteria 1-3.
-CorrespondenceTest testCorrespondence(const TPoint2D& sa, const TPoint2D& ea, const TPoint2D& sb,
-									  const TPoint2D& eb, const MapOptions& opt)
+CorrespondenceTest testCorrespondence(const TPoint2D& sa, const TPoint2D& ea, const TPoint2D& sb, const TPoint2D& eb,
+									  const MapOptions& opt)
 {
 	CorrespondenceTest t;
 	const double la = std::hypot(ea.x - sa.x, ea.y - sa.y), lb = std::hypot(eb.x - sb.x, eb.y - sb.y);

@@ -32,8 +32,7 @@ CorrespondenceTest testCorrespondence(const mrpt::math::TPoint2D& sa, const mrpt
 									  const mrpt::math::TPoint2D& sb, const mrpt::math::TPoint2D& eb,
 									  const MapOptions& opt);
 
-inline CorrespondenceTest testCorrespondence(const GridVector& a, const GridVector& b,
-											 const MapOptions& opt)
+inline CorrespondenceTest testCorrespondence(const GridVector& a, const GridVector& b, const MapOptions& opt)
 {
 	return testCorrespondence(a.start(), a.end(), b.start(), b.end(), opt);
 }

@@ -9,8 +9,12 @@ namespace gridvector
 {
 using mrpt::math::TPoint2D;
 
-GlobalMap::GlobalMap(const GridVectorConfig& cfg)
-	: cfg_(cfg), index_(VectorIndex::kCellSize), wiper_(cfg.map.hitBand, cfg.map.wipeCountsBeams), merger_(cfg)
+GlobalMap::GlobalMap(const GridVectorConfig& cfg, bool wipeCountsBeams)
+	: cfg_(cfg),
+	  wipeCountsBeams_(wipeCountsBeams),
+	  index_(VectorIndex::kCellSize),
+	  wiper_(cfg.map.hitBand, wipeCountsBeams),
+	  merger_(cfg)
 {
 	modified();
 }
@@ -28,7 +32,7 @@ void GlobalMap::setConfig(const GridVectorConfig& cfg)
 {
 	modified();
 	cfg_ = cfg;
-	wiper_ = ScanWipe(cfg.map.hitBand, cfg.map.wipeCountsBeams);
+	wiper_ = ScanWipe(cfg.map.hitBand, wipeCountsBeams_);
 	merger_ = VectorMerger(cfg);
 }
 
@@ -135,8 +139,9 @@ void GlobalMap::completeRefused(HeldBack& held)
 {
 	auto& boxes = held.boxes;
 	std::sort(boxes.begin(), boxes.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-	boxes.erase(std::unique(boxes.begin(), boxes.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
-				boxes.end());
+	boxes.erase(
+		std::unique(boxes.begin(), boxes.end(), [](const auto& a, const auto& b) { return a.first == b.first; }),
+		boxes.end());
 	std::vector<WipeTriangle> tris;
 	std::vector<uint32_t> cand;
 	for (const auto& [id, box] : boxes)
@@ -151,7 +156,7 @@ void GlobalMap::completeRefused(HeldBack& held)
 		std::vector<WipePart> applied(tris.size(), WipePart::Hit), wanted(tris.size(), WipePart::Hit);
 		for (size_t k = 0; k < tris.size(); ++k)
 			if (std::binary_search(held.targets[k].begin(), held.targets[k].end(), id)) applied[k] = WipePart::Visited;
-		ScanWipe::complete(tris, applied, wanted, vectors_[*slot], cfg_.map.wipeCountsBeams, stats_.wipe);
+		ScanWipe::complete(tris, applied, wanted, vectors_[*slot], wipeCountsBeams_, stats_.wipe);
 	}
 }
 

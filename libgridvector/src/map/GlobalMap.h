@@ -38,7 +38,15 @@ struct MergeResult
 class GlobalMap
 {
    public:
-	explicit GlobalMap(const GridVectorConfig& cfg = {});
+	/** Eq. 8's unit in the sequential map (insertScan): a wipe increment counts the fan's beams
+	 * through a cell, the unit of Algorithm 1's endpoint counts, so that scans seen through a place
+	 * outweigh the hits it once took (a door seen open, a person walking past). */
+	static constexpr bool kSequentialWipeCountsBeams = true;
+	/** Eq. 8's unit in the batch product (buildPerScan, the maps the E-step classifies): 1 per cell
+	 * and triangle, the paper's Fig. 2, against which the E-step's thresholds are set. */
+	static constexpr bool kBatchWipeCountsBeams = false;
+
+	explicit GlobalMap(const GridVectorConfig& cfg = {}, bool wipeCountsBeams = kSequentialWipeCountsBeams);
 
 	void clear();
 	bool empty() const { return vectors_.empty(); }
@@ -103,8 +111,7 @@ class GlobalMap
 	 * scan by scan). Cost: O(sum over scans of the vectors near each pose),
 	 * which grows with the square of the passes through a place. */
 	static std::vector<GridVector> buildPerScan(const std::vector<mrpt::math::TPose2D>& poses,
-												 const std::vector<LocalScan>& scans,
-												 const GridVectorConfig& cfg);
+												const std::vector<LocalScan>& scans, const GridVectorConfig& cfg);
 
 	/** Eq. 4 "merge": groups corresponding vectors (Sec. 3.2 criteria, grown
 	 * greedily from the longest vectors, each group's geometry re-estimated as
@@ -177,6 +184,7 @@ class GlobalMap
 	};
 
 	GridVectorConfig cfg_;
+	bool wipeCountsBeams_;  //!< Eq. 8's unit (kSequentialWipeCountsBeams unless a test sets it)
 	std::vector<GridVector> vectors_;
 	Revision revision_;
 	uint64_t nextId_ = 1;

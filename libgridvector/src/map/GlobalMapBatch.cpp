@@ -15,8 +15,7 @@ using mrpt::math::TPoint2D;
 
 // Eq. 4 (unmerged) and Eq. 8: every scan's triangles over every other scan's vectors.
 std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TPose2D>& poses,
-												 const std::vector<LocalScan>& scans,
-												 const GridVectorConfig& cfg)
+												const std::vector<LocalScan>& scans, const GridVectorConfig& cfg)
 {
 	if (poses.size() != scans.size())
 		throw std::invalid_argument("GlobalMap::buildPerScan: poses and scans differ in number");
@@ -38,7 +37,7 @@ std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TP
 
 	std::vector<TPoint2D> sensors(scans.size());
 	for (size_t t = 0; t < scans.size(); ++t) sensors[t] = sensorPosition(poses[t], scans[t]);
-	WipeProduct(cfg.map.hitBand, cfg.map.wipeCountsBeams, VectorIndex::kCellSize).apply(sensors, first, all);
+	WipeProduct(cfg.map.hitBand, kBatchWipeCountsBeams, VectorIndex::kCellSize).apply(sensors, first, all);
 	return all;
 }
 
@@ -93,8 +92,7 @@ struct Group
 
 	Box2D box(double band) const
 	{
-		return Box2D{std::min(s.x, e.x), std::min(s.y, e.y), std::max(s.x, e.x), std::max(s.y, e.y)}
-			.expanded(band);
+		return Box2D{std::min(s.x, e.x), std::min(s.y, e.y), std::max(s.x, e.x), std::max(s.y, e.y)}.expanded(band);
 	}
 };
 
@@ -174,9 +172,8 @@ std::vector<Group> correspondingGroups(const std::vector<GridVector>& vectors, c
 {
 	std::vector<uint32_t> order(vectors.size());
 	std::iota(order.begin(), order.end(), 0u);
-	std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) {
-		return vectors[a].length() > vectors[b].length();
-	});
+	std::stable_sort(order.begin(), order.end(),
+					 [&](uint32_t a, uint32_t b) { return vectors[a].length() > vectors[b].length(); });
 	double band = 0;
 	for (const auto& v : vectors) band = std::max(band, (v.halfWidth() + 0.5) * v.resolution());
 
@@ -207,8 +204,7 @@ std::vector<Group> correspondingGroups(const std::vector<GridVector>& vectors, c
 		index.insert(uint32_t(groups.size() - 1), groups.back().box(band));
 	}
 	groups.erase(std::remove_if(groups.begin(), groups.end(), [](const Group& g) { return !g.alive; }), groups.end());
-	std::sort(groups.begin(), groups.end(),
-			  [](const Group& a, const Group& b) { return a.firstInput < b.firstInput; });
+	std::sort(groups.begin(), groups.end(), [](const Group& a, const Group& b) { return a.firstInput < b.firstInput; });
 	return groups;
 }
 

@@ -22,8 +22,7 @@ namespace
 std::string tempLike(const std::string& path)
 {
 	const std::filesystem::path p(path);
-	return (p.parent_path() / ("." + p.stem().string() + ".tmp" + std::to_string(::getpid()) +
-							   p.extension().string()))
+	return (p.parent_path() / ("." + p.stem().string() + ".tmp" + std::to_string(::getpid()) + p.extension().string()))
 		.string();
 }
 
@@ -119,8 +118,8 @@ void MapExport::writeVectorsText(const std::vector<GridVector>& vectors, const s
 		f.precision(9);
 		f << "# x1 y1 x2 y2 p_static   (" << vectors.size() << " grid vectors, world frame, metres)\n";
 		for (const auto& v : vectors)
-			f << v.start().x << ' ' << v.start().y << ' ' << v.end().x << ' ' << v.end().y << ' '
-			  << v.pStatic() << '\n';
+			f << v.start().x << ' ' << v.start().y << ' ' << v.end().x << ' ' << v.end().y << ' ' << v.pStatic()
+			  << '\n';
 	});
 }
 
@@ -147,8 +146,8 @@ void MapExport::writeSvg(const std::vector<GridVector>& vectors, const std::stri
 		f.precision(6);
 		f << std::fixed;
 		f << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-		  << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << x0 - m << " " << -(y1 + m) << " " << w
-		  << " " << h << "\" width=\"" << std::lround(std::min(4000.0, w * 40)) << "\" height=\""
+		  << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << x0 - m << " " << -(y1 + m) << " " << w << " "
+		  << h << "\" width=\"" << std::lround(std::min(4000.0, w * 40)) << "\" height=\""
 		  << std::lround(std::min(4000.0, w * 40) * h / w) << "\">\n"
 		  << "<title>grid vector map: " << vectors.size()
 		  << " vectors (blue static, red dynamic, width = confidence)</title>\n"
@@ -156,15 +155,14 @@ void MapExport::writeSvg(const std::vector<GridVector>& vectors, const std::stri
 		  << "\" fill=\"white\"/>\n"
 		  << "<g transform=\"scale(1,-1)\" stroke-linecap=\"round\">\n";
 		for (const auto& v : vectors)
-			f << "<line x1=\"" << v.start().x << "\" y1=\"" << v.start().y << "\" x2=\"" << v.end().x
-			  << "\" y2=\"" << v.end().y << "\" stroke=\"" << svgColour(v) << "\" stroke-width=\""
-			  << svgStrokeWidth(v) << "\"/>\n";
+			f << "<line x1=\"" << v.start().x << "\" y1=\"" << v.start().y << "\" x2=\"" << v.end().x << "\" y2=\""
+			  << v.end().y << "\" stroke=\"" << svgColour(v) << "\" stroke-width=\"" << svgStrokeWidth(v) << "\"/>\n";
 		f << "</g>\n</svg>\n";
 	});
 }
 
-void MapExport::write3DScene(const std::vector<GridVector>& vectors,
-							 const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path)
+void MapExport::write3DScene(const std::vector<GridVector>& vectors, const mrpt::maps::COccupancyGridMap2D& grid,
+							 const std::string& path)
 {
 	mrpt::opengl::COpenGLScene scene;
 	auto gridObj = mrpt::opengl::CSetOfObjects::Create();

@@ -40,8 +40,8 @@ class MapExport
 	/** mrpt::opengl::COpenGLScene (gzip-serialised, for SceneViewer3D):
 	 * the occupancy grid as a textured plane and the vectors as coloured lines
 	 * (as in the SVG) 1 cm above it. */
-	static void write3DScene(const std::vector<GridVector>& vectors,
-							 const mrpt::maps::COccupancyGridMap2D& grid, const std::string& path);
+	static void write3DScene(const std::vector<GridVector>& vectors, const mrpt::maps::COccupancyGridMap2D& grid,
+							 const std::string& path);
 };
 
 }  // namespace gridvector

@@ -72,8 +72,8 @@ std::string MemoryAccounting::summary(const MemoryReport& r)
 				  "Table 1: n_g = %zu, n_v = %zu, n_g/n_v = %.2f (%.0f cm cells)\n"
 				  "with the grid width: %zu cells, n_g/cells = %.2f\n"
 				  "bytes: occupancy grid %zu (%zu B/cell), grid vector map %zu, ratio %.2f\n",
-				  r.spaceSize, r.vectorCount, r.vectorLength, r.n_g, r.n_v, r.ratio, r.resolution * 100,
-				  r.cells, r.ratioCells, r.bytesGrid, r.bytesPerGridCell, r.bytesGridVector, r.ratioBytes);
+				  r.spaceSize, r.vectorCount, r.vectorLength, r.n_g, r.n_v, r.ratio, r.resolution * 100, r.cells,
+				  r.ratioCells, r.bytesGrid, r.bytesPerGridCell, r.bytesGridVector, r.ratioBytes);
 	return buf;
 }
 

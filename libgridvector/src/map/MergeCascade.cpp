@@ -24,8 +24,10 @@ MergeCascadeStats mergeCascade(const VectorMerger& merger, GridVector& v, const 
 		const std::vector<size_t> taken = merger.mergeGreedy(v, cand, merged);
 		std::vector<MergeCandidate> absorbed;
 		for (size_t k = 0, j = 0; k < corr.size(); ++k)
-			if (j < taken.size() && taken[j] == k) absorbed.push_back(corr[k]), ++j;
-			else refused.push_back(corr[k].key);
+			if (j < taken.size() && taken[j] == k)
+				absorbed.push_back(corr[k]), ++j;
+			else
+				refused.push_back(corr[k].key);
 		st.refused += corr.size() - absorbed.size();
 		if (absorbed.empty()) break;
 		++st.merges;

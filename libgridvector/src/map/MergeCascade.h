@@ -45,8 +45,8 @@ constexpr int kMergeCascadeRounds = 8;
 /** Algorithm 2 with every correspondent the guard allows (VectorMerger::mergeGreedy),
  * repeated with the merged vector while it has correspondents in the pool: a merge
  * moves and lengthens the vector, so it may now correspond to vectors the first one
- * did not. At most `maxMerges` merges: a bound on the work of one insertion. A correspondent the guard refused is not offered again. `v` becomes the
- * last merge (unchanged if nothing merged; a merge has id 0, the caller numbers it). */
+ * did not. At most `maxMerges` merges: a bound on the work of one insertion. A correspondent the guard refused is not
+ * offered again. `v` becomes the last merge (unchanged if nothing merged; a merge has id 0, the caller numbers it). */
 MergeCascadeStats mergeCascade(const VectorMerger& merger, GridVector& v, const MergePool& pool,
 							   int maxMerges = kMergeCascadeRounds);
 

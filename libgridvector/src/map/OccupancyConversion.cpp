@@ -12,8 +12,7 @@ namespace gridvector
 using mrpt::math::TPoint2D;
 
 // Eq. 6-7 at a point.
-std::pair<double, double> OccupancyConversion::countsAt(const std::vector<GridVector>& vectors,
-														 const TPoint2D& p)
+std::pair<double, double> OccupancyConversion::countsAt(const std::vector<GridVector>& vectors, const TPoint2D& p)
 {
 	double o = 0, v = 0;
 	for (const GridVector& g : vectors)
@@ -28,7 +27,7 @@ std::pair<double, double> OccupancyConversion::countsAt(const std::vector<GridVe
 
 // Eq. 6 at one point (Eq. 7 selects the cells containing it).
 double OccupancyConversion::occupancyAt(const std::vector<GridVector>& vectors, const TPoint2D& p,
-									   const GridOptions& grid)
+										const GridOptions& grid)
 {
 	const auto [o, v] = countsAt(vectors, p);
 	return v > 0 ? o / v : priorRatio(grid);
@@ -39,8 +38,8 @@ double OccupancyConversion::priorRatio(const GridOptions& grid)
 	return double(float(grid.priorOccupy)) / double(float(grid.priorVisit));
 }
 
-bool OccupancyConversion::bounds(const std::vector<GridVector>& vectors, double& xmin, double& ymin,
-								 double& xmax, double& ymax)
+bool OccupancyConversion::bounds(const std::vector<GridVector>& vectors, double& xmin, double& ymin, double& xmax,
+								 double& ymax)
 {
 	xmin = ymin = 1e300;
 	xmax = ymax = -1e300;
@@ -81,10 +80,14 @@ struct SampleRaster
 	long nx, ny;
 	std::vector<float> occ, visit;
 	SampleRaster(const OccupancyRaster& R, int s)
-		: xMin(R.xMin), yMin(R.yMin), step(R.resolution / s), nx(long(R.nx) * s), ny(long(R.ny) * s),
-		  occ(size_t(nx * ny), 0.f), visit(size_t(nx * ny), 0.f)
-	{
-	}
+		: xMin(R.xMin),
+		  yMin(R.yMin),
+		  step(R.resolution / s),
+		  nx(long(R.nx) * s),
+		  ny(long(R.ny) * s),
+		  occ(size_t(nx * ny), 0.f),
+		  visit(size_t(nx * ny), 0.f)
+	{}
 	size_t index(long fx, long fy) const { return size_t(fy * nx + fx); }
 };
 
@@ -146,9 +149,9 @@ void pool(const SampleRaster& S, int s, bool maxPooling, double prior, Occupancy
 }  // namespace
 
 // Eq. 6 at the sample points of every output cell, pooled per cell.
-OccupancyRaster OccupancyConversion::rasterise(const std::vector<GridVector>& vectors, double xMin,
-											   double yMin, double res, int nx, int ny, int samplesPerAxis,
-											   bool maxPooling, const GridOptions& grid)
+OccupancyRaster OccupancyConversion::rasterise(const std::vector<GridVector>& vectors, double xMin, double yMin,
+											   double res, int nx, int ny, int samplesPerAxis, bool maxPooling,
+											   const GridOptions& grid)
 {
 	OccupancyRaster R;
 	R.xMin = xMin, R.yMin = yMin, R.resolution = res;
@@ -201,19 +204,19 @@ void OccupancyConversion::fill(const OccupancyRaster& R, mrpt::maps::COccupancyG
 			if (R.known(ix, iy)) grid.setCell(ix, iy, float(1.0 - R.probability(ix, iy)));  // MRPT stores p(free)
 }
 
-void OccupancyConversion::fill(const std::vector<GridVector>& vectors,
-							   mrpt::maps::COccupancyGridMap2D& grid, int samplesPerAxis, bool maxPooling,
-							   const GridOptions& gridOptions)
+void OccupancyConversion::fill(const std::vector<GridVector>& vectors, mrpt::maps::COccupancyGridMap2D& grid,
+							   int samplesPerAxis, bool maxPooling, const GridOptions& gridOptions)
 {
-	const OccupancyRaster R = rasterise(vectors, grid.getXMin(), grid.getYMin(), grid.getResolution(),
-										int(grid.getSizeX()), int(grid.getSizeY()), samplesPerAxis, maxPooling,
-										gridOptions);
+	const OccupancyRaster R =
+		rasterise(vectors, grid.getXMin(), grid.getYMin(), grid.getResolution(), int(grid.getSizeX()),
+				  int(grid.getSizeY()), samplesPerAxis, maxPooling, gridOptions);
 	fill(R, grid);
 }
 
 // Eq. 6: the global occupancy grid from the grid vectors.
-mrpt::maps::COccupancyGridMap2D OccupancyConversion::toOccupancyGrid(
-	const std::vector<GridVector>& vectors, const OccupancyConversionOptions& opt, const GridOptions& gridOptions)
+mrpt::maps::COccupancyGridMap2D OccupancyConversion::toOccupancyGrid(const std::vector<GridVector>& vectors,
+																	 const OccupancyConversionOptions& opt,
+																	 const GridOptions& gridOptions)
 {
 	mrpt::maps::COccupancyGridMap2D grid;
 	double x0, y0, x1, y1;

@@ -44,8 +44,7 @@ class OccupancyConversion
 {
    public:
 	/** Eq. 6 at one point: (sum n_occupy, sum n_visit) of all cells containing p (Eq. 7). */
-	static std::pair<double, double> countsAt(const std::vector<GridVector>& vectors,
-											  const mrpt::math::TPoint2D& p);
+	static std::pair<double, double> countsAt(const std::vector<GridVector>& vectors, const mrpt::math::TPoint2D& p);
 	/** Eq. 6 at one point; the prior's ratio where no vector covers it.
 	 * `grid`: the vectors' grid options (their prior, see priorRatio). */
 	static double occupancyAt(const std::vector<GridVector>& vectors, const mrpt::math::TPoint2D& p,
@@ -55,12 +54,12 @@ class OccupancyConversion
 	static double priorRatio(const GridOptions& grid);
 
 	/** Raster over the vectors' bounding box (plus margin). */
-	static OccupancyRaster rasterise(const std::vector<GridVector>& vectors,
-									 const OccupancyConversionOptions& opt = {}, const GridOptions& grid = {});
+	static OccupancyRaster rasterise(const std::vector<GridVector>& vectors, const OccupancyConversionOptions& opt = {},
+									 const GridOptions& grid = {});
 	/** Raster with a given geometry (cells of side res from (xMin, yMin)). */
-	static OccupancyRaster rasterise(const std::vector<GridVector>& vectors, double xMin, double yMin,
-									 double res, int nx, int ny, int samplesPerAxis = 0,
-									 bool maxPooling = true, const GridOptions& grid = {});
+	static OccupancyRaster rasterise(const std::vector<GridVector>& vectors, double xMin, double yMin, double res,
+									 int nx, int ny, int samplesPerAxis = 0, bool maxPooling = true,
+									 const GridOptions& grid = {});
 
 	/** Eq. 6 as an MRPT occupancy grid; unknown cells stay 0.5. Note MRPT's
 	 * convention: a cell's value is p(free) = 1 - p(occupied). */
@@ -78,8 +77,7 @@ class OccupancyConversion
 	 * the map's scale, or vectors far apart), instead of failing in an allocation. */
 	static void requireRasterSize(double width, double height, double res, int samplesPerAxis = 1);
 	/** Bounding box of all vectors' grid bands: {xmin, ymin, xmax, ymax}; false if none. */
-	static bool bounds(const std::vector<GridVector>& vectors, double& xmin, double& ymin, double& xmax,
-					   double& ymax);
+	static bool bounds(const std::vector<GridVector>& vectors, double& xmin, double& ymin, double& xmax, double& ymax);
 };
 
 }  // namespace gridvector

@@ -5,9 +5,8 @@
 
 namespace gridvector
 {
-ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor,
-								const std::vector<GridVector>& scanVectors, std::vector<GridVector>& map,
-								const VectorIndex& index, const SkipFn& limit)
+ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::vector<GridVector>& scanVectors,
+								std::vector<GridVector>& map, const VectorIndex& index, const SkipFn& limit)
 {
 	std::vector<Segment> segs;
 	segs.reserve(scanVectors.size());
@@ -101,9 +100,11 @@ bool ScanWipe::complete(const std::vector<WipeTriangle>& tris, const std::vector
 	{
 		if (tris[k].misses(box.minX, box.minY, box.maxX, box.maxY)) continue;  // also a degenerate one
 		if (applied[k] != WipePart::Outside)
-			mark(tris[k], m, applied[k], countBeams, [&] { return was.data(); }, spanWas);
+			mark(
+				tris[k], m, applied[k], countBeams, [&] { return was.data(); }, spanWas);
 		if (wanted[k] != WipePart::Outside)
-			mark(tris[k], m, wanted[k], countBeams, [&] { return now.data(); }, spanNow);
+			mark(
+				tris[k], m, wanted[k], countBeams, [&] { return now.data(); }, spanNow);
 	}
 	bool any = false;
 	size_t hits = 0, visitsGone = 0, visits = 0;
@@ -156,7 +157,8 @@ ScanWipe::Stats ScanWipe::apply(const mrpt::math::TPoint2D& sensor, const std::v
 			const WipePart cap = limit ? limit(seg, slot) : WipePart::Hit;
 			if (cap == WipePart::Outside) continue;
 			const GridVector& m = map[slot];
-			mark(tri, m, cap, beams_, [&] { return marksOf(slot, m.cells().size()); }, span_[slot]);
+			mark(
+				tri, m, cap, beams_, [&] { return marksOf(slot, m.cells().size()); }, span_[slot]);
 		}
 	}
 	for (uint32_t slot : touched_)

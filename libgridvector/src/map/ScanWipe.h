@@ -96,8 +96,8 @@ class ScanWipe
 	 * (row-major, as m.cells()) and widens `span`. `marks()` returns the
 	 * vector's marks; it is called when the triangle first reaches a cell. */
 	template <class GetMarks>
-	static void mark(const WipeTriangle& tri, const GridVector& m, WipePart cap, bool countBeams,
-					 GetMarks&& marks, Span& span);
+	static void mark(const WipeTriangle& tri, const GridVector& m, WipePart cap, bool countBeams, GetMarks&& marks,
+					 Span& span);
 	/** Eq. 8 with one scan's marks on `cells` (those in span), counted into
 	 * st; the marks are zeroed for the next scan. True if any cell changed. */
 	static bool add(Mark* marks, const Span& span, std::vector<GridCell>& cells, bool countBeams, Stats& st);

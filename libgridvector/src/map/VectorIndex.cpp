@@ -38,7 +38,8 @@ void VectorIndex::clear()
 
 bool VectorIndex::wide(const Box2D& b) const
 {
-	if (!(std::isfinite(b.minX) && std::isfinite(b.minY) && std::isfinite(b.maxX) && std::isfinite(b.maxY))) return true;
+	if (!(std::isfinite(b.minX) && std::isfinite(b.minY) && std::isfinite(b.maxX) && std::isfinite(b.maxY)))
+		return true;
 	const double nx = std::floor(b.maxX / cell_) - std::floor(b.minX / cell_) + 1;
 	const double ny = std::floor(b.maxY / cell_) - std::floor(b.minY / cell_) + 1;
 	return nx * ny > kMaxBuckets;
@@ -64,8 +65,10 @@ void VectorIndex::insert(uint32_t slot, const Box2D& box)
 	boxes_[slot] = box;
 	present_[slot] = 1;
 	++live_;
-	if (wide(box)) wide_.push_back(slot);
-	else forBuckets(box, [&](uint64_t k) { buckets_[k].push_back(slot); });
+	if (wide(box))
+		wide_.push_back(slot);
+	else
+		forBuckets(box, [&](uint64_t k) { buckets_[k].push_back(slot); });
 }
 
 void VectorIndex::remove(uint32_t slot)

@@ -23,10 +23,7 @@ struct SegFrame
 		u = dx * d.x + dy * d.y;
 		w = dx * n.x + dy * n.y;
 	}
-	TPoint2D toGlobal(double u, double w) const
-	{
-		return {o.x + u * d.x + w * n.x, o.y + u * d.y + w * n.y};
-	}
+	TPoint2D toGlobal(double u, double w) const { return {o.x + u * d.x + w * n.x, o.y + u * d.y + w * n.y}; }
 };
 
 /** Cells of a grid laid in a SegFrame: column k covers u in
@@ -37,14 +34,8 @@ struct Lattice
 	double res = 0.1, uLo = 0;
 	int rowMin = 0, rows = 1, cols = 1;
 
-	int rowOf(double w) const
-	{
-		return std::clamp(int(std::lround(w / res)) - rowMin, 0, rows - 1);
-	}
-	int colOf(double u) const
-	{
-		return std::clamp(int(std::floor((u - uLo) / res)), 0, cols - 1);
-	}
+	int rowOf(double w) const { return std::clamp(int(std::lround(w / res)) - rowMin, 0, rows - 1); }
+	int colOf(double u) const { return std::clamp(int(std::floor((u - uLo) / res)), 0, cols - 1); }
 	/** Counts of a cell of width res centred at (u, w): whole to the row
 	 * containing w, split along u between the (at most two) columns its
 	 * extent overlaps; outside the lattice they go to the border. */
@@ -238,8 +229,7 @@ bool onReferenceLattice(const GridVector& ref, const TPoint2D& s, const TPoint2D
 
 /** Every part's counts and points moved into `out`, whose lattice is `lat`
  * (`same`: a part already on that lattice, copied cell by cell). */
-void resample(const std::vector<const GridVector*>& parts, const Lattice& lat, const GridVector* same,
-			  GridVector& out)
+void resample(const std::vector<const GridVector*>& parts, const Lattice& lat, const GridVector* same, GridVector& out)
 {
 	const double res = lat.res;
 	const int h = out.halfWidth();
@@ -278,8 +268,7 @@ void resample(const std::vector<const GridVector*>& parts, const Lattice& lat, c
 
 VectorMerger::VectorMerger(const GridVectorConfig& cfg, double regridTolerance)
 	: cfg_(cfg), regridTolerance_(regridTolerance)
-{
-}
+{}
 
 // Algorithm 2 on two grid vectors.
 GridVector VectorMerger::merge(const GridVector& a, const GridVector& b) const
@@ -359,8 +348,8 @@ std::vector<size_t> VectorMerger::mergeGreedy(const GridVector& base, const std:
 // Algorithm 2, lines 19-20, after the temporary grid (lines 1-11) and the fit (lines 12-18).
 namespace
 {
-GridVector mergeFitted(const GridVectorConfig& cfg, double regridTolerance, const std::vector<const GridVector*>& parts, const TempGrid& temp,
-					   const Line2D& line)
+GridVector mergeFitted(const GridVectorConfig& cfg, double regridTolerance, const std::vector<const GridVector*>& parts,
+					   const TempGrid& temp, const Line2D& line)
 {
 	const GridVector& ref = referenceOf(parts);
 
@@ -386,8 +375,7 @@ GridVector mergeFitted(const GridVectorConfig& cfg, double regridTolerance, cons
 	go.resolution = ref.resolution();
 	go.halfWidth = maxHalfWidth(parts);
 	double refLen = 0;
-	const bool keep = go.halfWidth == ref.halfWidth() &&
-					  onReferenceLattice(ref, s, e, regridTolerance, refLen) &&
+	const bool keep = go.halfWidth == ref.halfWidth() && onReferenceLattice(ref, s, e, regridTolerance, refLen) &&
 					  ref.cols() <= columnsFor(refLen, go.resolution) + 1;
 	if (keep)  // the same grid up to the tolerance: the reference's start and axis
 	{
@@ -404,8 +392,7 @@ GridVector mergeFitted(const GridVectorConfig& cfg, double regridTolerance, cons
 	for (const GridVector* p : parts)
 		if (!keep || p != &ref)
 			forCellsIn(*p, lat, [&](int, int, const GridCell&, double u, double) { uMax = std::max(uMax, u); });
-	const int needCols = std::min(int(std::ceil((uMax + 0.5 * go.resolution) / go.resolution - 1e-6)),
-								  out.cols() + 1);
+	const int needCols = std::min(int(std::ceil((uMax + 0.5 * go.resolution) / go.resolution - 1e-6)), out.cols() + 1);
 	if (needCols > out.cols()) out.setGeometry(s, e, needCols);
 	for (auto& c : out.cells()) c = GridCell{0.f, 0.f, 0.f, 0.f, 0.f};
 	lat.res = go.resolution;

@@ -20,8 +20,7 @@ std::vector<WipeTriangle> trianglesOf(const std::vector<mrpt::math::TPoint2D>& s
 		for (size_t i = first[t]; i < first[t + 1]; ++i)
 		{
 			const ScanWipe::Segment v = ScanWipe::segmentOf(map[i]);
-			const double density =
-				countBeams ? WipeTriangle::beamDensity(sensors[t], v.start, v.end, v.points) : 0.0;
+			const double density = countBeams ? WipeTriangle::beamDensity(sensors[t], v.start, v.end, v.points) : 0.0;
 			tris.emplace_back(sensors[t], v.start, v.end, hitBand, density);
 		}
 	return tris;
@@ -29,8 +28,8 @@ std::vector<WipeTriangle> trianglesOf(const std::vector<mrpt::math::TPoint2D>& s
 }  // namespace
 
 // Eq. 8, all scans: each map vector m_{i,p} takes the triangles of every scan q != p, q ascending.
-ScanWipe::Stats WipeProduct::apply(const std::vector<mrpt::math::TPoint2D>& sensors,
-								   const std::vector<size_t>& first, std::vector<GridVector>& map) const
+ScanWipe::Stats WipeProduct::apply(const std::vector<mrpt::math::TPoint2D>& sensors, const std::vector<size_t>& first,
+								   std::vector<GridVector>& map) const
 {
 	if (first.size() != sensors.size() + 1 || first.back() != map.size())
 		throw std::invalid_argument("WipeProduct: scan ranges do not cover the map");
@@ -74,7 +73,8 @@ ScanWipe::Stats WipeProduct::apply(const std::vector<mrpt::math::TPoint2D>& sens
 			if (marks.size() < m.cells().size()) marks.resize(m.cells().size());  // zeroed again by add()
 			ScanWipe::Span span;
 			for (size_t k = a; k < b; ++k)
-				ScanWipe::mark(tris[cand[k]], m, WipePart::Hit, beams_, [&] { return marks.data(); }, span);
+				ScanWipe::mark(
+					tris[cand[k]], m, WipePart::Hit, beams_, [&] { return marks.data(); }, span);
 			if (span.first < span.last) st.vectorsTouched += ScanWipe::add(marks.data(), span, m.cells(), beams_, st);
 		}
 	}

@@ -30,8 +30,7 @@ class WipeProduct
 	/** hitBand, countBeams: as ScanWipe; indexCellSize: bucket side of the triangles' spatial index [m]. */
 	WipeProduct(double hitBand, bool countBeams, double indexCellSize)
 		: hitBand_(hitBand), beams_(countBeams), cell_(indexCellSize)
-	{
-	}
+	{}
 
 	/** map: the per-scan vectors in global coordinates, those of scan t at
 	 * positions [first[t], first[t + 1]) (first.size() == sensors.size() + 1);

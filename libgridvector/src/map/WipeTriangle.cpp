@@ -9,8 +9,8 @@ namespace gridvector
 using mrpt::math::TPoint2D;
 
 // Fig. 2: the wipe triangle of v_j from the sensor at x_q.
-WipeTriangle::WipeTriangle(const TPoint2D& sensor, const TPoint2D& start, const TPoint2D& end,
-						   double hitBand, double beamsPerRadian)
+WipeTriangle::WipeTriangle(const TPoint2D& sensor, const TPoint2D& start, const TPoint2D& end, double hitBand,
+						   double beamsPerRadian)
 	: o_(sensor), beams_(beamsPerRadian)
 {
 	const double ax = start.x - sensor.x, ay = start.y - sensor.y;

@@ -56,16 +56,15 @@ class WipeTriangle
 {
    public:
 	/** beamsPerRadian: angular density of the fan's beams (0: weight 1 per cell, the paper's unit). */
-	WipeTriangle(const mrpt::math::TPoint2D& sensor, const mrpt::math::TPoint2D& start,
-				 const mrpt::math::TPoint2D& end, double hitBand, double beamsPerRadian = 0);
+	WipeTriangle(const mrpt::math::TPoint2D& sensor, const mrpt::math::TPoint2D& start, const mrpt::math::TPoint2D& end,
+				 double hitBand, double beamsPerRadian = 0);
 
 	/** Beams of the fan counted in a cell of side `res` centred at p whose grid
 	 * runs along the unit vector `axis` (1 when beamsPerRadian is 0). Part b:
 	 * the beams crossing the cell (its width across the ray over the range).
 	 * Part c: the beams ending in it, i.e. hitting the new vector's chord
 	 * through the cell (chord length x sin(incidence) over the range). */
-	double weight(const mrpt::math::TPoint2D& p, const mrpt::math::TPoint2D& axis, double res,
-				  WipePart part) const;
+	double weight(const mrpt::math::TPoint2D& p, const mrpt::math::TPoint2D& axis, double res, WipePart part) const;
 	/** Beams of the fan for a vector built from `points` endpoints seen from `sensor`. */
 	static double beamDensity(const mrpt::math::TPoint2D& sensor, const mrpt::math::TPoint2D& start,
 							  const mrpt::math::TPoint2D& end, double points);
@@ -129,8 +128,8 @@ class WipeTriangle
 	void boundingBox(const mrpt::math::TPoint2D& o, const mrpt::math::TPoint2D& s, const mrpt::math::TPoint2D& e);
 	/** Columns [k0, k1] of a grid row holding every centre in parts b and c (a superset: its bounds are
 	 * widened by 1e-9 against rounding, the cells are then tested by partOf; inline: once per row and map vector). */
-	bool rowSpan(const GridVector& m, const mrpt::math::TPoint2D& rowOrigin,
-				 const mrpt::math::TPoint2D& dir, int& k0, int& k1) const;
+	bool rowSpan(const GridVector& m, const mrpt::math::TPoint2D& rowOrigin, const mrpt::math::TPoint2D& dir, int& k0,
+				 int& k1) const;
 	/** Intersect [lo, hi] with {u : g0 + g1 u >= c}; false if it becomes empty. */
 	static bool clipLinear(double g0, double g1, double c, double& lo, double& hi);
 
@@ -158,8 +157,8 @@ inline bool WipeTriangle::clipLinear(double g0, double g1, double c, double& lo,
 	return lo <= hi;
 }
 
-inline bool WipeTriangle::rowSpan(const GridVector& m, const mrpt::math::TPoint2D& q,
-								  const mrpt::math::TPoint2D& d, int& k0, int& k1) const
+inline bool WipeTriangle::rowSpan(const GridVector& m, const mrpt::math::TPoint2D& q, const mrpt::math::TPoint2D& d,
+								  int& k0, int& k1) const
 {
 	const double res = m.resolution();
 	double a0, b0, a1, b1;

@@ -15,14 +15,15 @@ MAP_DEFINITION_REGISTER("mrpt::maps::CGridVectorMap,gridVectorMap", mrpt::maps::
 
 CGridVectorMap::TMapDefinition::TMapDefinition() = default;
 
-void CGridVectorMap::TMapDefinition::loadFromConfigFile_map_specific(
-	const mrpt::config::CConfigFileBase& source, const std::string& sectionNamePrefix)
+void CGridVectorMap::TMapDefinition::loadFromConfigFile_map_specific(const mrpt::config::CConfigFileBase& source,
+																	 const std::string& sectionNamePrefix)
 {
 	// [<prefix>_extraction], [<prefix>_grid], ... : see GridVectorConfig; [<prefix>_creationOpts]
 	// is MRPT's (TMapGenericParams, read by TMetricMapInitializer), [<prefix>_likelihoodOpts] below.
 	try
 	{
-		config.loadFromConfigFile(source, sectionNamePrefix, "CGridVectorMap config", {"creationOpts", "likelihoodOpts"});
+		config.loadFromConfigFile(source, sectionNamePrefix, "CGridVectorMap config",
+								  {"creationOpts", "likelihoodOpts"});
 		likelihoodOpts.loadFromConfigFile(source, sectionNamePrefix + "_likelihoodOpts");
 	}
 	catch (const std::exception& e)
@@ -40,8 +41,7 @@ void CGridVectorMap::TMapDefinition::dumpToTextStream_map_specific(std::ostream&
 	likelihoodOpts.dumpToTextStream(out);
 }
 
-mrpt::maps::CMetricMap* CGridVectorMap::internal_CreateFromMapDefinition(
-	const mrpt::maps::TMetricMapInitializer& _def)
+mrpt::maps::CMetricMap* CGridVectorMap::internal_CreateFromMapDefinition(const mrpt::maps::TMetricMapInitializer& _def)
 {
 	const auto& def = dynamic_cast<const CGridVectorMap::TMapDefinition&>(_def);
 	auto* obj = new CGridVectorMap(def.config);
@@ -51,13 +51,16 @@ mrpt::maps::CMetricMap* CGridVectorMap::internal_CreateFromMapDefinition(
 
 CGridVectorMap::CGridVectorMap(const gridvector::GridVectorConfig& cfg) : impl_(std::make_unique<Impl>(cfg)) {}
 CGridVectorMap::CGridVectorMap(const CGridVectorMap& o)
-	: CMetricMap(o), likelihoodOptions(o.likelihoodOptions), impl_(std::make_unique<Impl>(*o.impl_)),
+	: CMetricMap(o),
+	  likelihoodOptions(o.likelihoodOptions),
+	  impl_(std::make_unique<Impl>(*o.impl_)),
 	  insertedScans_(o.insertedScans_)
-{
-}
+{}
 // The moved-from map is left empty, with its configuration.
 CGridVectorMap::CGridVectorMap(CGridVectorMap&& o)
-	: CMetricMap(std::move(o)), likelihoodOptions(o.likelihoodOptions), impl_(std::make_unique<Impl>(o.config())),
+	: CMetricMap(std::move(o)),
+	  likelihoodOptions(o.likelihoodOptions),
+	  impl_(std::make_unique<Impl>(o.config())),
 	  insertedScans_(o.insertedScans_)
 {
 	std::swap(impl_, o.impl_);
@@ -93,7 +96,7 @@ const gridvector::GridVectorConfig& CGridVectorMap::config() const { return impl
 COccupancyGridMap2D CGridVectorMap::getAsOccupancyGrid() const
 {
 	return gridvector::OccupancyConversion::toOccupancyGrid(impl_->map.vectors(), impl_->map.config().occupancy,
-														   impl_->map.config().grid);
+															impl_->map.config().grid);
 }
 
 void CGridVectorMap::setConfig(const gridvector::GridVectorConfig& cfg)
@@ -131,20 +134,22 @@ std::string CGridVectorMap::asString() const
 	os << "CGridVectorMap: " << impl_->map.size() << " grid vectors (" << nStatic << " static, " << nDynamic
 	   << " dynamic";
 	if (nUnclassified > 0) os << ", " << nUnclassified << " not classified: no E-step has run";
-	os << "), total length " << len << " m, " << insertedScans_
-	   << " scans inserted, resolution " << impl_->map.config().grid.resolution << " m";
+	os << "), total length " << len << " m, " << insertedScans_ << " scans inserted, resolution "
+	   << impl_->map.config().grid.resolution << " m";
 	return os.str();
 }
 
-void CGridVectorMap::TLikelihoodOptions::loadFromConfigFile(
-	const mrpt::config::CConfigFileBase& source, const std::string& section)
+void CGridVectorMap::TLikelihoodOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
+															const std::string& section)
 {
 	const std::string from = "CGridVectorMap config";
 	gridvector::io::requireKnownKeys(source, section, {"sigma", "maxCorrDistance", "zRandom", "decimation"}, from);
 	using gridvector::io::readIniValue;
 	readIniValue(source, section, "sigma", sigma, from, "a number > 0", [](double v) { return v > 0; });
-	readIniValue(source, section, "maxCorrDistance", maxCorrDistance, from, "a number > 0", [](double v) { return v > 0; });
-	readIniValue(source, section, "zRandom", zRandom, from, "a number in [0,1)", [](double v) { return v >= 0 && v < 1; });
+	readIniValue(source, section, "maxCorrDistance", maxCorrDistance, from, "a number > 0",
+				 [](double v) { return v > 0; });
+	readIniValue(source, section, "zRandom", zRandom, from, "a number in [0,1)",
+				 [](double v) { return v >= 0 && v < 1; });
 	readIniValue(source, section, "decimation", decimation, from, "an integer in [1,1000000]",
 				 [](int v) { return v >= 1 && v <= 1000000; });
 }

@@ -10,16 +10,15 @@ gridvector::LocalScan CGridVectorMap::extractLocal(const mrpt::obs::CObservation
 	return impl_->extractor.extract(scan);
 }
 
-bool CGridVectorMap::internal_insertObservation(
-	const mrpt::obs::CObservation& obs, const std::optional<const mrpt::poses::CPose3D>& robotPose)
+bool CGridVectorMap::internal_insertObservation(const mrpt::obs::CObservation& obs,
+												const std::optional<const mrpt::poses::CPose3D>& robotPose)
 {
 	const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
 	if (!scan) return false;
 	gridvector::LocalScan local = impl_->extractor.extract(*scan);
 	local.scanIndex = int64_t(insertedScans_++);
-	const mrpt::math::TPose2D pose =
-		robotPose ? mrpt::math::TPose2D(robotPose->x(), robotPose->y(), robotPose->yaw())
-				  : mrpt::math::TPose2D(0, 0, 0);
+	const mrpt::math::TPose2D pose = robotPose ? mrpt::math::TPose2D(robotPose->x(), robotPose->y(), robotPose->yaw())
+											   : mrpt::math::TPose2D(0, 0, 0);
 	impl_->map.insertScan(pose, local);  // m = x (+) v, Eq. 8, Algorithm 2
 	return true;
 }

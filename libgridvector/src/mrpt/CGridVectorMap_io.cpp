@@ -61,11 +61,70 @@ void writeConfigV1(mrpt::serialization::CArchive& out, const gridvector::GridVec
 // loads; its value is not used (the map's vectors are what they were; new scans follow this version).
 const std::set<std::string>& retiredKeys()
 {
-	static const std::set<std::string> keys = {
-		"map.wipe_vectorless_beams", "estep.hysteresis", "matcher.degenerate_projection",
-		"matcher.angle_rotation_seeds", "posegraph.correlated_group_gap", "posegraph.correlated_group_rho",
-		"mstep.register_min_incidence_deg", "mstep.loop_search_candidate_spacing",
-		"doors.closed_leaf_hidden_ends", "doors.closed_leaf_to_latch"};
+	static const std::set<std::string> keys = {// the 63 keys of 5eec48d that issue 20 retired
+											   "doors.closed_leaf_hidden_ends",
+											   "doors.closed_leaf_to_latch",
+											   "doors.leaf_chain_gap",
+											   "doors.leaf_chain_max_turn_deg",
+											   "doors.max_tee_offset",
+											   "doors.min_open_deg",
+											   "doors.min_sweep_deg",
+											   "estep.hysteresis",
+											   "estep.rerun_rotation_deg",
+											   "estep.rerun_translation",
+											   "extraction.max_range_margin",
+											   "map.index_cell_size",
+											   "map.merge_cascade_rounds",
+											   "map.merge_group_rounds",
+											   "map.merge_regrid_tolerance",
+											   "map.wipe_counts_beams",
+											   "map.wipe_vectorless_beams",
+											   "matcher.angle_rotation_seeds",
+											   "matcher.convergence_rotation",
+											   "matcher.convergence_translation",
+											   "matcher.degenerate_projection",
+											   "matcher.gate_shrink",
+											   "matcher.max_iterations",
+											   "matcher.robust_scale_gate_share",
+											   "matcher.sigma_floor",
+											   "mstep.changed_rotation",
+											   "mstep.changed_translation",
+											   "mstep.consistency_chain_var_phi",
+											   "mstep.consistency_chain_var_xy",
+											   "mstep.consistency_info_phi",
+											   "mstep.consistency_info_xy",
+											   "mstep.drop_distance_factor",
+											   "mstep.drop_length_share",
+											   "mstep.loop_corner_max_gap",
+											   "mstep.loop_corner_min_angle_deg",
+											   "mstep.loop_corner_min_length",
+											   "mstep.loop_corner_turn_tolerance_deg",
+											   "mstep.loop_distinct_deg",
+											   "mstep.loop_duplicate_deg",
+											   "mstep.loop_duplicate_distance",
+											   "mstep.loop_score_gate_factor",
+											   "mstep.loop_search_candidate_spacing",
+											   "mstep.loop_search_distinct",
+											   "mstep.loop_window_min_rotation_deg",
+											   "mstep.loop_window_min_translation",
+											   "mstep.moved_gate_share",
+											   "mstep.recheck_gate_factor",
+											   "mstep.reconsider_free_steps",
+											   "mstep.register_min_incidence_deg",
+											   "mstep.searched_near_deg",
+											   "mstep.searched_near_distance",
+											   "mstep.strong_min_correspondences",
+											   "mstep.strong_min_degeneracy",
+											   "mstep.strong_min_share",
+											   "posegraph.correlated_group_gap",
+											   "posegraph.correlated_group_rho",
+											   "posegraph.graduation_iterations",
+											   "posegraph.graduation_percentile",
+											   "posegraph.graduation_tolerance",
+											   "posegraph.lm_initial_lambda",
+											   "posegraph.lm_max_lambda",
+											   "posegraph.lm_min_lambda",
+											   "posegraph.tolerance"};
 	return keys;
 }
 
@@ -145,8 +204,7 @@ void CGridVectorMap::serializeTo(mrpt::serialization::CArchive& out) const
 	for (const auto& v : impl_->map.vectors())
 	{
 		out << v.start().x << v.start().y << v.end().x << v.end().y;
-		out << int32_t(v.cols()) << int64_t(v.scanIndex) << v.timestamp << v.id << uint8_t(v.state)
-			<< v.mergedCount;
+		out << int32_t(v.cols()) << int64_t(v.scanIndex) << v.timestamp << v.id << uint8_t(v.state) << v.mergedCount;
 		out.WriteBuffer(v.cells().data(), v.cells().size() * sizeof(GridCell));
 	}
 	out << genericMapParams;
@@ -158,8 +216,7 @@ void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ve
 	if (version > 1) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
 	const gridvector::GridVectorConfig cfg = version == 0 ? readConfigV0(in) : readConfigV1(in);
 	int32_t decimation = 1;
-	in >> likelihoodOptions.sigma >> likelihoodOptions.maxCorrDistance >> likelihoodOptions.zRandom >>
-		decimation;
+	in >> likelihoodOptions.sigma >> likelihoodOptions.maxCorrDistance >> likelihoodOptions.zRandom >> decimation;
 	likelihoodOptions.decimation = decimation;
 	uint64_t scans = 0, n = 0;
 	in >> scans >> n;

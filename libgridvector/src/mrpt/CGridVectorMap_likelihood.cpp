@@ -36,8 +36,8 @@ bool CGridVectorMap::internal_canComputeObservationLikelihood(const mrpt::obs::C
 	return dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs) != nullptr && !isEmpty();
 }
 
-double CGridVectorMap::internal_computeObservationLikelihood(
-	const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const
+double CGridVectorMap::internal_computeObservationLikelihood(const mrpt::obs::CObservation& obs,
+															 const mrpt::poses::CPose3D& takenFrom) const
 {
 	const auto* scan = dynamic_cast<const mrpt::obs::CObservation2DRangeScan*>(&obs);
 	if (!scan || isEmpty()) return 0;

@@ -21,7 +21,8 @@ const CPointsMap& pointsOf(const CMetricMap* other, const char* method)
 {
 	const auto* pts = dynamic_cast<const CPointsMap*>(other);
 	if (!pts)
-		throw std::invalid_argument(std::string("CGridVectorMap::") + method + ": the other map must be a CPointsMap, not " +
+		throw std::invalid_argument(std::string("CGridVectorMap::") + method +
+									": the other map must be a CPointsMap, not " +
 									(other ? other->GetRuntimeClass()->className : "null"));
 	return *pts;
 }
@@ -66,15 +67,17 @@ void CGridVectorMap::determineMatching2D(const CMetricMap* otherMap, const mrpt:
 	const CPointsMap& other = pointsOf(otherMap, "determineMatching2D");
 	const size_t dec = params.decimation_other_map_points, off = params.offset_other_map_points;
 	if (dec == 0 || off >= dec)
-		throw std::invalid_argument("CGridVectorMap::determineMatching2D: offset_other_map_points (" + std::to_string(off) +
-									") must be below decimation_other_map_points (" + std::to_string(dec) + "), which must be > 0");
+		throw std::invalid_argument("CGridVectorMap::determineMatching2D: offset_other_map_points (" +
+									std::to_string(off) + ") must be below decimation_other_map_points (" +
+									std::to_string(dec) + "), which must be > 0");
 	if (params.onlyUniqueRobust && !params.onlyKeepTheClosest)
 		throw std::invalid_argument("CGridVectorMap::determineMatching2D: onlyUniqueRobust needs onlyKeepTheClosest");
 	const size_t n = other.size();
 	if (n <= off) return;
 	const auto table = impl_->stretches.tableFor(impl_->map);
 	const gridvector::StaticFootPoints feet(impl_->map, impl_->map.config(), table.get());
-	const auto &xs = other.getPointsBufferRef_x(), &ys = other.getPointsBufferRef_y(), &zs = other.getPointsBufferRef_z();
+	const auto &xs = other.getPointsBufferRef_x(), &ys = other.getPointsBufferRef_y(),
+			   &zs = other.getPointsBufferRef_z();
 	const double c = std::cos(otherMapPose.phi()), s = std::sin(otherMapPose.phi());
 	const TPoint2D pivot(params.angularDistPivotPoint.x, params.angularDistPivotPoint.y);
 	std::vector<FootPoint> found;
@@ -86,7 +89,8 @@ void CGridVectorMap::determineMatching2D(const CMetricMap* otherMap, const mrpt:
 		++considered;
 		const TPoint2D p(otherMapPose.x() + c * xs[i] - s * ys[i], otherMapPose.y() + s * xs[i] + c * ys[i]);
 		// MRPT's gate: grows with the distance from the pivot (the sensor) by the angular tolerance
-		const double gate = params.maxDistForCorrespondence + params.maxAngularDistForCorrespondence * std::hypot(p.x - pivot.x, p.y - pivot.y);
+		const double gate = params.maxDistForCorrespondence +
+							params.maxAngularDistForCorrespondence * std::hypot(p.x - pivot.x, p.y - pivot.y);
 		found.clear();
 		FootPoint f;
 		if (params.onlyKeepTheClosest)

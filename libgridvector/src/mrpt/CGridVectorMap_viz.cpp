@@ -37,8 +37,10 @@ void CGridVectorMap::getVisualizationInto(mrpt::opengl::CSetOfObjects& o) const
 	for (const auto& v : impl_->map.vectors())
 	{
 		mrpt::opengl::CSetOfLines* target = nullptr;
-		if (v.state == VectorState::Static) target = staticLines.get();
-		else if (v.state == VectorState::Dynamic) target = dynamicLines.get();
+		if (v.state == VectorState::Static)
+			target = staticLines.get();
+		else if (v.state == VectorState::Dynamic)
+			target = dynamicLines.get();
 		else
 			target = bins[size_t(std::clamp(int(v.pStatic() * kBins), 0, kBins - 1))].get();
 		target->appendLine(v.start().x, v.start().y, 0, v.end().x, v.end().y, 0);

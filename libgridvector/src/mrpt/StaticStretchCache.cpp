@@ -5,8 +5,7 @@ namespace gridvector
 {
 StaticStretchTable::StaticStretchTable(size_t slots, uint64_t revision)
 	: entries_(new Entry[slots]), size_(slots), revision_(revision)
-{
-}
+{}
 
 StaticStretchCache& StaticStretchCache::operator=(const StaticStretchCache&)
 {

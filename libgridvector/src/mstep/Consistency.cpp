@@ -1,6 +1,6 @@
 #include "mstep/Consistency.h"
 #include "mstep/GraphOptimisation.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <Eigen/Cholesky>
 #include <Eigen/LU>
@@ -53,8 +53,7 @@ Support supportOf(const Constraint& c, const std::map<EdgeKey, Constraint>& edge
 		if (&o == &c || o.kind == EdgeKind::Sequential || o.rejected) continue;
 		if (o.to + K < c.to || o.to > c.to + K) continue;
 		// z' predicted from z through the local chains of the current trajectory
-		const TPose2D pred = se2::compose(se2::compose(se2::relative(poses[o.from], poses[c.from]), c.z),
-										  se2::relative(poses[c.to], poses[o.to]));
+		const TPose2D pred = ((poses[c.from] - poses[o.from]) + c.z) + (poses[o.to] - poses[c.to]);
 		const Vector3d d = PoseGraph::error(TPose2D(0, 0, 0), pred, o.z);
 		const double steps = std::abs(double(o.from) - c.from) + std::abs(double(o.to) - c.to);
 		const Matrix3d chain = Vector3d(kChainVarXY, kChainVarXY, kChainVarPhi).asDiagonal() * (1.0 + steps);
@@ -83,7 +82,7 @@ void verifyOverlaps(ConstraintSet& book, const MStepOptions& opts, const Poses& 
 	}
 	for (const EdgeKey& k : drop)
 	{
-		book.fail(k, se2::relative(poses[k.first], poses[k.second]));
+		book.fail(k, poses[k.second] - poses[k.first]);
 		++rep.unverified;
 		auto r = book.replaced.find(k);
 		if (r != book.replaced.end())

@@ -13,7 +13,8 @@ struct Support
 };
 
 /** The non-sequential, unrejected edges (j', i') near both ends of `c` (within mstep.overlap_run_gap) whose cycle
- * j -> i -> i' -> j' -> j under the current trajectory closes within mstep.consistency_chi2, and those whose does not. */
+ * j -> i -> i' -> j' -> j under the current trajectory closes within mstep.consistency_chi2, and those whose does not.
+ */
 Support supportOf(const Constraint& c, const std::map<EdgeKey, Constraint>& edges, const Poses& poses,
 				  const MStepOptions& opts);
 

@@ -1,5 +1,5 @@
 #include "mstep/ConstraintSet.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <algorithm>
 #include <cmath>
@@ -96,13 +96,13 @@ void ConstraintSet::fail(const EdgeKey& key, const TPose2D& rel)
 bool ConstraintSet::retry(const EdgeKey& key, const TPose2D& rel) const
 {
 	auto f = failed_.find(key);
-	return f == failed_.end() || movedSince(f->second.rel, rel) ||
-		   f->second.sigFrom != sigs_[key.first] || f->second.sigTo != sigs_[key.second];
+	return f == failed_.end() || movedSince(f->second.rel, rel) || f->second.sigFrom != sigs_[key.first] ||
+		   f->second.sigTo != sigs_[key.second];
 }
 
 bool ConstraintSet::movedSince(const TPose2D& before, const TPose2D& now) const
 {
-	return se2::distance(before, now) > kMovedGateShare * matcher_.gateRhoFinal ||
+	return std::hypot(before.x - now.x, before.y - now.y) > kMovedGateShare * matcher_.gateRhoFinal ||
 		   std::abs(mrpt::math::wrapToPi(before.phi - now.phi)) >
 			   kMovedGateShare * matcher_.gatePsiFinalDeg * M_PI / 180;
 }

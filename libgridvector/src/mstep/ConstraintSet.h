@@ -28,7 +28,8 @@ class ConstraintSet
 	void beginStep(const Scans& scans, const std::vector<std::vector<uint64_t>>* changedChildren);
 
 	/** A constraint from a registration, stamped with both scans' signatures. */
-	Constraint make(const EdgeKey& key, EdgeKind kind, const MatchResult& r, const mrpt::math::TPose2D& checkedAt) const;
+	Constraint make(const EdgeKey& key, EdgeKind kind, const MatchResult& r,
+					const mrpt::math::TPose2D& checkedAt) const;
 	/** Eq. 25: the static children of both scans (their ids) as when the edge was registered? */
 	bool sameScans(const Constraint& c) const;
 	/** Eq. 25, Fig. 5: does a correspondence of the edge involve a vector whose children changed? */

@@ -1,5 +1,5 @@
 #include "mstep/ConstraintUpdate.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <algorithm>
 #include <cmath>
@@ -30,10 +30,10 @@ void updateConstraints(ConstraintSet& book, const PairRegistration& reg, const M
 	for (auto it = book.edges.begin(); it != book.edges.end();)
 	{
 		Constraint& c = it->second;
-		const TPose2D rel = se2::relative(poses[c.from], poses[c.to]);
+		const TPose2D rel = poses[c.to] - poses[c.from];
 		const bool nonSeq = c.kind != EdgeKind::Sequential;
 		// (a loop-search edge was accepted on its own criteria, not on the overlap length)
-		if (nonSeq && (se2::distance(poses[c.from], poses[c.to]) > far ||
+		if (nonSeq && (std::hypot(poses[c.from].x - poses[c.to].x, poses[c.from].y - poses[c.to].y) > far ||
 					   (c.kind == EdgeKind::Overlap &&
 						reg.overlapLength(c.from, c.to, scans, poses) < kDropLengthShare * opts.overlapMinLength)))
 		{
@@ -44,10 +44,9 @@ void updateConstraints(ConstraintSet& book, const PairRegistration& reg, const M
 		const bool same = book.sameScans(c);
 		// Eq. 24-25: re-register when a matched vector's children changed, else only when the
 		// correspondences changed (a rejected edge: only when the vectors of its scans changed)
-		const bool keep = !book.childrenChanged(c) &&
-						  (c.rejected ? same
-									  : (same && !book.movedSince(c.checkedAt, rel)) ||
-											!reg.correspondencesChanged(c, scans, poses));
+		const bool keep = !book.childrenChanged(c) && (c.rejected ? same
+																  : (same && !book.movedSince(c.checkedAt, rel)) ||
+																		!reg.correspondencesChanged(c, scans, poses));
 		if (keep)
 		{
 			book.confirm(c, rel);
@@ -62,10 +61,12 @@ void updateConstraints(ConstraintSet& book, const PairRegistration& reg, const M
 			continue;
 		}
 		const bool changed = fresh.correspondences != c.correspondences ||
-							 se2::distance(fresh.z, c.z) > kChangedTranslation ||
+							 std::hypot(fresh.z.x - c.z.x, fresh.z.y - c.z.y) > kChangedTranslation ||
 							 std::abs(mrpt::math::wrapToPi(fresh.z.phi - c.z.phi)) > kChangedRotation;
-		if (changed) ++rep.recomputed;
-		else fresh.rejected = c.rejected;
+		if (changed)
+			++rep.recomputed;
+		else
+			fresh.rejected = c.rejected;
 		c = std::move(fresh);
 		++it;
 	}
@@ -79,9 +80,12 @@ void summarise(const ConstraintSet& book, size_t before, MStepReport& rep)
 	{
 		if (c.rejected) continue;
 		++rep.active;
-		if (c.kind == EdgeKind::Sequential) ++rep.sequential;
-		else if (c.kind == EdgeKind::Overlap) ++rep.overlap;
-		else if (c.kind == EdgeKind::Loop) ++rep.loop;
+		if (c.kind == EdgeKind::Sequential)
+			++rep.sequential;
+		else if (c.kind == EdgeKind::Overlap)
+			++rep.overlap;
+		else if (c.kind == EdgeKind::Loop)
+			++rep.loop;
 	}
 	const size_t denom = std::max<size_t>(1, std::max(before, rep.constraints));
 	rep.changedShare = double(rep.added + rep.removed + rep.recomputed) / denom;

@@ -1,5 +1,5 @@
 #include "mstep/GraphOptimisation.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 namespace gridvector
 {
@@ -23,7 +23,7 @@ std::vector<EdgeKey> GraphOptimisation::optimise(Poses& poses, const Poses& odom
 		PoseEdge e;
 		e.from = i - 1;
 		e.to = i;
-		e.z = se2::relative(odometry[i - 1], odometry[i]);
+		e.z = odometry[i] - odometry[i - 1];
 		e.information = PoseGraph::odometryInformation(e.z, cfg_.posegraph);
 		e.kind = EdgeKind::Odometry;
 		graph_.addEdge(e);

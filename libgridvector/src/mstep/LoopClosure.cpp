@@ -1,7 +1,7 @@
 #include "mstep/LoopClosure.h"
 #include "mstep/Consistency.h"
 #include "mstep/PassFinder.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <algorithm>
 #include <cmath>
@@ -12,13 +12,13 @@ using mrpt::math::TPose2D;
 
 LoopClosure::LoopClosure(const GridVectorConfig& cfg, ConstraintSet& book, const ProgressFn& progress)
 	: cfg_(cfg), book_(book), progress_(progress), loops_(cfg.matcher, cfg.mstep)
-{
-}
+{}
 
 void LoopClosure::setOdometry(const Poses& odometry)
 {
 	path_.assign(odometry.size(), 0.0);
-	for (size_t t = 1; t < odometry.size(); ++t) path_[t] = path_[t - 1] + se2::distance(odometry[t - 1], odometry[t]);
+	for (size_t t = 1; t < odometry.size(); ++t)
+		path_[t] = path_[t - 1] + std::hypot(odometry[t - 1].x - odometry[t].x, odometry[t - 1].y - odometry[t].y);
 }
 
 // Was pose i searched against a pose j of [jlo, jhi] from (nearly) the same relative pose?
@@ -27,8 +27,8 @@ bool LoopClosure::searchedNear(uint32_t i, uint32_t jlo, uint32_t jhi, const Pos
 	for (auto it = searched_.lower_bound({jlo, 0}); it != searched_.end() && it->first.first <= jhi; ++it)
 	{
 		if (it->first.second != i) continue;
-		const TPose2D rel = se2::relative(poses[it->first.first], poses[i]);
-		if (se2::distance(it->second, rel) < kSearchedNearDistance &&
+		const TPose2D rel = poses[i] - poses[it->first.first];
+		if (std::hypot(it->second.x - rel.x, it->second.y - rel.y) < kSearchedNearDistance &&
 			std::abs(mrpt::math::wrapToPi(it->second.phi - rel.phi)) < kSearchedNearDeg * M_PI / 180)
 			return true;
 	}
@@ -76,7 +76,7 @@ MatchResult LoopClosure::searchPair(const Scans& vectors, uint32_t j, uint32_t i
 									MStepReport& rep) const
 {
 	++rep.registrations;
-	MatchResult r = loops_.search(vectors[j], vectors[i], se2::relative(poses[j], poses[i]), windowOf(j, i));
+	MatchResult r = loops_.search(vectors[j], vectors[i], poses[i] - poses[j], windowOf(j, i));
 	if (!r.ok()) ++rep.failedRegistrations;
 	return r;
 }
@@ -108,7 +108,7 @@ std::vector<EdgeKey> LoopClosure::search(const Scans& scans, const Poses& poses,
 	{
 		reportProgress(progress_, "loop search", i, scans.size());
 		const auto& passes = finder.next(i, poses, gap, K, [&](uint32_t j) {
-			return se2::distance(poses[i], poses[j]) < windowOf(j, i).translation;
+			return std::hypot(poses[i].x - poses[j].x, poses[i].y - poses[j].y) < windowOf(j, i).translation;
 		});
 		if (scans[i].empty()) continue;
 		for (const auto& p : passes)
@@ -123,13 +123,13 @@ std::vector<EdgeKey> LoopClosure::search(const Scans& scans, const Poses& poses,
 				continue;
 			}
 			const uint32_t j = p.nearest;
-			searched_[{j, i}] = se2::relative(poses[j], poses[i]);
+			searched_[{j, i}] = poses[i] - poses[j];
 			++rep.loopSearches;
 			MatchResult best = searchPair(scans, j, i, poses, rep);
 			if (!best.ok() && cfg_.mstep.loopSearchAllVectors && all_.size() == scans.size() &&
 				(relabelled(i, scans) || relabelled(j, scans)))
 				best = searchPair(all_, j, i, poses, rep);  // what the E-step made dynamic too
-			if (best.ok()) found.push_back(book_.make({j, i}, EdgeKind::Loop, best, se2::relative(poses[j], poses[i])));
+			if (best.ok()) found.push_back(book_.make({j, i}, EdgeKind::Loop, best, poses[i] - poses[j]));
 		}
 	}
 	return keep(found, added, rep);

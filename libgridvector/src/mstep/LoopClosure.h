@@ -38,8 +38,7 @@ class LoopClosure
 								const std::vector<EdgeKey>* only = nullptr);
 	/** The loop searches an unverified overlap edge deferred, for the pairs verifyOverlaps left unlinked
 	 * (it dropped the edge), their edges verified in turn. */
-	void searchDeferred(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& deferred,
-						MStepReport& rep);
+	void searchDeferred(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& deferred, MStepReport& rep);
 
 	/** Loop-search window of the pair from the odometry model along the path between them. */
 	LoopWindow windowOf(uint32_t from, uint32_t to) const;

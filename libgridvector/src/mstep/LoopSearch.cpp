@@ -25,7 +25,8 @@ constexpr double kCornerTurnToleranceDeg = 10.0;
 /** Hypotheses closer than this [m] and turned less than kDuplicateDeg are one (the matcher refines both alike). */
 constexpr double kDuplicateDistance = 0.1;
 constexpr double kDuplicateDeg = 2.0;
-/** Hypotheses are ranked by the length matched under the final matcher gates widened by this (they are not refined yet). */
+/** Hypotheses are ranked by the length matched under the final matcher gates widened by this (they are not refined
+ * yet). */
 constexpr double kScoreGateFactor = 2.0;
 /** Refined solutions further apart than this [m] or turned more than kDistinctDeg are distinct places (aliasing). */
 constexpr double kDistinctDistance = 0.3;
@@ -38,9 +39,8 @@ std::vector<size_t> longest(const std::vector<MatchSegment>& s, size_t n, double
 	std::vector<size_t> idx;
 	for (size_t k = 0; k < s.size(); ++k)
 		if (s[k].length >= minLength) idx.push_back(k);
-	std::sort(idx.begin(), idx.end(), [&](size_t a, size_t b) {
-		return s[a].length > s[b].length || (s[a].length == s[b].length && a < b);
-	});
+	std::sort(idx.begin(), idx.end(),
+			  [&](size_t a, size_t b) { return s[a].length > s[b].length || (s[a].length == s[b].length && a < b); });
 	if (idx.size() > n) idx.resize(n);
 	return idx;
 }
@@ -54,10 +54,7 @@ double toSegment(const Vector2d& p, const Vector2d& s, const Vector2d& e)
 }
 }  // namespace
 
-LoopSearch::LoopSearch(const MatcherOptions& matcher, const MStepOptions& opts)
-	: matcher_(matcher), opts_(opts)
-{
-}
+LoopSearch::LoopSearch(const MatcherOptions& matcher, const MStepOptions& opts) : matcher_(matcher), opts_(opts) {}
 
 // Corners: two long vectors at least kCornerMinAngleDeg apart whose lines meet near both.
 std::vector<LoopSearch::Corner> LoopSearch::corners(const std::vector<MatchSegment>& s) const
@@ -76,8 +73,7 @@ std::vector<LoopSearch::Corner> LoopSearch::corners(const std::vector<MatchSegme
 			const Vector2d w = v.s - u.s;
 			const double a = (w.x() * dv.y() - w.y() * dv.x()) / cross;
 			const Vector2d p = u.s + a * du;
-			if (toSegment(p, u.s, u.e) > kCornerMaxGap || toSegment(p, v.s, v.e) > kCornerMaxGap)
-				continue;
+			if (toSegment(p, u.s, u.e) > kCornerMaxGap || toSegment(p, v.s, v.e) > kCornerMaxGap) continue;
 			Corner c;
 			c.p = p;
 			c.psi1 = std::atan2(du.y(), du.x());
@@ -89,9 +85,8 @@ std::vector<LoopSearch::Corner> LoopSearch::corners(const std::vector<MatchSegme
 }
 
 // Beyond the paper (Sec. 5.1: "loop detection" is not specified): corner pairs inside the window.
-std::vector<TPose2D> LoopSearch::hypotheses(const std::vector<MatchSegment>& a,
-											const std::vector<MatchSegment>& b, const TPose2D& prior,
-											const LoopWindow& w) const
+std::vector<TPose2D> LoopSearch::hypotheses(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b,
+											const TPose2D& prior, const LoopWindow& w) const
 {
 	struct Scored
 	{
@@ -133,8 +128,7 @@ std::vector<TPose2D> LoopSearch::hypotheses(const std::vector<MatchSegment>& a,
 }
 
 // Refined solutions of the hypotheses: accepted by the matcher and inside the window.
-std::vector<MatchResult> LoopSearch::solutions(const std::vector<MatchSegment>& a,
-											   const std::vector<MatchSegment>& b,
+std::vector<MatchResult> LoopSearch::solutions(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b,
 											   const TPose2D& prior, const LoopWindow& w) const
 {
 	std::vector<MatchResult> out;
@@ -143,8 +137,7 @@ std::vector<MatchResult> LoopSearch::solutions(const std::vector<MatchSegment>& 
 		MatchResult r = matcher_.match(a, b, h);
 		if (!r.ok()) continue;
 		const TPose2D& p = r.pose;
-		if (std::hypot(p.x - prior.x, p.y - prior.y) > w.translation ||
-			std::abs(wrap(p.phi - prior.phi)) > w.rotation)
+		if (std::hypot(p.x - prior.x, p.y - prior.y) > w.translation || std::abs(wrap(p.phi - prior.phi)) > w.rotation)
 			continue;
 		out.push_back(std::move(r));
 	}
@@ -174,8 +167,7 @@ MatchResult LoopSearch::search(const std::vector<MatchSegment>& a, const std::ve
 	// a loop edge must match enough, fix the translation in both directions (no
 	// corridor slide) and be unambiguous
 	if (best.ok() && (best.matchedShare < opts_.loopSearchMinShare ||
-					  best.translationDegeneracy < matcher_.options().degenerateRatio ||
-					  ambiguous(best, results)))
+					  best.translationDegeneracy < matcher_.options().degenerateRatio || ambiguous(best, results)))
 		best.status = MatchStatus::TooFewMatches;
 	return best;
 }

@@ -34,10 +34,8 @@ class LoopSearch
 
 	/** Candidate poses of B in A inside the window around `prior`, best first
 	 * (the prior itself included), at most loop_search_hypotheses. */
-	std::vector<mrpt::math::TPose2D> hypotheses(const std::vector<MatchSegment>& a,
-												const std::vector<MatchSegment>& b,
-												const mrpt::math::TPose2D& prior,
-												const LoopWindow& w) const;
+	std::vector<mrpt::math::TPose2D> hypotheses(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b,
+												const mrpt::math::TPose2D& prior, const LoopWindow& w) const;
 
 	/** The best registration from the hypotheses: status Ok only if the matcher
 	 * accepted it, it matches loop_search_min_share of the shorter scan, fixes the

@@ -2,7 +2,7 @@
 #include "mstep/Consistency.h"
 #include "mstep/ConstraintUpdate.h"
 #include "mstep/Reregistration.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <chrono>
 #include <stdexcept>
@@ -27,8 +27,7 @@ MStep::MStep(const GridVectorConfig& cfg)
 	  overlaps_(cfg_, book_, reg_, progress_),
 	  loops_(cfg_, book_, progress_),
 	  optimiser_(cfg_)
-{
-}
+{}
 
 void MStep::setOdometry(std::vector<TPose2D> odometry)
 {
@@ -41,7 +40,8 @@ void MStep::optimise(const Scans& scans, Poses& poses, const std::vector<MovedPa
 {
 	if (!moved.empty())
 	{
-		const auto rejected = optimiser_.optimise(poses, odometry_, book_.edges, rep, false);  // without the moved pairs
+		const auto rejected =
+			optimiser_.optimise(poses, odometry_, book_.edges, rep, false);  // without the moved pairs
 		if (!reregisterMoved(overlaps_, book_, optimiser_, cfg_.mstep, odometry_, scans, poses, moved, rep))
 			optimiser_.countRejections(rejected, book_.edges);  // it was the last
 	}
@@ -49,7 +49,8 @@ void MStep::optimise(const Scans& scans, Poses& poses, const std::vector<MovedPa
 		optimiser_.optimise(poses, odometry_, book_.edges, rep);
 }
 
-// Sec. 4.2-4.3: one M-step: the changed constraints of Eq. 24 (re-)registered, Eq. 22 re-optimised if any; Fig. 11's share.
+// Sec. 4.2-4.3: one M-step: the changed constraints of Eq. 24 (re-)registered, Eq. 22 re-optimised if any; Fig. 11's
+// share.
 MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::vector<uint64_t>>* changedChildren)
 {
 	const auto t0 = std::chrono::steady_clock::now();

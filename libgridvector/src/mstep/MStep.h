@@ -54,7 +54,8 @@ class MStep
 	Eigen::Matrix3d graphInformation(const Constraint& c) const { return gridvector::graphInformation(c, cfg_.mstep); }
 
    private:
-	/** The optimisation that ends the M-step: without the moved pairs first, if any (mstep.overlap_reregister_moved). */
+	/** The optimisation that ends the M-step: without the moved pairs first, if any (mstep.overlap_reregister_moved).
+	 */
 	void optimise(const Scans& scans, Poses& poses, const std::vector<MovedPair>& moved, MStepReport& rep);
 
 	GridVectorConfig cfg_;

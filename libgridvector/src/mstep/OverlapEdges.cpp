@@ -1,6 +1,6 @@
 #include "mstep/OverlapEdges.h"
 #include "mstep/PassFinder.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,13 +15,13 @@ std::vector<uint32_t> OverlapEdges::partners(uint32_t i, uint32_t nearest, const
 											 const Scans& scans, const Poses& poses) const
 {
 	const double need = cfg_.mstep.overlapMinLength;
-	if (!book_.retry({nearest, i}, se2::relative(poses[nearest], poses[i]))) return {};  // failed, nothing changed since
+	if (!book_.retry({nearest, i}, poses[i] - poses[nearest])) return {};  // failed, nothing changed since
 	if (reg_.overlapLength(nearest, i, scans, poses) >= need) return {nearest};
 	if (!cfg_.mstep.overlapMostOverlapping) return {};
 	std::vector<std::pair<double, uint32_t>> ranked;
 	for (uint32_t j : members)
 	{
-		if (j == nearest || scans[j].empty() || !book_.retry({j, i}, se2::relative(poses[j], poses[i]))) continue;
+		if (j == nearest || scans[j].empty() || !book_.retry({j, i}, poses[i] - poses[j])) continue;
 		const double len = reg_.overlapLength(j, i, scans, poses);
 		if (len >= need) ranked.emplace_back(-len, j);
 	}
@@ -53,8 +53,9 @@ std::vector<EdgeKey> OverlapEdges::add(const Scans& scans, const Poses& poses, M
 	for (uint32_t i = 0; i < scans.size(); ++i)
 	{
 		reportProgress(progress_, "overlap registration", i, scans.size());
-		const auto& passes = finder.next(i, poses, gap, uint32_t(cfg_.mstep.overlapRunGap),
-										 [&](uint32_t j) { return se2::distance(poses[i], poses[j]) < d; });
+		const auto& passes = finder.next(i, poses, gap, uint32_t(cfg_.mstep.overlapRunGap), [&](uint32_t j) {
+			return std::hypot(poses[i].x - poses[j].x, poses[i].y - poses[j].y) < d;
+		});
 		if (scans[i].empty()) continue;
 		for (const auto& p : passes)
 		{
@@ -62,7 +63,7 @@ std::vector<EdgeKey> OverlapEdges::add(const Scans& scans, const Poses& poses, M
 			for (uint32_t from : partners(i, p.nearest, p.members, scans, poses))
 			{
 				const EdgeKey key{from, i};
-				const TPose2D rel = se2::relative(poses[from], poses[i]);
+				const TPose2D rel = poses[i] - poses[from];
 				Constraint c;
 				if (registerOverlap(key, from == p.nearest, scans, rel, c, rep))
 				{
@@ -84,7 +85,7 @@ std::vector<EdgeKey> OverlapEdges::add(const Scans& scans, const Poses& poses, M
 
 bool OverlapEdges::beyondInitialGates(const TPose2D& guess, const TPose2D& z) const
 {
-	return se2::distance(guess, z) > cfg_.matcher.gateRhoInitial ||
+	return std::hypot(guess.x - z.x, guess.y - z.y) > cfg_.matcher.gateRhoInitial ||
 		   std::abs(mrpt::math::wrapToPi(guess.phi - z.phi)) > cfg_.matcher.gatePsiInitialDeg * M_PI / 180;
 }
 

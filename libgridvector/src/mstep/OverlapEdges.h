@@ -19,8 +19,7 @@ class OverlapEdges
 	OverlapEdges(const GridVectorConfig& cfg, ConstraintSet& book, const PairRegistration& reg,
 				 const ProgressFn& progress)
 		: cfg_(cfg), book_(book), reg_(reg), progress_(progress)
-	{
-	}
+	{}
 
 	/** For each pose, an edge into every earlier pass near it that has none; returns the keys of the edges it
 	 * added. With `moved`, pairs whose registration moved beyond the matcher's initial gates go there instead. */

@@ -1,5 +1,5 @@
 #include "mstep/PairRegistration.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <algorithm>
 
@@ -16,12 +16,11 @@ constexpr double kRecheckGateFactor = 1.5;
 
 PairRegistration::PairRegistration(const GridVectorConfig& cfg, const ConstraintSet& book)
 	: cfg_(cfg), book_(book), matcher_(cfg.matcher)
-{
-}
+{}
 
 // Sec. 4.2: one constraint <j, i> of Eq. 21 by vector matching (Sohn & Kim 2008) of the two scans' static vectors.
-bool PairRegistration::registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans& scans,
-									const TPose2D& guess, Constraint& out, MStepReport& rep) const
+bool PairRegistration::registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans& scans, const TPose2D& guess,
+									Constraint& out, MStepReport& rep) const
 {
 	++rep.registrations;
 	const MatchResult r = matcher_.match(scans[from], scans[to], guess);
@@ -43,18 +42,17 @@ double PairRegistration::overlapLength(uint32_t from, uint32_t to, const Scans& 
 	g.psi = cfg_.matcher.gatePsiInitialDeg * M_PI / 180;
 	g.rho = cfg_.matcher.gateRhoInitial;
 	g.minOverlap = cfg_.matcher.minOverlap;
-	return matcher_.correspondences(scans[from], scans[to], se2::relative(poses[from], poses[to]), g, nullptr);
+	return matcher_.correspondences(scans[from], scans[to], poses[to] - poses[from], g, nullptr);
 }
 
 // Eq. 24-25 with a margin: a stored pair lost even under widened gates, or a
 // new pair inside the final gates, means the data association changed.
 bool PairRegistration::correspondencesChanged(const Constraint& c, const Scans& scans, const Poses& poses) const
 {
-	const TPose2D rel = se2::relative(poses[c.from], poses[c.to]);
+	const TPose2D rel = poses[c.to] - poses[c.from];
 	std::vector<VectorPair> wide, tight;
 	matcher_.correspondences(scans[c.from], scans[c.to], rel, matcher_.finalGates(kRecheckGateFactor), &wide);
-	if (!std::includes(wide.begin(), wide.end(), c.correspondences.begin(), c.correspondences.end()))
-		return true;
+	if (!std::includes(wide.begin(), wide.end(), c.correspondences.begin(), c.correspondences.end())) return true;
 	matcher_.correspondences(scans[c.from], scans[c.to], rel, matcher_.finalGates(), &tight);
 	return !std::includes(c.correspondences.begin(), c.correspondences.end(), tight.begin(), tight.end());
 }

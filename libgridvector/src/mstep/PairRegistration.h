@@ -15,7 +15,8 @@ class PairRegistration
 	 * mstep.overlap_min_share). */
 	bool registerPair(uint32_t from, uint32_t to, EdgeKind kind, const Scans& scans, const mrpt::math::TPose2D& guess,
 					  Constraint& out, MStepReport& rep) const;
-	/** Sec. 4.3: the corresponding static length of two scans at the estimate (how far their ranges cover each other). */
+	/** Sec. 4.3: the corresponding static length of two scans at the estimate (how far their ranges cover each other).
+	 */
 	double overlapLength(uint32_t from, uint32_t to, const Scans& scans, const Poses& poses) const;
 	/** Eq. 24-25: did this edge's vector correspondences change at the estimate? */
 	bool correspondencesChanged(const Constraint& c, const Scans& scans, const Poses& poses) const;

@@ -1,8 +1,6 @@
 // Sec. 4.3, the topology change: earlier poses near the current one, grouped into passes through the place.
 #pragma once
 
-#include "core/SE2.h"
-
 #include <mrpt/math/TPose2D.h>
 
 #include <algorithm>
@@ -52,7 +50,7 @@ class PassFinder
 			Pass p{near_[a], near_[b - 1], near_[a], {near_.begin() + long(a), near_.begin() + long(b)}};
 			// nearest in view: a scan sees what lies ahead of it, so heading counts too
 			auto view = [&](uint32_t j) {
-				return se2::distance(poses[i], poses[j]) +
+				return std::hypot(poses[i].x - poses[j].x, poses[i].y - poses[j].y) +
 					   headingWeight_ * std::abs(mrpt::math::wrapToPi(poses[i].phi - poses[j].phi));
 			};
 			for (size_t k = a; k < b; ++k)

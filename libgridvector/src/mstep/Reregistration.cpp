@@ -1,6 +1,6 @@
 #include "mstep/Reregistration.h"
 #include "mstep/Consistency.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <algorithm>
 
@@ -19,7 +19,7 @@ bool reregisterMoved(const OverlapEdges& overlaps, ConstraintSet& book, GraphOpt
 	for (const MovedPair& m : moved)
 	{
 		if (book.edges.count(m.key)) continue;  // the loop search registered the pair
-		const TPose2D rel = se2::relative(poses[m.key.first], poses[m.key.second]);
+		const TPose2D rel = poses[m.key.second] - poses[m.key.first];
 		Constraint c;
 		if (overlaps.registerOverlap(m.key, m.nearest, scans, rel, c, rep))
 		{

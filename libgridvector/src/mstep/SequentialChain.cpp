@@ -1,5 +1,5 @@
 #include "mstep/SequentialChain.h"
-#include "core/SE2.h"
+#include <mrpt/math/TPose2D.h>
 
 #include <Eigen/Cholesky>
 
@@ -33,8 +33,8 @@ void SequentialChain::chain(const Scans& scans, Poses& poses, MStepReport& rep) 
 	for (size_t i = 1; i < n; ++i)
 	{
 		reportProgress(progress_, "sequential registration", i, n);
-		const TPose2D odo = se2::relative(odometry_[i - 1], odometry_[i]);
-		const TPose2D guess0 = se2::compose(poses[i - 1], odo);
+		const TPose2D odo = odometry_[i] - odometry_[i - 1];
+		const TPose2D guess0 = poses[i - 1] + odo;
 		// information-weighted fusion of the predictions, linearised at the odometry guess
 		Matrix3d sumI = toWorld(PoseGraph::odometryInformation(odo, cfg_.posegraph), poses[i - 1].phi);
 		Vector3d sumIx = Vector3d::Zero();
@@ -43,8 +43,8 @@ void SequentialChain::chain(const Scans& scans, Poses& poses, MStepReport& rep) 
 		for (size_t j = i; j-- > lo;)
 		{
 			Constraint c;
-			if (!registerChained(uint32_t(j), uint32_t(i), scans, se2::relative(poses[j], guess), c, rep)) continue;
-			const TPose2D est = se2::compose(poses[j], c.z);
+			if (!registerChained(uint32_t(j), uint32_t(i), scans, guess - poses[j], c, rep)) continue;
+			const TPose2D est = poses[j] + c.z;
 			const Matrix3d Iw = toWorld(c.information, poses[j].phi);
 			const Vector3d d(est.x - guess0.x, est.y - guess0.y, mrpt::math::wrapToPi(est.phi - guess0.phi));
 			sumI += Iw;
@@ -65,7 +65,7 @@ bool SequentialChain::registerChained(uint32_t j, uint32_t i, const Scans& scans
 {
 	if (reg_.registerPair(j, i, EdgeKind::Sequential, scans, chained, c, rep)) return true;
 	if (!cfg_.mstep.sequentialOdometryGuess) return false;
-	const TPose2D odo = se2::relative(odometry_[j], odometry_[i]);
+	const TPose2D odo = odometry_[i] - odometry_[j];
 	return book_.movedSince(chained, odo) && reg_.registerPair(j, i, EdgeKind::Sequential, scans, odo, c, rep);
 }
 
@@ -78,7 +78,7 @@ void SequentialChain::addMissing(const Scans& scans, const Poses& poses, MStepRe
 		{
 			const EdgeKey key{uint32_t(j), uint32_t(i)};
 			if (book_.edges.count(key)) continue;
-			const TPose2D rel = se2::relative(poses[j], poses[i]);
+			const TPose2D rel = poses[i] - poses[j];
 			if (!book_.retry(key, rel)) continue;
 			Constraint c;
 			if (reg_.registerPair(key.first, key.second, EdgeKind::Sequential, scans, rel, c, rep))

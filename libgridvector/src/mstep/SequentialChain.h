@@ -13,8 +13,7 @@ class SequentialChain
 	SequentialChain(const GridVectorConfig& cfg, ConstraintSet& book, const PairRegistration& reg,
 					const Poses& odometry, const ProgressFn& progress)
 		: cfg_(cfg), book_(book), reg_(reg), odometry_(odometry), progress_(progress)
-	{
-	}
+	{}
 
 	/** First M-step: `poses` from the odometry, each scan's pose fused from its registrations against its
 	 * predecessors (information-weighted), their edges added. */

@@ -18,12 +18,16 @@ using mrpt::math::TPose2D;
 namespace
 {
 constexpr double kDeg = M_PI / 180.0;
-constexpr int kMaxIterations = 25;  // the gates reach their final values in 5 iterations; Gauss-Newton then converges in a few
-constexpr double kGateShrink = 0.7;  // the gates' factor per iteration: final (0.12 m, 6 deg) from initial (0.6 m, 20 deg) in 5
-constexpr double kSigmaFloor = 0.03;  // residual std. dev. floor [m]: a perfect fit must not claim more than the laser's noise
+constexpr int kMaxIterations =
+	25;  // the gates reach their final values in 5 iterations; Gauss-Newton then converges in a few
+constexpr double kGateShrink =
+	0.7;  // the gates' factor per iteration: final (0.12 m, 6 deg) from initial (0.6 m, 20 deg) in 5
+constexpr double kSigmaFloor =
+	0.03;  // residual std. dev. floor [m]: a perfect fit must not claim more than the laser's noise
 constexpr double kConvergenceTranslation = 1e-4;  // a step under 0.1 mm: far below the laser's noise [m]
 constexpr double kConvergenceRotation = 1e-5;  // ... and under 0.0006 deg [rad]
-constexpr double kRobustScaleGateShare = 0.5;  // Cauchy scale = half the current line-offset gate: a pair at the gate weighs 1/5
+constexpr double kRobustScaleGateShare =
+	0.5;  // Cauchy scale = half the current line-offset gate: a pair at the gate weighs 1/5
 inline double wrap(double a) { return mrpt::math::wrapToPi(a); }
 inline Vector2d leftOf(const Vector2d& d) { return {-d.y(), d.x()}; }
 }  // namespace
@@ -32,10 +36,14 @@ const char* toString(MatchStatus s)
 {
 	switch (s)
 	{
-		case MatchStatus::Ok: return "ok";
-		case MatchStatus::TooFewMatches: return "too few matches";
-		case MatchStatus::HighResidual: return "high residual";
-		case MatchStatus::Degenerate: return "degenerate";
+		case MatchStatus::Ok:
+			return "ok";
+		case MatchStatus::TooFewMatches:
+			return "too few matches";
+		case MatchStatus::HighResidual:
+			return "high residual";
+		case MatchStatus::Degenerate:
+			return "degenerate";
 	}
 	return "?";
 }
@@ -152,9 +160,8 @@ double VectorMatcher::rotationStep() const
 
 // J^T W J and J^T W r of the point-to-line residuals r = n_a . (R q + t) - n_a . s_a,
 // integrated along each clipped segment with Simpson's rule (exact: r^2 is quadratic).
-void VectorMatcher::normalEquations(const std::vector<MatchSegment>& b, const TPose2D& T,
-									double robustScale, Matrix3d& H, Vector3d& g, double& sumW,
-									double& sumWr2) const
+void VectorMatcher::normalEquations(const std::vector<MatchSegment>& b, const TPose2D& T, double robustScale,
+									Matrix3d& H, Vector3d& g, double& sumW, double& sumWr2) const
 {
 	H.setZero();
 	g.setZero();
@@ -204,9 +211,8 @@ double VectorMatcher::rotateAboutMatchedCentre(TPose2D& T) const
 }
 
 // Sec. 3.2's criteria at a fixed pose: an edge's M_cor (Eq. 25) and Sec. 4.3's overlap test.
-double VectorMatcher::correspondences(const std::vector<MatchSegment>& a,
-									  const std::vector<MatchSegment>& b, const TPose2D& pose,
-									  const MatchGates& gates, std::vector<VectorPair>* out) const
+double VectorMatcher::correspondences(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b,
+									  const TPose2D& pose, const MatchGates& gates, std::vector<VectorPair>* out) const
 {
 	prepareA(a);
 	transformB(b, pose);
@@ -233,8 +239,8 @@ double VectorMatcher::stepScale(const Vector3d& delta, const MatchGates& gates)
 }
 
 // Sec. 4.2: the registration of scan b against scan a by vector matching (Sohn & Kim 2008).
-MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a,
-								 const std::vector<MatchSegment>& b, const TPose2D& guess) const
+MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b,
+								 const TPose2D& guess) const
 {
 	MatchResult res;
 	TPose2D T = guess;

@@ -124,9 +124,8 @@ class VectorMatcher
 	void gather(const MatchGates& g) const;
 	double rotationStep() const;
 	double rotateAboutMatchedCentre(mrpt::math::TPose2D& T) const;
-	void normalEquations(const std::vector<MatchSegment>& b, const mrpt::math::TPose2D& T,
-						 double robustScale, Eigen::Matrix3d& H, Eigen::Vector3d& g,
-						 double& sumW, double& sumWr2) const;
+	void normalEquations(const std::vector<MatchSegment>& b, const mrpt::math::TPose2D& T, double robustScale,
+						 Eigen::Matrix3d& H, Eigen::Vector3d& g, double& sumW, double& sumWr2) const;
 	MatchGates gatesAt(int iteration) const;
 
 	MatcherOptions opts_;

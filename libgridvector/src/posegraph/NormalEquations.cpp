@@ -40,7 +40,7 @@ NormalEquations::NormalEquations(size_t nodes, const std::vector<std::pair<uint3
 		s.ii = s.ci >= 0 ? slots(s.ci, s.ci) : BlockSlots{-1, -1, -1};
 		s.jj = s.cj >= 0 ? slots(s.cj, s.cj) : BlockSlots{-1, -1, -1};
 		s.ij = s.ci >= 0 && s.cj >= 0 && s.ci != s.cj ? slots(std::max(s.ci, s.cj), std::min(s.ci, s.cj))
-													   : BlockSlots{-1, -1, -1};
+													  : BlockSlots{-1, -1, -1};
 		edges_.push_back(s);
 	}
 }

@@ -7,7 +7,6 @@
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPosePDFGaussianInf.h>
 
-
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -17,7 +16,8 @@ namespace gridvector
 namespace
 {
 constexpr double kGraduationPercentile = 95.0;  // a start fits when 19 of 20 registrations fit (a few outliers may not)
-constexpr int kGraduationIterations = 8;  // LM steps per graduation stage before the last: each stage only follows the kernel
+constexpr int kGraduationIterations =
+	8;  // LM steps per graduation stage before the last: each stage only follows the kernel
 constexpr double kGraduationTolerance = 1e-3;  // relative cost change ending a stage before the last
 constexpr double kTolerance = 1e-6;  // relative cost change ending the last stage and each re-optimisation
 constexpr double kLmInitialLambda = 1e-4;  // LM damping at each stage's start: nearly Gauss-Newton from a good start
@@ -33,10 +33,14 @@ const char* toString(EdgeKind k)
 {
 	switch (k)
 	{
-		case EdgeKind::Odometry: return "odometry";
-		case EdgeKind::Sequential: return "sequential";
-		case EdgeKind::Overlap: return "overlap";
-		case EdgeKind::Loop: return "loop";
+		case EdgeKind::Odometry:
+			return "odometry";
+		case EdgeKind::Sequential:
+			return "sequential";
+		case EdgeKind::Overlap:
+			return "overlap";
+		case EdgeKind::Loop:
+			return "loop";
 	}
 	return "?";
 }
@@ -125,8 +129,7 @@ double PoseGraph::updateResiduals(const std::vector<TPose2D>& x, bool robust)
 		e.chi2 = r.dot(e.information * r);
 		e.scale = 1;
 		const double phi = phiByDof[std::clamp(e.dof, 1, 3)];
-		if (robust && e.kind != EdgeKind::Odometry && phi > 0)
-			e.scale = std::min(1.0, 2 * phi / (phi + e.chi2));
+		if (robust && e.kind != EdgeKind::Odometry && phi > 0) e.scale = std::min(1.0, 2 * phi / (phi + e.chi2));
 		total += e.scale * e.scale * e.chi2;
 	}
 	return total;

@@ -77,11 +77,9 @@ class PoseGraph
 	/** A registration's information (over z = (x, y, phi), the later pose in the earlier
 	 * one's frame, as VectorMatcher gives it) in the frame of error(): its translation is
 	 * in z's frame, so the information is D^T I D with D = diag(R(z.phi), 1). */
-	static Eigen::Matrix3d errorFrameInformation(const Eigen::Matrix3d& information,
-												 const mrpt::math::TPose2D& z);
+	static Eigen::Matrix3d errorFrameInformation(const Eigen::Matrix3d& information, const mrpt::math::TPose2D& z);
 	/** Odometry edge information from the motion model of the options. */
-	static Eigen::Matrix3d odometryInformation(const mrpt::math::TPose2D& delta,
-											   const PoseGraphOptions& o);
+	static Eigen::Matrix3d odometryInformation(const mrpt::math::TPose2D& delta, const PoseGraphOptions& o);
 
 	mrpt::graphs::CNetworkOfPoses2DInf toMrpt(bool activeOnly = true) const;
 

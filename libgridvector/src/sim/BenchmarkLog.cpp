@@ -34,16 +34,18 @@ std::vector<RefScan> readFlaser(const std::string& path)
 		if (t.size() < 2) io::parseError(pos, "FLASER: no beam count");
 		const size_t n = size_t(io::parseInt(t[1], pos, "FLASER beam count", 1, 100000));
 		if (t.size() < 2 + n + 3)
-			io::parseError(pos, "FLASER: expected at least " + io::counted(2 + n + 3, "field") + ", found " + std::to_string(t.size()));
+			io::parseError(pos, "FLASER: expected at least " + io::counted(2 + n + 3, "field") + ", found " +
+									std::to_string(t.size()));
 		// mkbench.py reads the pose after the announced ranges: a wrong count would shift it silently
 		if (!io::flaserFieldCountMatches(n, t.size()))
-			io::parseError(pos, "FLASER: " + io::counted(n, "beam") + " announced: expected " + io::counted(2 + n + 9, "field") +
-									", found " + std::to_string(t.size()));
+			io::parseError(pos, "FLASER: " + io::counted(n, "beam") + " announced: expected " +
+									io::counted(2 + n + 9, "field") + ", found " + std::to_string(t.size()));
 		RefScan s;
 		for (size_t i = 0; i < n; i++)
 		{
 			if (io::parseDouble(t[2 + i], pos, "FLASER range " + std::to_string(i)) < 0)
-				io::parseError(pos, "FLASER range " + std::to_string(i) + " is " + std::string(t[2 + i]) + " (negative)");
+				io::parseError(pos,
+							   "FLASER range " + std::to_string(i) + " is " + std::string(t[2 + i]) + " (negative)");
 			s.ranges.emplace_back(t[2 + i]);
 		}
 		s.pose = {io::parseDouble(t[2 + n], pos, "FLASER x"), io::parseDouble(t[3 + n], pos, "FLASER y"),

@@ -28,6 +28,7 @@ struct BenchmarkSummary
  * OUT.ref.txt ("t x y theta" per scan), both atomically. Malformed FLASER lines
  * throw "file:line: what is wrong"; outputs that cannot be written throw
  * "OUT.log: cannot write (reason)" before `in` is read. */
-BenchmarkSummary makeBenchmarkLog(const std::string& in, const std::string& outPrefix, const BenchmarkOptions& opt = {});
+BenchmarkSummary makeBenchmarkLog(const std::string& in, const std::string& outPrefix,
+								  const BenchmarkOptions& opt = {});
 
 }  // namespace gridvector::sim

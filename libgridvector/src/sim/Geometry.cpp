@@ -43,8 +43,8 @@ double segmentDistance(const Segment& s, const Segment& t)
 	const double d1 = e.cross(t.a - s.a), d2 = e.cross(t.b - s.a);
 	const double d3 = f.cross(s.a - t.a), d4 = f.cross(s.b - t.a);
 	if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return 0;
-	return std::min({distanceToSegment(s.a, t), distanceToSegment(s.b, t), distanceToSegment(t.a, s),
-					 distanceToSegment(t.b, s)});
+	return std::min(
+		{distanceToSegment(s.a, t), distanceToSegment(s.b, t), distanceToSegment(t.a, s), distanceToSegment(t.b, s)});
 }
 
 }  // namespace gridvector::sim

@@ -11,11 +11,16 @@ char labelChar(HitKind k)
 {
 	switch (k)
 	{
-		case HitKind::Static: return 's';
-		case HitKind::Person: return 'p';
-		case HitKind::Door: return 'd';
-		case HitKind::Object: return 'o';
-		default: return '-';
+		case HitKind::Static:
+			return 's';
+		case HitKind::Person:
+			return 'p';
+		case HitKind::Door:
+			return 'd';
+		case HitKind::Object:
+			return 'o';
+		default:
+			return '-';
 	}
 }
 
@@ -23,12 +28,18 @@ HitKind labelKind(char c)
 {
 	switch (c)
 	{
-		case '-': return HitKind::None;
-		case 's': return HitKind::Static;
-		case 'p': return HitKind::Person;
-		case 'd': return HitKind::Door;
-		case 'o': return HitKind::Object;
-		default: throw std::invalid_argument(std::string("unknown beam label '") + c + "'");
+		case '-':
+			return HitKind::None;
+		case 's':
+			return HitKind::Static;
+		case 'p':
+			return HitKind::Person;
+		case 'd':
+			return HitKind::Door;
+		case 'o':
+			return HitKind::Object;
+		default:
+			throw std::invalid_argument(std::string("unknown beam label '") + c + "'");
 	}
 }
 
@@ -60,8 +71,10 @@ Hit Scene::cast(const Vec2& o, const Vec2& dir, double maxRange) const
 		if (t < h.range) h.range = t, h.kind = k, h.id = id;
 	};
 	for (size_t i = 0; i < walls_.size(); i++) consider(rayToSegment(o, dir, walls_[i]), HitKind::Static, int(i));
-	for (size_t i = 0; i < segs_.size(); i++) consider(rayToSegment(o, dir, segs_[i]), segIds_[i].first, segIds_[i].second);
-	for (size_t i = 0; i < circles_.size(); i++) consider(rayToCircle(o, dir, circles_[i]), HitKind::Person, circleIds_[i]);
+	for (size_t i = 0; i < segs_.size(); i++)
+		consider(rayToSegment(o, dir, segs_[i]), segIds_[i].first, segIds_[i].second);
+	for (size_t i = 0; i < circles_.size(); i++)
+		consider(rayToCircle(o, dir, circles_[i]), HitKind::Person, circleIds_[i]);
 	if (h.kind == HitKind::None) h.range = kNoHit;
 	return h;
 }
@@ -100,8 +113,10 @@ struct Scene::Fan
 	void arc(double a, double b, F&& test) const
 	{
 		if (a > b) std::swap(a, b);
-		if (b - a <= M_PI) wrapped(a, b, test);
-		else wrapped(b, a + 2 * M_PI, test);  // the short way round passes through angle 0
+		if (b - a <= M_PI)
+			wrapped(a, b, test);
+		else
+			wrapped(b, a + 2 * M_PI, test);  // the short way round passes through angle 0
 	}
 	void offer(int i, double t, HitKind k, int id)
 	{
@@ -110,7 +125,8 @@ struct Scene::Fan
 	}
 	void segment(const Segment& s, HitKind k, int id)
 	{
-		if ((s.a - o).norm() < 1e-9 || (s.b - o).norm() < 1e-9) return beamsIn(-1.0, 2 * M_PI, [&](int i) { offer(i, rayToSegment(o, dirs[size_t(i)], s), k, id); });
+		if ((s.a - o).norm() < 1e-9 || (s.b - o).norm() < 1e-9)
+			return beamsIn(-1.0, 2 * M_PI, [&](int i) { offer(i, rayToSegment(o, dirs[size_t(i)], s), k, id); });
 		arc(rel(s.a), rel(s.b), [&](int i) { offer(i, rayToSegment(o, dirs[size_t(i)], s), k, id); });
 	}
 	void circle(const Circle& c, int id)

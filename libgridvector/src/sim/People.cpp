@@ -52,7 +52,8 @@ void Crowd::newGoal(Person& p)
 
 bool Crowd::freeOfWalls(const Vec2& c, double r) const
 {
-	return std::all_of(walls_.begin(), walls_.end(), [&](const Segment& w) { return distanceToSegment(c, w) > r + 0.02; });
+	return std::all_of(walls_.begin(), walls_.end(),
+					   [&](const Segment& w) { return distanceToSegment(c, w) > r + 0.02; });
 }
 
 void Crowd::walk(Person& p, double dt, const Vec2& robot)
@@ -64,8 +65,10 @@ void Crowd::walk(Person& p, double dt, const Vec2& robot)
 	{
 		const Vec2 d = graph_.node(p.path[reached]) - pos;
 		const double len = d.norm();
-		if (len <= budget) pos = graph_.node(p.path[reached++]), budget -= len;
-		else pos = pos + d * (budget / len), budget = 0;
+		if (len <= budget)
+			pos = graph_.node(p.path[reached++]), budget -= len;
+		else
+			pos = pos + d * (budget / len), budget = 0;
 	}
 	const double keep = p.radius + kRobotRadius + 0.05;
 	const double now = (p.pos - robot).norm(), next = (pos - robot).norm();

@@ -7,11 +7,12 @@
 
 namespace gridvector::sim
 {
-std::vector<mrpt::math::TPose2D> followRoute(const mrpt::math::TPose2D& start, const std::vector<Vec2>& route,
-											int laps, const MotionOptions& m, size_t maxSteps)
+std::vector<mrpt::math::TPose2D> followRoute(const mrpt::math::TPose2D& start, const std::vector<Vec2>& route, int laps,
+											 const MotionOptions& m, size_t maxSteps)
 {
 	if (route.empty()) throw std::invalid_argument("empty robot route");
-	if (m.speed <= 0 || m.turnRateDeg <= 0 || m.dt <= 0) throw std::invalid_argument("speed, turn rate and dt must be > 0");
+	if (m.speed <= 0 || m.turnRateDeg <= 0 || m.dt <= 0)
+		throw std::invalid_argument("speed, turn rate and dt must be > 0");
 	const double maxTurn = m.turnRateDeg * M_PI / 180.0 * m.dt, maxMove = m.speed * m.dt;
 	std::vector<mrpt::math::TPose2D> out{start};
 	mrpt::math::TPose2D p = start;
@@ -31,7 +32,8 @@ std::vector<mrpt::math::TPose2D> followRoute(const mrpt::math::TPose2D& start, c
 		}
 		idle = 0;
 		const double heading = std::atan2(d.y, d.x), err = wrapAngle(heading - p.phi);
-		if (std::abs(err) > maxTurn) p.phi = wrapAngle(p.phi + std::copysign(maxTurn, err));  // turn on the spot
+		if (std::abs(err) > maxTurn)
+			p.phi = wrapAngle(p.phi + std::copysign(maxTurn, err));  // turn on the spot
 		else
 		{
 			p.phi = heading;

@@ -21,7 +21,7 @@ struct MotionOptions
  * `laps` times. With maxSteps > 0 the result has exactly maxSteps poses: the
  * route is repeated or cut as needed. The robot turns on the spot towards the
  * next waypoint, then drives straight to it. */
-std::vector<mrpt::math::TPose2D> followRoute(const mrpt::math::TPose2D& start, const std::vector<Vec2>& route,
-											int laps, const MotionOptions& m, size_t maxSteps = 0);
+std::vector<mrpt::math::TPose2D> followRoute(const mrpt::math::TPose2D& start, const std::vector<Vec2>& route, int laps,
+											 const MotionOptions& m, size_t maxSteps = 0);
 
 }  // namespace gridvector::sim

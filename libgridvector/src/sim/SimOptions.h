@@ -13,8 +13,7 @@ struct SimOptionError : std::invalid_argument
 {
 	SimOptionError(const std::string& key, const std::string& problem)
 		: std::invalid_argument(key + ": " + problem), key(key), problem(problem)
-	{
-	}
+	{}
 	std::string key;  //!< e.g. "turn_rate_deg"
 	std::string problem;  //!< e.g. "must be in (0, 360]"
 };

@@ -16,7 +16,8 @@ double DoorTimeline::angleAt(double t) const
 	for (const Swing& s : swings)
 	{
 		if (t < s.t0) break;
-		if (t >= s.t1) a = s.to;
+		if (t >= s.t1)
+			a = s.to;
 		else
 		{
 			const double f = (t - s.t0) / (s.t1 - s.t0);
@@ -77,7 +78,9 @@ class Simulator
 
 Simulator::Simulator(const SimOptions& opt)
 	: laser_(laserOptions(opt)),
-	  doorRng_(stream(opt.seed, 1)), peopleRng_(stream(opt.seed, 2)), laserRng_(stream(opt.seed, 3)),
+	  doorRng_(stream(opt.seed, 1)),
+	  peopleRng_(stream(opt.seed, 2)),
+	  laserRng_(stream(opt.seed, 3)),
 	  odoRng_(Random(uint64_t(opt.seed)))  // as mkbench.py: Random(seed) drives the odometry noise
 {
 	res_.options = opt;
@@ -104,7 +107,9 @@ void Simulator::makeDoorTimelines(double duration)
 	for (const DoorSpec& d : res_.world.doors)
 	{
 		DoorTimeline tl;
-		const auto openAngle = [&] { return d.closedAngle + (d.openAngle - d.closedAngle) * doorRng_.uniform(0.5, 1.0); };
+		const auto openAngle = [&] {
+			return d.closedAngle + (d.openAngle - d.closedAngle) * doorRng_.uniform(0.5, 1.0);
+		};
 		const bool startsOpen = doorRng_.chance(0.5);
 		tl.initial = startsOpen ? openAngle() : d.closedAngle;
 		std::vector<double> times(size_t(doorRng_.uniformInt(2, 4)));
@@ -166,7 +171,8 @@ void Simulator::account(const LaserReading& r, const mrpt::math::TPose2D& pose, 
 	{
 		const Hit& h = r.hits[i];
 		s.beams++;
-		if (h.kind == HitKind::None) s.noHits++;
+		if (h.kind == HitKind::None)
+			s.noHits++;
 		else if (h.kind == HitKind::Static)
 		{
 			s.staticHits++;
@@ -202,11 +208,17 @@ void Simulator::finishSeenWalls()
 		const double len = wall.length();
 		for (size_t i = 0; i < bins.size();)
 		{
-			if (!bins[i]) { i++; continue; }
+			if (!bins[i])
+			{
+				i++;
+				continue;
+			}
 			size_t end = i, gap = 0;  // extend over seen bins and short gaps
 			for (size_t j = i + 1; j < bins.size() && gap <= bridge; j++)
-				if (bins[j]) end = j, gap = 0;
-				else gap++;
+				if (bins[j])
+					end = j, gap = 0;
+				else
+					gap++;
 			const double a = std::min(len, double(i) * kSeenBin), b = std::min(len, double(end + 1) * kSeenBin);
 			if (b > a) res_.seenWalls.emplace_back(wall.at(a / len), wall.at(b / len));
 			i = end + 1;

@@ -98,13 +98,16 @@ void writeDynamic(const SimResult& r, std::ostream& os)
 		{
 			const auto& p = second ? o.second : o.first;
 			for (size_t i = 0; i < p.size(); i++)
-				os << "object " << o.name << (second ? " second " : " first ") << seg({p[i], p[(i + 1) % p.size()]}) << '\n';
+				os << "object " << o.name << (second ? " second " : " first ") << seg({p[i], p[(i + 1) % p.size()]})
+				   << '\n';
 		}
 	for (size_t i = 0; i < r.doors.size(); i++)
 		for (const auto& s : r.doors[i].swings)
-			os << "door_swing " << i << ' ' << f6(t0 + s.t0) << ' ' << f6(t0 + s.t1) << ' ' << f6(s.from) << ' ' << f6(s.to) << '\n';
+			os << "door_swing " << i << ' ' << f6(t0 + s.t0) << ' ' << f6(t0 + s.t1) << ' ' << f6(s.from) << ' '
+			   << f6(s.to) << '\n';
 	for (const auto& h : r.dynamicHits)
-		os << "hit " << kindName(h.kind) << ' ' << h.id << ' ' << f6(h.t) << ' ' << seg(h.seg) << ' ' << h.beams << '\n';
+		os << "hit " << kindName(h.kind) << ' ' << h.id << ' ' << f6(h.t) << ' ' << seg(h.seg) << ' ' << h.beams
+		   << '\n';
 }
 
 void writeInfo(const SimResult& r, std::ostream& os)
@@ -175,7 +178,8 @@ int doorId(std::string_view tok, const TextPos& pos, const Truth& t)
 
 void readDynamicLine(const Tokens& t, const TextPos& pos, Truth& out)
 {
-	if (t[0] == "object_move") return expectFields(t, 2, pos, "object_move"), void(out.objectMoveTime = io::parseDouble(t[1], pos, "t"));
+	if (t[0] == "object_move")
+		return expectFields(t, 2, pos, "object_move"), void(out.objectMoveTime = io::parseDouble(t[1], pos, "t"));
 	if (t[0] == "object")
 	{
 		expectFields(t, 7, pos, "object");
@@ -215,7 +219,8 @@ void writeSimulation(const SimResult& r, const std::string& dir)
 	write(SimFiles::odometry, [&](std::ostream& os) { writePoses(r, os, false); });
 	write(SimFiles::labels, [&](std::ostream& os) { writeLabels(r, os); });
 	write(SimFiles::walls, [&](std::ostream& os) { writeSegments(r.world.walls, "static walls and furniture", os); });
-	write(SimFiles::seenWalls, [&](std::ostream& os) { writeSegments(r.seenWalls, "static wall parts hit by static beams", os); });
+	write(SimFiles::seenWalls,
+		  [&](std::ostream& os) { writeSegments(r.seenWalls, "static wall parts hit by static beams", os); });
 	write(SimFiles::doors, [&](std::ostream& os) { writeDoors(r, os); });
 	write(SimFiles::dynamic, [&](std::ostream& os) { writeDynamic(r, os); });
 	write(SimFiles::info, [&](std::ostream& os) { writeInfo(r, os); });
@@ -235,11 +240,14 @@ std::vector<DoorTruth> readDoors(const std::string& path)
 {
 	std::vector<DoorTruth> out;
 	forEachLine(path, [&](const Tokens& t, const TextPos& pos) {
-		if (t.size() < 3) io::parseError(pos, "door: expected 'hinge_x hinge_y length ...', found " + io::counted(t.size(), "field"));
+		if (t.size() < 3)
+			io::parseError(pos, "door: expected 'hinge_x hinge_y length ...', found " + io::counted(t.size(), "field"));
 		DoorTruth d;
 		d.hinge = {io::parseDouble(t[0], pos, "hinge_x"), io::parseDouble(t[1], pos, "hinge_y")};
 		d.length = io::parseDouble(t[2], pos, "length");
-		if (t.size() >= 5) d.closedAngle = io::parseDouble(t[3], pos, "closed_angle"), d.openAngle = io::parseDouble(t[4], pos, "open_angle");
+		if (t.size() >= 5)
+			d.closedAngle = io::parseDouble(t[3], pos, "closed_angle"),
+			d.openAngle = io::parseDouble(t[4], pos, "open_angle");
 		if (t.size() >= 6) d.swings = int(io::parseInt(t[5], pos, "swings", 0, 1000000));
 		out.push_back(d);
 	});
@@ -252,7 +260,8 @@ Truth readTruth(const std::string& dir)
 	t.walls = readSegments(join(dir, SimFiles::walls));
 	t.seenWalls = readSegments(join(dir, SimFiles::seenWalls));
 	t.doors = readDoors(join(dir, SimFiles::doors));
-	forEachLine(join(dir, SimFiles::dynamic), [&](const Tokens& tok, const TextPos& pos) { readDynamicLine(tok, pos, t); });
+	forEachLine(join(dir, SimFiles::dynamic),
+				[&](const Tokens& tok, const TextPos& pos) { readDynamicLine(tok, pos, t); });
 	return t;
 }
 

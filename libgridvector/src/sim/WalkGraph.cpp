@@ -26,9 +26,11 @@ WalkGraph::WalkGraph(const World& world, double clearance) : obstacles_(world.wa
 {
 	for (const auto& o : world.objects)
 		for (const auto* poly : {&o.first, &o.second})
-			for (size_t i = 0; i < poly->size(); i++) obstacles_.emplace_back((*poly)[i], (*poly)[(i + 1) % poly->size()]);
+			for (size_t i = 0; i < poly->size(); i++)
+				obstacles_.emplace_back((*poly)[i], (*poly)[(i + 1) % poly->size()]);
 	for (const auto& d : world.doors)  // the area a door leaf sweeps
-		for (int k = 0; k <= 6; k++) obstacles_.push_back(d.leaf(d.closedAngle + (d.openAngle - d.closedAngle) * k / 6.0));
+		for (int k = 0; k <= 6; k++)
+			obstacles_.push_back(d.leaf(d.closedAngle + (d.openAngle - d.closedAngle) * k / 6.0));
 	for (const auto& z : world.walkZones)
 	{
 		const bool alongX = z.x1 - z.x0 >= z.y1 - z.y0;
@@ -38,7 +40,8 @@ WalkGraph::WalkGraph(const World& world, double clearance) : obstacles_(world.wa
 			for (double s : steps)
 			{
 				const Vec2 p = alongX ? Vec2(s, l) : Vec2(l, s);
-				const bool duplicate = std::any_of(nodes_.begin(), nodes_.end(), [&](const Vec2& q) { return (q - p).norm() < 0.4; });
+				const bool duplicate =
+					std::any_of(nodes_.begin(), nodes_.end(), [&](const Vec2& q) { return (q - p).norm() < 0.4; });
 				if (!duplicate && clear({p, p})) nodes_.push_back(p);
 			}
 	}
@@ -54,7 +57,8 @@ WalkGraph::WalkGraph(const World& world, double clearance) : obstacles_(world.wa
 
 bool WalkGraph::clear(const Segment& s) const
 {
-	return std::all_of(obstacles_.begin(), obstacles_.end(), [&](const Segment& o) { return segmentDistance(s, o) >= clearance_; });
+	return std::all_of(obstacles_.begin(), obstacles_.end(),
+					   [&](const Segment& o) { return segmentDistance(s, o) >= clearance_; });
 }
 
 std::vector<size_t> WalkGraph::shortestPath(size_t a, size_t b) const

@@ -1,7 +1,6 @@
 // graphslam-engine's decider/optimizer registry, with the grid-vector deciders added.
 #pragma once
 
-
 #include <mrpt/config/CConfigFile.h>  // MRPT 2.5's decider headers use it without including it
 #include <mrpt/graphs/CNetworkOfPoses.h>
 // before TUserOptionsChecker.h: MRPT 2.5's loop-closer header needs what these bring in
@@ -16,8 +15,7 @@ namespace gridvector::graphslam
  * CLevMarqGSO, CEmptyGSO) plus CGridVectorNRD and CGridVectorERD, listed by
  * dumpRegistrarsToConsole() and created by name like MRPT's own.
  * The constructor fills both tables. */
-struct DeciderRegistry
-	: public mrpt::graphslam::apps::TUserOptionsChecker<mrpt::graphs::CNetworkOfPoses2DInf>
+struct DeciderRegistry : public mrpt::graphslam::apps::TUserOptionsChecker<mrpt::graphs::CNetworkOfPoses2DInf>
 {
 	using graph_t = mrpt::graphs::CNetworkOfPoses2DInf;
 	using base_t = mrpt::graphslam::apps::TUserOptionsChecker<graph_t>;

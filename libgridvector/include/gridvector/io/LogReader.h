@@ -30,7 +30,11 @@ struct ScanRecord
 /** What a log file holds besides the scans kept, counted by the reader. */
 struct LogContents
 {
-	enum class Format { Carmen, Rawlog } format = Format::Carmen;
+	enum class Format
+	{
+		Carmen,
+		Rawlog
+	} format = Format::Carmen;
 	size_t odometryRecords = 0;  //!< CARMEN ODOM lines; rawlog CObservationOdometry objects
 	size_t paramLines = 0;  //!< CARMEN PARAM lines
 	size_t actionSets = 0, sensoryFrames = 0;  //!< rawlog: actions+sensory-frames format when sensoryFrames > 0

@@ -68,8 +68,7 @@ class CGridVectorMap : public CMetricMap
 		double maxCorrDistance = 0.30;  //!< beyond this a point has no correspondence [m]
 		double zRandom = 0.05;  //!< weight of the uniform "random measurement" term
 		int decimation = 2;  //!< use one beam out of this many
-		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source,
-								const std::string& section) override;
+		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
 		void dumpToTextStream(std::ostream& out) const override;
 	} likelihoodOptions;
 
@@ -138,11 +137,10 @@ class CGridVectorMap : public CMetricMap
 
    private:
 	void internal_clear() override;
-	bool internal_insertObservation(
-		const mrpt::obs::CObservation& obs,
-		const std::optional<const mrpt::poses::CPose3D>& robotPose) override;
-	double internal_computeObservationLikelihood(
-		const mrpt::obs::CObservation& obs, const mrpt::poses::CPose3D& takenFrom) const override;
+	bool internal_insertObservation(const mrpt::obs::CObservation& obs,
+									const std::optional<const mrpt::poses::CPose3D>& robotPose) override;
+	double internal_computeObservationLikelihood(const mrpt::obs::CObservation& obs,
+												 const mrpt::poses::CPose3D& takenFrom) const override;
 	bool internal_canComputeObservationLikelihood(const mrpt::obs::CObservation& obs) const override;
 
 	/** The global map, the extractor and the matching calls' static stretches (kept while the

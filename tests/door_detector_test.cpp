@@ -3,23 +3,16 @@
 
 #include <gtest/gtest.h>
 
+#include "door_vectors.h"
+
 #include <algorithm>
 #include <cmath>
 
 using namespace gridvector;
+using gvtest::D;
+using gvtest::S;
+using gvtest::vec;
 using mrpt::math::TPoint2D;
-
-namespace
-{
-GridVector vec(double x1, double y1, double x2, double y2, VectorState s)
-{
-	GridVector v(TPoint2D(x1, y1), TPoint2D(x2, y2), GridOptions{});
-	v.state = s;
-	return v;
-}
-constexpr auto S = VectorState::Static;
-constexpr auto D = VectorState::Dynamic;
-}  // namespace
 
 TEST(DoorDetector, TwoStatesOfOneLeafGiveAHinge)
 {

@@ -15,21 +15,20 @@
 
 #include <gtest/gtest.h>
 
+#include "door_vectors.h"
+
 #include <algorithm>
 #include <cmath>
 
 using namespace gridvector;
 using namespace gridvector::doors;
+using gvtest::D;
+using gvtest::S;
+using gvtest::vec;
 using mrpt::math::TPoint2D;
 
 namespace
 {
-GridVector vec(double x1, double y1, double x2, double y2, VectorState s)
-{
-	GridVector v(TPoint2D(x1, y1), TPoint2D(x2, y2), GridOptions{});
-	v.state = s;
-	return v;
-}
 /** From `fromHinge` to `fromHinge + len` along direction deg from (x, y). */
 GridVector polarVec(double x, double y, double fromHinge, double len, double deg, VectorState s)
 {
@@ -37,8 +36,6 @@ GridVector polarVec(double x, double y, double fromHinge, double len, double deg
 	return vec(x + fromHinge * c, y + fromHinge * sn, x + (fromHinge + len) * c, y + (fromHinge + len) * sn, s);
 }
 double rad(double deg) { return deg * M_PI / 180; }
-constexpr auto S = VectorState::Static;
-constexpr auto D = VectorState::Dynamic;
 
 Door doorAt(TPoint2D hinge, double length, std::vector<double> anglesDeg, size_t wall)
 {

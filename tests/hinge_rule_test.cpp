@@ -3,22 +3,19 @@
 
 #include <gtest/gtest.h>
 
+#include "door_vectors.h"
+
 #include <cmath>
 
 using namespace gridvector;
 using namespace gridvector::doors;
+using gvtest::D;
+using gvtest::S;
+using gvtest::vec;
 using mrpt::math::TPoint2D;
 
 namespace
 {
-GridVector vec(double x1, double y1, double x2, double y2, VectorState s)
-{
-	GridVector v(TPoint2D(x1, y1), TPoint2D(x2, y2), GridOptions{});
-	v.state = s;
-	return v;
-}
-constexpr auto S = VectorState::Static;
-constexpr auto D = VectorState::Dynamic;
 
 Corner corner(size_t wall, size_t leaf, TPoint2D vertex, double angle, double length, bool dynamic = true)
 {

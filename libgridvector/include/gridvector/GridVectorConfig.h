@@ -198,7 +198,6 @@ struct MatcherOptions
 /** Sec. 4.2, Eq. 21-22: pose-graph optimisation. */
 struct PoseGraphOptions
 {
-	bool useMrptOptimizer = false;
 	int maxIterations = 30;
 	double robustKernelWidth = 3.0;
 	double rejectChi2 = 50.0;
@@ -214,8 +213,6 @@ struct PoseGraphOptions
 	template <class V>
 	void visit(V&& v)
 	{
-		v("use_mrpt_optimizer", useMrptOptimizer,
-		  "MRPT's optimize_graph_spa_levmarq instead of the built-in robust Levenberg-Marquardt", Range::boolean());
 		v("max_iterations", maxIterations, "Optimiser iterations per M-step", Range::closed(1, 10000));
 		v("robust_kernel_width", robustKernelWidth, "Dynamic covariance scaling Phi of registration edges [chi2]",
 		  Range::above(0, 1e6));

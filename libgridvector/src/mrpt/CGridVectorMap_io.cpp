@@ -61,7 +61,7 @@ void writeConfigV1(mrpt::serialization::CArchive& out, const gridvector::GridVec
 // loads; its value is not used (the map's vectors are what they were; new scans follow this version).
 const std::set<std::string>& retiredKeys()
 {
-	static const std::set<std::string> keys = {// the 63 keys of 5eec48d that issue 20 retired
+	static const std::set<std::string> keys = {// the 64 keys of 5eec48d that issue 20 retired
 											   "doors.closed_leaf_hidden_ends",
 											   "doors.closed_leaf_to_latch",
 											   "doors.leaf_chain_gap",
@@ -117,6 +117,7 @@ const std::set<std::string>& retiredKeys()
 											   "mstep.strong_min_degeneracy",
 											   "mstep.strong_min_share",
 											   "posegraph.correlated_group_gap",
+											   "posegraph.use_mrpt_optimizer",
 											   "posegraph.correlated_group_rho",
 											   "posegraph.graduation_iterations",
 											   "posegraph.graduation_percentile",

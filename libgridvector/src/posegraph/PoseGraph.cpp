@@ -2,7 +2,6 @@
 #include "posegraph/PoseGraph.h"
 #include "posegraph/SparseCholesky.h"
 
-#include <mrpt/graphslam/levmarq.h>
 #include <mrpt/math/wrap2pi.h>
 #include <mrpt/poses/CPose2D.h>
 #include <mrpt/poses/CPosePDFGaussianInf.h>
@@ -145,12 +144,12 @@ size_t PoseGraph::rejectOutliers()
 	return n;
 }
 
-// Eq. 22 (robust kernel and chi2 rejection beyond the paper) by the built-in LM or MRPT's, in place of Eq. 23.
+// Eq. 22 (robust kernel and chi2 rejection beyond the paper) by Levenberg-Marquardt, in place of Eq. 23.
 OptimizeStats PoseGraph::optimize()
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	phi_ = opts_.robustKernelWidth;
-	OptimizeStats st = opts_.useMrptOptimizer ? optimizeMrpt() : optimizeGaussNewton();
+	OptimizeStats st = optimizeGaussNewton();
 	// Iterative edge rejection by chi2, then re-optimisation from the robust solution.
 	for (int round = 0; round < opts_.rejectRounds; ++round)
 	{
@@ -159,12 +158,11 @@ OptimizeStats PoseGraph::optimize()
 		if (!rej) break;
 		st.rejected += rej;
 		phi_ = opts_.robustKernelWidth;
-		const OptimizeStats again =
-			opts_.useMrptOptimizer ? optimizeMrpt() : levenbergMarquardt(opts_.maxIterations, kTolerance);
+		const OptimizeStats again = levenbergMarquardt(opts_.maxIterations, kTolerance);
 		st.iterations += again.iterations;
 		st.finalError = again.finalError;
 	}
-	updateResiduals(nodes_, !opts_.useMrptOptimizer);
+	updateResiduals(nodes_, true);
 	st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	return st;
 }
@@ -316,23 +314,6 @@ mrpt::graphs::CNetworkOfPoses2DInf PoseGraph::toMrpt(bool activeOnly) const
 		g.insertEdge(e.from, e.to, mrpt::poses::CPosePDFGaussianInf(mrpt::poses::CPose2D(e.z), inf));
 	}
 	return g;
-}
-
-// MRPT's sparse LM (no robust kernel: robustness comes from the chi2 rejection rounds).
-OptimizeStats PoseGraph::optimizeMrpt()
-{
-	OptimizeStats st;
-	if (nodes_.size() < 2) return st;
-	st.initialError = updateResiduals(nodes_, false);
-	auto g = toMrpt(true);
-	mrpt::graphslam::TResultInfoSpaLevMarq info;
-	mrpt::containers::yaml params;
-	params["max_iterations"] = opts_.maxIterations;
-	mrpt::graphslam::optimize_graph_spa_levmarq(g, info, nullptr, params);
-	for (const auto& kv : g.nodes) nodes_[kv.first] = kv.second.asTPose();
-	st.iterations = int(info.num_iters);
-	st.finalError = updateResiduals(nodes_, false);
-	return st;
 }
 
 }  // namespace gridvector

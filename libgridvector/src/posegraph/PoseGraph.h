@@ -93,7 +93,6 @@ class PoseGraph
    private:
 	OptimizeStats optimizeGaussNewton();
 	OptimizeStats levenbergMarquardt(int maxIterations, double minRelativeDecrease);
-	OptimizeStats optimizeMrpt();
 	double updateResiduals(const std::vector<mrpt::math::TPose2D>& x, bool robust);
 	size_t rejectOutliers();
 

@@ -8,10 +8,13 @@
 #include <gtest/gtest.h>
 #include <mrpt/maps/CSimplePointsMap.h>
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <thread>
 
 using namespace gridvector::io;
 namespace fs = std::filesystem;
@@ -489,4 +492,84 @@ TEST(CarmenReader, BinaryGarbageIsQuotedPrintablyInTheError)
 			EXPECT_LT(msg.size(), 160u) << msg;
 		}
 	}
+}
+
+// issue 22: every number that sizes a geometry is bounded where it is read
+TEST(CarmenReader, AbsurdParamsAndGeometryAreErrorsNamingTheLine)
+{
+	const std::string scan = flaser(180, 2.0);
+	const auto starts = [](const std::string& err, const std::string& head) {
+		return err.rfind(head, 0) == 0 ? ::testing::AssertionSuccess() : ::testing::AssertionFailure() << err;
+	};
+	EXPECT_TRUE(starts(errorOf("PARAM laser_front_laser_resolution 1e300\n" + scan),
+					   "mem.log:1: PARAM laser_front_laser_resolution is 1e300 (at most 180 deg)"));
+	EXPECT_TRUE(starts(errorOf("PARAM laser_front_laser_resolution 10\n" + scan),
+					   "mem.log:2: FLASER: 180 beams at a resolution of 10 deg span more than 360 deg"));
+	EXPECT_TRUE(starts(errorOf("PARAM laser_front_laser_fov 1e300\n" + scan), "mem.log:1: PARAM laser_front_laser_fov"));
+	EXPECT_TRUE(starts(errorOf("PARAM robot_frontlaser_side_offset -1e308\n" + scan),
+					   "mem.log:1: PARAM robot_frontlaser_side_offset is -1e308 (beyond +-10 m)"));
+	EXPECT_TRUE(starts(errorOf("PARAM robot_frontlaser_offset 1e6\n" + scan), "mem.log:1: PARAM robot_frontlaser_offset"));
+	EXPECT_TRUE(starts(errorOf("PARAM robot_front_laser_max 1e9\n" + scan),
+					   "mem.log:1: PARAM robot_front_laser_max is 1e9 (at most 1000 m)"));
+	EXPECT_TRUE(starts(errorOf(flaser(180, 2.0, "1e15 2 0.5 3 4 0.25 10.5 host 10.5")),
+					   "mem.log:1: FLASER pose x is 1e15 (beyond +-1e+07 m)"));
+	EXPECT_TRUE(starts(errorOf(flaser(180, 2.0, "0x1p3 2 0.5 3 4 0.25 10.5 host 10.5")),
+					   "mem.log:1: FLASER pose x is '0x1p3' (not a finite number)"));
+	EXPECT_TRUE(starts(errorOf("FLASER 100001 1\n"), "mem.log:1: FLASER beam count is 100001 (must be in 0..100000)"));
+	// ROBOTLASER1: its own resolution, max range and laser pose
+	const auto robotlaser = [](const std::string& res, const std::string& maxRange, const std::string& laserX) {
+		std::string s = "ROBOTLASER1 0 -1.5708 3.14159 " + res + " " + maxRange + " 0.01 0 3 1 1 1 0 " + laserX +
+						" 0 0 0 0 0 0 0 1 1 1 5.0 host 5.0\n";
+		return s;
+	};
+	EXPECT_EQ(parse(robotlaser("0.0174533", "50", "0.1")).scans.size(), 1u);
+	EXPECT_TRUE(starts(errorOf(robotlaser("1e300", "50", "0.1")), "mem.log:1: ROBOTLASER1: 3 beams at a resolution of"));
+	EXPECT_TRUE(starts(errorOf(robotlaser("0", "50", "0.1")), "mem.log:1: ROBOTLASER1: 3 beams at a resolution of 0 deg (must be > 0)"));
+	EXPECT_TRUE(starts(errorOf(robotlaser("-0.01", "50", "0.1")), "mem.log:1: ROBOTLASER1: 3 beams"));
+	EXPECT_TRUE(starts(errorOf(robotlaser("0.0174533", "1e300", "0.1")), "mem.log:1: ROBOTLASER1 max range is 1e300"));
+	EXPECT_TRUE(starts(errorOf(robotlaser("0.0174533", "50", "1e6")),
+					   "mem.log:1: ROBOTLASER1: the laser pose is 1e+06 m from the robot pose (at most 10 m)"));
+}
+
+TEST(CarmenReader, PipesAndFifosReadEveryByte)
+{
+	// a log longer than the 8 KiB a stream buffer takes: through a FIFO written by another thread
+	std::string log = kMax;
+	for (int i = 0; i < 40; i++) log += flaser(180, 2.0 + 0.01 * i);
+	const fs::path fifo = fs::temp_directory_path() / "gv_carmen_fifo.log";
+	fs::remove(fifo);
+	ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+	std::thread writer([&] {
+		std::ofstream(fifo) << log;
+	});
+	const LogData d = readCarmenLog(fifo.string());
+	writer.join();
+	EXPECT_EQ(d.scans.size(), 40u);
+	// no writer at all: an error after the wait, not a hang in open()
+	try
+	{
+		readCarmenLog(fifo.string());
+		ADD_FAILURE() << "a FIFO without a writer was read";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), fifo.string() + ": cannot read (a FIFO that no writer opened within 3 s)");
+	}
+	fs::remove(fifo);
+}
+
+TEST(CarmenReader, LineLongerThanTheLimitStopsTheRead)
+{
+	const fs::path p = fs::temp_directory_path() / "gv_carmen_longline.log";
+	std::ofstream(p) << kMax << std::string(kMaxLineBytes + 10, '1') << "\n";
+	try
+	{
+		readLog(p.string());
+		ADD_FAILURE() << "a 4 MiB line was read";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), p.string() + ":2: line longer than 4194304 bytes (the limit)");
+	}
+	fs::remove(p);
 }

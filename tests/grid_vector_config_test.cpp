@@ -280,7 +280,11 @@ TEST(GridVectorConfig, OutOfRangeValuesAreErrorsNamingFileSectionKeyValueAndWhy)
 		// every number that sizes a loop, an allocation or a geometry has an upper bound
 		{"[gridvector_mstep]\nmax_iterations = 100000\n",
 		 "my.ini: [gridvector_mstep] max_iterations = '100000' must be in [1, 1000]"},
-		{"[gridvector_grid]\nresolution = 5\n", "my.ini: [gridvector_grid] resolution = '5' must be in (0, 1]"}};
+		{"[gridvector_grid]\nresolution = 5\n", "my.ini: [gridvector_grid] resolution = '5' must be in (0, 1]"},
+		{"[gridvector_grid]\nresolution = 1e-300\n",
+		 "my.ini: [gridvector_grid] resolution = '1e-300' must be >= 0.01 (finer cells outgrow memory)"},
+		{"[gridvector_occupancy]\nresolution = 1e-3\n",
+		 "my.ini: [gridvector_occupancy] resolution = '0.001' must be >= 0.01 (finer cells outgrow memory)"}};
 	for (const auto& [text, expected] : bad) EXPECT_EQ(loadFailure(text), expected);
 	mrpt::config::CConfigFileMemory ini(bad[0].first);
 	EXPECT_THROW(GridVectorConfig().loadFromConfigFile(ini), std::invalid_argument);
@@ -442,4 +446,42 @@ TEST(GridVectorConfig, ValuesThatAreNotNumbersAreErrorsNamingSectionKeyAndValue)
 	EXPECT_DOUBLE_EQ(c.grid.resolution, 0.05);
 	EXPECT_EQ(c.grid.halfWidth, 2);
 	EXPECT_FALSE(c.map.mergeOnInsert);
+}
+
+// issue 22: a line MRPT would skip is an error; a config from /dev/zero or a FIFO is bounded
+TEST(GridVectorConfig, LineWithoutEqualsIsAnErrorNamingTheLine)
+{
+	EXPECT_EQ(fileLoadError("[gridvector_grid]\nresolution 0.05\n"),
+			  "gv_layout_test.ini:2: 'resolution 0.05' is not 'key = value' (MRPT would skip the line)");
+	EXPECT_EQ(fileLoadError("; comment\n# comment\n// comment\n\n[gridvector_grid]\n  resolution = 0.05 ; ok\n"), "");
+}
+
+TEST(GridVectorConfig, ConfigFromDevZeroStopsAtTheLineLimit)
+{
+	GridVectorConfig c;
+	try
+	{
+		c.loadFromFile("/dev/zero");
+		FAIL();
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), "/dev/zero:1: line longer than 65536 bytes (the limit)");
+	}
+	const std::string big = testing::TempDir() + "gv_big.ini";
+	{
+		std::ofstream f(big);
+		f << "[gridvector_grid]\n";
+		for (int i = 0; i < 80000; i++) f << "; a comment line that makes the file large\n";
+	}
+	try
+	{
+		c.loadFromFile(big);
+		FAIL();
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), big + ": larger than 1048576 bytes (the input limit)");
+	}
+	std::remove(big.c_str());
 }

@@ -9,6 +9,7 @@
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
 
+#include <cmath>
 #include <fstream>
 #include <iterator>
 
@@ -322,5 +323,63 @@ TEST(GvmapFormat, LoadFromFileFailureLeavesTheMapAsItWas)
 	std::ofstream(path) << "not a map";
 	EXPECT_THROW(m.loadFromFile(path), std::runtime_error);
 	EXPECT_EQ(m.vectors().size(), before);
+	mrpt::system::deleteFile(path);
+}
+
+// issue 22: the stored likelihood options and cells are checked as the .ini path checks them
+TEST(GvmapFormat, StoredLikelihoodOptionsAndCellsAreValidated)
+{
+	const auto withRest = [](double sigma, int32_t decimation, float nOccupy) {
+		mrpt::io::CMemoryStream buf;
+		auto a = mrpt::serialization::archiveFrom(buf);
+		beginObject(a, 1);
+		a << uint32_t(0);
+		a << sigma << 0.3 << 0.05 << decimation;
+		a << uint64_t(5) << uint64_t(1);
+		a << 0.0 << 0.0 << 0.2 << 0.0 << int32_t(2) << int64_t(4) << 1.5 << uint64_t(9) << uint8_t(0) << uint32_t(1);
+		std::vector<gridvector::GridCell> cells(3 * 2);
+		cells[1].n_occupy = nOccupy;
+		a.WriteBuffer(cells.data(), cells.size() * sizeof(gridvector::GridCell));
+		a << mrpt::maps::TMapGenericParams();
+		endObject(a);
+		return loadError(buf);
+	};
+	EXPECT_EQ(withRest(0.07, 2, 1), "");
+	for (double sigma : {std::nan(""), 0.0, -1.0})
+		EXPECT_NE(withRest(sigma, 2, 1).find("stored likelihood option sigma"), std::string::npos) << sigma;
+	EXPECT_NE(withRest(0.07, 0, 1).find("stored likelihood option decimation = 0"), std::string::npos);
+	EXPECT_NE(withRest(0.07, 2, std::nanf("")).find("corrupt vector record 0 (a cell with a negative or non-finite count)"),
+			  std::string::npos);
+	EXPECT_NE(withRest(0.07, 2, -1).find("corrupt vector record 0"), std::string::npos);
+}
+
+TEST(GvmapFormat, LoadingChecksTheGzipCrc)
+{
+	const std::string path = mrpt::system::getTempFileName() + ".gvmap";
+	mapOfRoom().saveToFile(path);
+	std::string data;
+	{
+		std::ifstream in(path, std::ios::binary);
+		data.assign(std::istreambuf_iterator<char>(in), {});
+	}
+	const auto loadError = [&](const std::string& bytes) {
+		std::ofstream(path, std::ios::binary | std::ios::trunc).write(bytes.data(), std::streamsize(bytes.size()));
+		try
+		{
+			CGridVectorMap m;
+			m.loadFromFile(path);
+		}
+		catch (const std::exception& e)
+		{
+			return std::string(e.what());
+		}
+		return std::string();
+	};
+	EXPECT_EQ(loadError(data), "");
+	EXPECT_EQ(loadError(data.substr(0, data.size() - 8)),
+			  path + ": truncated or corrupt gzip data (CRC/length trailer mismatch)");  // the trailer cut
+	std::string crc = data;
+	crc[crc.size() - 6] ^= 0x40;  // the stored CRC-32 altered: the data no longer match it
+	EXPECT_EQ(loadError(crc), path + ": truncated or corrupt gzip data (CRC/length trailer mismatch)");
 	mrpt::system::deleteFile(path);
 }

@@ -14,7 +14,9 @@
 #include <mrpt/obs/CSensoryFrame.h>
 #include <mrpt/poses/CPose2D.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -282,4 +284,122 @@ TEST(Carmen2Rawlog, ToolWritesRawlogsMrptCanRead)
 	EXPECT_EQ(line, "gv-carmen2rawlog: /no/such.log: cannot read (No such file or directory)");
 	fs::remove(out);
 	fs::remove(log);
+}
+
+namespace
+{
+/** Three scans of 181 beams at 2 m, odometry at the origin. */
+LogData threeScans()
+{
+	LogData log;
+	for (int k = 0; k < 3; k++)
+	{
+		ScanRecord r;
+		r.timestamp = 1000 + 0.2 * k;
+		r.scan = mrpt::obs::CObservation2DRangeScan::Create();
+		r.scan->aperture = float(M_PI);
+		r.scan->maxRange = 30;
+		r.scan->resizeScan(181);
+		for (size_t i = 0; i < 181; i++) r.scan->setScanRange(i, 2.0f), r.scan->setScanRangeValidity(i, true);
+		r.scan->timestamp = mrpt::Clock::fromDouble(r.timestamp);
+		r.hasOdometry = true;
+		log.scans.push_back(r);
+	}
+	return log;
+}
+
+std::vector<char> rawlogBytes(const LogData& log, RawlogFormat format)
+{
+	const std::string p = tmp("bytes.rawlog");
+	writeRawlog(p, log, {format, false});
+	const std::vector<char> b = readFileBytes(p);
+	fs::remove(p);
+	return b;
+}
+
+std::string parseError(const std::vector<char>& bytes)
+{
+	try
+	{
+		parseRawlog(bytes, "mem.rawlog");
+	}
+	catch (const std::runtime_error& e)
+	{
+		return e.what();
+	}
+	return "no error";
+}
+
+/** Overwrites the first little-endian uint32 `from` at or after byte `after` with `to`. */
+bool patchU32(std::vector<char>& b, size_t after, uint32_t from, uint32_t to)
+{
+	for (size_t i = after; i + 4 <= b.size(); i++)
+		if (std::memcmp(&b[i], &from, 4) == 0) return std::memcpy(&b[i], &to, 4), true;
+	return false;
+}
+}  // namespace
+
+// issue 22: counts in the bytes are checked before MRPT's deserialisers size anything from them
+TEST(RawlogReader, CorruptCountsAreRejectedBeforeMrptAllocates)
+{
+	for (auto format : {RawlogFormat::Observations, RawlogFormat::SensoryFrames})
+	{
+		const std::vector<char> good = rawlogBytes(threeScans(), format);
+		ASSERT_EQ(parseRawlog(good, "mem.rawlog").scans.size(), 3u);
+		for (uint32_t n : {1u << 30, 1u << 28, 100001u})
+		{
+			std::vector<char> b = good;
+			ASSERT_TRUE(patchU32(b, 0, 181, n));
+			EXPECT_EQ(parseError(b), "mem.rawlog: entry 2: corrupt rawlog object (the scan's beam count is " +
+										 std::to_string(n) + " (at most 100000))");
+		}
+		std::vector<char> b = good;  // a count that fits the limit but not the bytes left
+		ASSERT_TRUE(patchU32(b, b.size() / 2, 181, 90000));
+		EXPECT_NE(parseError(b).find("the scan's beam count needs 450000 bytes"), std::string::npos) << parseError(b);
+	}
+	// a sensory frame announcing 2^30 observations; an action with an invalid estimation method
+	std::vector<char> sf = rawlogBytes(threeScans(), RawlogFormat::SensoryFrames);
+	const std::string frame = "CSensoryFrame";
+	const size_t at = std::string(sf.begin(), sf.end()).find(frame);
+	ASSERT_NE(at, std::string::npos);
+	std::vector<char> b = sf;
+	ASSERT_TRUE(patchU32(b, at + frame.size() + 1, 1, 1u << 30));
+	EXPECT_NE(parseError(b).find("(the sensory frame's observation count is 1073741824 (at most 10000))"),
+			  std::string::npos)
+		<< parseError(b);
+	const std::string mov = "CActionRobotMovement2D";
+	const size_t am = std::string(sf.begin(), sf.end()).find(mov);
+	ASSERT_NE(am, std::string::npos);
+	b = sf;
+	const uint32_t method = 12345;
+	std::memcpy(&b[am + mov.size() + 1], &method, 4);  // the int32 right after the version byte
+	EXPECT_NE(parseError(b).find("a robot movement's estimation method is 12345 (0 or 1)"), std::string::npos)
+		<< parseError(b);
+}
+
+TEST(RawlogReader, AbsurdScanGeometryIsAnError)
+{
+	const auto errorWith = [](auto&& edit) {
+		LogData log = threeScans();
+		edit(*log.scans[1].scan);
+		return parseError(rawlogBytes(log, RawlogFormat::Observations));
+	};
+	EXPECT_EQ(errorWith([](auto& s) { s.sensorPose.x(std::nan("")); }).rfind("mem.rawlog: entry 4: 2D scan with its sensor at (nan", 0), 0u);
+	EXPECT_EQ(errorWith([](auto& s) { s.sensorPose.y(1e15); }).rfind("mem.rawlog: entry 4: 2D scan with its sensor at", 0), 0u);
+	EXPECT_EQ(errorWith([](auto& s) { s.aperture = 1000; }), "mem.rawlog: entry 4: 2D scan with an aperture of 1000.000000 rad (at most 2 pi)");
+	EXPECT_EQ(errorWith([](auto& s) { s.maxRange = 1e9; }).rfind("mem.rawlog: entry 4: 2D scan with a max range of", 0), 0u);
+	EXPECT_EQ(errorWith([](auto& s) { s.sensorPose.x(0.3); }), "no error");
+}
+
+TEST(RawlogReader, DevZeroAndNulBytesStopAtOnce)
+{
+	try
+	{
+		readLog("/dev/zero");
+		ADD_FAILURE() << "/dev/zero read";
+	}
+	catch (const std::runtime_error& e)
+	{
+		EXPECT_EQ(std::string(e.what()), "/dev/zero: neither a CARMEN log nor an MRPT rawlog (it starts with a NUL byte)");
+	}
 }

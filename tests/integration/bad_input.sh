@@ -196,10 +196,10 @@ sed '5s/^FLASER 181/FLASER 180/' room.log > fewer.log
 expect 1 "fewer.log:5: FLASER: 180 beams announced: expected 191 fields, found 192" b10.log -- "$B/gv-bench-log" fewer.log b10 --quiet
 # a .gvmap argument that is a directory ("unknown error" before)
 expect 1 "gv-map-info: dir.rawlog: cannot read (it is a directory)" - -- "$B/gv-map-info" dir.rawlog
-# an occupancy grid too large for memory: found before the first output file, not as std::bad_alloc after four
+# an occupancy grid too fine for memory: rejected with the config, not as std::bad_alloc after four outputs
 printf '[gridvector_occupancy]\nresolution = 0.00001\n' > tinyocc.ini
-expect 1 "occupancy grid of" e10/report.json -- "$B/gv-em-slam" --input room.log --out e10 --config tinyocc.ini --quiet
-expect 1 "occupancy grid of" o10/map.gvmap -- "$B/gv-map" --input room.log --poses log --out o10 --config tinyocc.ini --quiet
+expect 1 "tinyocc.ini: [gridvector_occupancy] resolution = '1e-05' must be >= 0.01 (finer cells outgrow memory)" e10/report.json -- "$B/gv-em-slam" --input room.log --out e10 --config tinyocc.ini --quiet
+expect 1 "tinyocc.ini: [gridvector_occupancy] resolution = '1e-05' must be >= 0.01 (finer cells outgrow memory)" o10/map.gvmap -- "$B/gv-map" --input room.log --poses log --out o10 --config tinyocc.ini --quiet
 # more of the matrix, already right: plain log cut mid-line, NaN range, binary garbage, empty gzip,
 # a rawlog cut mid-object, a .gvmap of a future version, bad --max-iterations, an --out that is a file
 head -c $(( $(stat -c %s room.log) / 2 + 17 )) room.log > midline.log

@@ -1,4 +1,6 @@
 #include <gridvector/GridVectorConfig.h>
+#include "io/FileBytes.h"
+#include "io/IniKeyLines.h"
 #include "io/IniLayout.h"
 #include "io/IniValue.h"
 #include "io/TextParsing.h"
@@ -61,6 +63,8 @@ void requireKnownSections(const mrpt::config::CConfigFileBase& cfg, const std::s
 	}
 }
 
+/** Longest .ini line: a key and a number are a few dozen bytes. */
+constexpr size_t kMaxConfigLineBytes = size_t(64) << 10;
 }  // namespace
 
 void GridVectorConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string& prefix,
@@ -89,14 +93,17 @@ void GridVectorConfig::loadFromConfigFile(const mrpt::config::CConfigFileBase& c
 
 void GridVectorConfig::loadFromFile(const std::string& iniPath, const std::string& prefix)
 {
-	// read here, not by CConfigFile: it sizes the file by seeking, which fails on pipes (--config <(...))
+	// read here, not by CConfigFile: it sizes the file by seeking, which fails on pipes (--config <(...));
+	// at most kMaxConfigBytes, in lines of at most 64 KiB (a config from /dev/zero stops at once)
 	if (std::filesystem::is_directory(iniPath))
 		throw std::runtime_error(iniPath + ": cannot read config file (it is a directory)");
-	std::ifstream in(iniPath, std::ios::binary);
-	if (!in) throw std::runtime_error(iniPath + ": cannot open config file");
-	const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-	if (in.bad()) throw std::runtime_error(iniPath + ": cannot read config file (read error)");
+	io::ReadLimits limits;
+	limits.maxBytes = io::kMaxConfigBytes;
+	limits.onHead = [](std::string_view) { return kMaxConfigLineBytes; };
+	const std::vector<char> bytes = io::readFileBytes(iniPath, nullptr, limits);
+	const std::string text(bytes.begin(), bytes.end());
 	io::requireIniLayout(text, iniPath);
+	io::requireKeyValueLines(text, iniPath);
 	mrpt::config::CConfigFileMemory cfg(text);
 	try
 	{
@@ -250,6 +257,10 @@ std::string Range::text() const
 
 namespace
 {
+/** The finest grid-vector and occupancy cell [m]: a 2D scanner's range noise is about 1 cm. */
+constexpr double kMinResolution = 0.01;
+const char* const kFinest = "must be >= 0.01 (finer cells outgrow memory)";
+
 /** "[<prefix>_<group>] key = 'value' must be ...". */
 template <class T>
 void require(const std::string& section, const char* key, T value, bool ok, const std::string& why)
@@ -290,6 +301,9 @@ void GridVectorConfig::validate(const std::string& prefix) const
 	notAbove(m, "gate_psi_final_deg", matcher.gatePsiFinalDeg, "gate_psi_initial_deg", matcher.gatePsiInitialDeg);
 	notAbove(m, "gate_rho_final", matcher.gateRhoFinal, "gate_rho_initial", matcher.gateRhoInitial);
 	notBelow(d, "max_door_length", doors.maxDoorLength, "min_door_length", doors.minDoorLength);
+	// the finest cells: below them a map's grids and cell indices outgrow memory (1e-6: 3.5 GB on 11 scans)
+	require(g, "resolution", grid.resolution, grid.resolution >= kMinResolution, kFinest);
+	require(prefix + "_occupancy", "resolution", occupancy.resolution, occupancy.resolution >= kMinResolution, kFinest);
 }
 
 }  // namespace gridvector

@@ -10,7 +10,18 @@ using mrpt::math::TPoint2D;
 
 namespace
 {
-int columnsFor(double length, double res) { return std::max(1, int(std::ceil(length / res - 1e-9))); }
+/** Most columns of one vector's grid: 10^7 cells of 0.01 m is a 100 km wall; more (or a NaN length) is
+ * corrupt geometry, not a map. */
+constexpr double kMaxColumns = 1e7;
+
+int columnsFor(double length, double res)
+{
+	const double cols = std::ceil(length / res - 1e-9);
+	if (!(cols <= kMaxColumns))  // also NaN
+		throw std::invalid_argument("GridVector: a vector of " + std::to_string(length) + " m at a resolution of " +
+									std::to_string(res) + " m has more than 10^7 cells (corrupt geometry?)");
+	return std::max(1, int(cols));
+}
 }  // namespace
 
 GridVector::GridVector(const TPoint2D& start, const TPoint2D& end, const GridOptions& grid)
@@ -27,9 +38,16 @@ GridVector::GridVector(const TPoint2D& start, const TPoint2D& end, const GridOpt
 GridVector GridVector::fromParts(const TPoint2D& start, const TPoint2D& end, const GridOptions& grid, int cols,
 								 std::vector<GridCell> cells)
 {
-	GridVector v(start, end, grid);
+	GridVector v;  // not GridVector(start, end, grid): that sizes a grid from the length before the cells are checked
+	v.res_ = grid.resolution;
+	v.halfWidth_ = grid.halfWidth;
+	v.priorOcc_ = float(grid.priorOccupy);
+	v.priorVisit_ = float(grid.priorVisit);
 	if (cols < 1 || cells.size() != size_t(v.rows()) * size_t(cols))
 		throw std::invalid_argument("GridVector::fromParts: cell count does not match the grid");
+	v.start_ = start;
+	v.end_ = end;
+	v.updateDirection();
 	v.cols_ = cols;
 	v.cells_ = std::move(cells);
 	return v;
@@ -89,7 +107,7 @@ bool GridVector::cellOf(const TPoint2D& p, int& row, int& col) const
 	const double r = std::floor(g.y / res_ + 0.5) + halfWidth_;
 	if (c == cols_ && g.x <= length() + 1e-9) c = cols_ - 1;  // the terminal point itself
 	if (c == -1 && g.x >= -1e-9) c = 0;  // the start point, up to rounding
-	if (c < 0 || c >= cols_ || r < 0 || r >= rows()) return false;
+	if (!(c >= 0 && c < cols_ && r >= 0 && r < rows())) return false;  // NaN (a non-finite point) included
 	col = int(c);
 	row = int(r);
 	return true;

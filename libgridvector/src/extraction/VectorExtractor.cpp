@@ -114,32 +114,40 @@ bool VectorExtractor::fitSegment(const std::vector<TPoint2D>& pts, const PrefixM
 	return maxResidual <= 0 || seg.maxResidual <= maxResidual;
 }
 
-// Split step: recursive end-point fit, splitting at the point farthest from the chord.
-void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoments& pm, size_t i, size_t j,
+// Split step: end-point fit, splitting at the point farthest from the chord; depth first, left part first
+// (an explicit stack: a run of 10^5 points must not take 10^5 frames).
+void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoments& pm, size_t first, size_t last,
 							std::vector<ScanSegment>& out) const
 {
-	if (j <= i) return;
-	const TPoint2D a = pts[i], b = pts[j];
-	const double len = std::hypot(b.x - a.x, b.y - a.y);
-	double best = 0;
-	size_t k = i;
-	if (len > 1e-9)
+	std::vector<std::pair<size_t, size_t>> todo{{first, last}};
+	while (!todo.empty())
 	{
-		for (size_t q = i + 1; q < j; ++q)
+		const auto [i, j] = todo.back();
+		todo.pop_back();
+		if (j <= i) continue;
+		const TPoint2D a = pts[i], b = pts[j];
+		const double len = std::hypot(b.x - a.x, b.y - a.y);
+		double best = 0;
+		size_t k = i;
+		if (len > 1e-9)
 		{
-			const double d = std::abs((b.x - a.x) * (a.y - pts[q].y) - (a.x - pts[q].x) * (b.y - a.y)) / len;
-			if (d > best) best = d, k = q;
+			for (size_t q = i + 1; q < j; ++q)
+			{
+				const double d = std::abs((b.x - a.x) * (a.y - pts[q].y) - (a.x - pts[q].x) * (b.y - a.y)) / len;
+				if (d > best) best = d, k = q;
+			}
 		}
+		ScanSegment seg;
+		if (best <= ext_.splitThreshold && fitSegment(pts, pm, i, j, seg))
+		{
+			out.push_back(seg);
+			continue;
+		}
+		if (k == i) k = (i + j) / 2;  // degenerate chord (coincident ends): bisect
+		if (k == i) continue;  // two points whose fit fails (non-finite or absurd coordinates): no segment
+		todo.emplace_back(k, j);
+		todo.emplace_back(i, k);
 	}
-	ScanSegment seg;
-	if (best <= ext_.splitThreshold && fitSegment(pts, pm, i, j, seg))
-	{
-		out.push_back(seg);
-		return;
-	}
-	if (k == i) k = (i + j) / 2;  // degenerate chord (coincident ends): bisect
-	split(pts, pm, i, k, out);
-	split(pts, pm, k, j, out);
 }
 
 // Merge step: neighbouring segments whose joint least-squares fit stays tight.

@@ -1,4 +1,5 @@
 #include "io/CarmenParams.h"
+#include "io/InputLimits.h"
 
 #include <cmath>
 #include <string>
@@ -16,11 +17,20 @@ bool parseFlag(std::string_view v, const TextPos& pos, std::string_view name)
 	parseError(pos, "PARAM " + std::string(name) + " is '" + printableToken(v) + "' (expected 0/1/on/off)");
 }
 
-double positive(std::string_view v, const TextPos& pos, std::string_view name)
+/** A value in (0, hi]. */
+double positive(std::string_view v, const TextPos& pos, std::string_view name, double hi, const char* unit)
 {
 	const double d = parseDouble(v, pos, "PARAM " + std::string(name));
-	if (d <= 0) parseError(pos, "PARAM " + std::string(name) + " is " + std::string(v) + " (must be > 0)");
+	if (d <= 0) parseError(pos, "PARAM " + std::string(name) + " is " + printableToken(v) + " (must be > 0)");
+	if (d > hi)
+		parseError(pos, "PARAM " + std::string(name) + " is " + printableToken(v) + " (at most " + shortestText(hi) +
+							" " + unit + ")");
 	return d;
+}
+
+double bounded(std::string_view v, const TextPos& pos, std::string_view name, double limit, const char* unit)
+{
+	return parseBounded(v, pos, "PARAM " + std::string(name), limit, unit);
 }
 
 /** CARMEN writes the field of view in radians (3.14159) or, in some tools, degrees (180). */
@@ -44,17 +54,17 @@ bool CarmenParams::apply(std::string_view name, std::string_view value, const Te
 	CarmenLaserParams& l = front ? front_ : rear_;
 	const double sign = front ? 1.0 : -1.0;
 	if (name == "laser_front_laser_resolution" || name == "laser_rear_laser_resolution")
-		l.resolutionDeg = positive(value, pos, name);
+		l.resolutionDeg = positive(value, pos, name, kMaxResolutionDeg, "deg");
 	else if (name == "laser_front_laser_fov" || name == "laser_rear_laser_fov")
-		l.fovDeg = fovToDegrees(positive(value, pos, name));
+		l.fovDeg = fovToDegrees(positive(value, pos, name, 360, "deg"));  // radians: at most 2 pi, read as 360.6 deg
 	else if (name == "robot_front_laser_max" || name == "robot_rear_laser_max")
-		l.maxRange = positive(value, pos, name);
+		l.maxRange = positive(value, pos, name, kMaxRangeLimit, "m");
 	else if (name == "robot_frontlaser_offset" || name == "robot_rearlaser_offset")
-		l.offsetX = sign * parseDouble(value, pos, "PARAM " + std::string(name));
+		l.offsetX = sign * bounded(value, pos, name, kMaxSensorOffset, "m");
 	else if (name == "robot_frontlaser_side_offset" || name == "robot_rearlaser_side_offset")
-		l.offsetY = parseDouble(value, pos, "PARAM " + std::string(name));
+		l.offsetY = bounded(value, pos, name, kMaxSensorOffset, "m");
 	else if (name == "robot_frontlaser_angular_offset" || name == "robot_rearlaser_angular_offset")
-		l.offsetYaw = parseDouble(value, pos, "PARAM " + std::string(name));
+		l.offsetYaw = bounded(value, pos, name, kMaxAngle, "rad");
 	else if (name == "laser_front_laser_flipped" || name == "laser_rear_laser_flipped")
 		l.flipped = parseFlag(value, pos, name);
 	else

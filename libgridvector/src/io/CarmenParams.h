@@ -10,6 +10,9 @@
 
 namespace gridvector::io
 {
+/** Coarsest angular resolution a laser PARAM may give [deg]. */
+constexpr double kMaxResolutionDeg = 180.0;
+
 /** What PARAM lines said about one laser (unset: not given in the log). */
 struct CarmenLaserParams
 {

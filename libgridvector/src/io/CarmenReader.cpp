@@ -2,6 +2,7 @@
 #include "io/CarmenReader.h"
 #include "io/Counted.h"
 #include "io/FileBytes.h"
+#include "io/InputLimits.h"
 #include "io/OdometryTrack.h"
 #include "io/Progress.h"
 #include "io/TextParsing.h"
@@ -66,6 +67,7 @@ class CarmenParser
 	void onOther(const Tokens& t);
 
 	double timestampAfter(const Tokens& t, size_t base, const std::string& what);
+	void requireAperture(const BeamLayout& b, size_t n, const std::string& what);
 	TPose2D poseAt(const Tokens& t, size_t i, const std::string& what);
 	std::vector<float> ranges(const Tokens& t, size_t first, size_t n, const std::string& what);
 	size_t count(const Tokens& t, size_t i, const std::string& what);
@@ -154,14 +156,23 @@ double CarmenParser::timestampAfter(const Tokens& t, size_t base, const std::str
 
 TPose2D CarmenParser::poseAt(const Tokens& t, size_t i, const std::string& what)
 {
-	return TPose2D(parseDouble(t[i], pos_, what + " x"), parseDouble(t[i + 1], pos_, what + " y"),
-				   parseDouble(t[i + 2], pos_, what + " theta"));
+	return TPose2D(parseBounded(t[i], pos_, what + " x", kMaxCoordinate, "m"),
+				   parseBounded(t[i + 1], pos_, what + " y", kMaxCoordinate, "m"),
+				   parseBounded(t[i + 2], pos_, what + " theta", kMaxAngle, "rad"));
 }
 
 size_t CarmenParser::count(const Tokens& t, size_t i, const std::string& what)
 {
 	if (i >= t.size()) parseError(pos_, what + ": line ends early (" + counted(t.size(), "field") + ")");
-	return size_t(parseInt(t[i], pos_, what, 0, 100000));
+	return size_t(parseInt(t[i], pos_, what, 0, long(kMaxBeams)));
+}
+
+/** n beams at the layout's resolution must fit in one turn (else MRPT's beam angles overflow). */
+void CarmenParser::requireAperture(const BeamLayout& b, size_t n, const std::string& what)
+{
+	if (b.resolution > 0 && b.aperture <= kMaxApertureRad) return;
+	parseError(pos_, what + ": " + counted(n, "beam") + " at a resolution of " + fmt("%g deg", b.resolution * 180 / M_PI) +
+						 (b.resolution > 0 ? " span more than 360 deg" : " (must be > 0)"));
 }
 
 std::vector<float> CarmenParser::ranges(const Tokens& t, size_t first, size_t n, const std::string& what)
@@ -203,6 +214,7 @@ void CarmenParser::onFlaser(const Tokens& t, bool rear)
 	m.ranges = ranges(t, 2, n, what);
 	const double ts = timestampAfter(t, trailer, what);
 	m.layout = carmenBeamLayout(n, lp);
+	requireAperture(m.layout, n, what);
 	m.flipped = lp.flipped;
 	m.maxRange = lp.maxRange;
 	const double yaw = lp.offsetYaw + (rear ? M_PI : 0.0) + (lp.flipped ? -m.layout.yawOffset : m.layout.yawOffset);
@@ -228,9 +240,10 @@ ScanMessage CarmenParser::laserMessage(const Tokens& t, size_t timestampAfterTai
 	ScanMessage s;
 	s.type = what;
 	s.ranges = ranges(t, 9, n, what);
-	s.layout = explicitBeamLayout(n, parseDouble(t[2], pos_, what + " start angle"),
+	s.layout = explicitBeamLayout(n, parseBounded(t[2], pos_, what + " start angle", kMaxAngle, "rad"),
 								  parseDouble(t[4], pos_, what + " resolution"));
-	const double maxR = parseDouble(t[5], pos_, what + " max range");
+	requireAperture(s.layout, n, what);
+	const double maxR = parseBounded(t[5], pos_, what + " max range", kMaxRangeLimit, "m");
 	if (maxR > 0) s.maxRange = maxR;
 	return s;
 }
@@ -245,6 +258,9 @@ void CarmenParser::onRobotLaser(const Tokens& t)
 	const TPose2D laser = poseAt(t, posesAt, s.type + " laser pose");
 	const TPose2D robot = poseAt(t, posesAt + 3, s.type + " robot pose");
 	const mrpt::poses::CPose2D rel = mrpt::poses::CPose2D(laser) - mrpt::poses::CPose2D(robot);
+	if (!(rel.norm() <= kMaxSensorOffset))
+		parseError(pos_, s.type + ": the laser pose is " + fmt("%g m", rel.norm()) + " from the robot pose (at most " +
+							 fmt("%g m", kMaxSensorOffset) + ")");
 	s.sensorPose = mrpt::poses::CPose3D(rel.x(), rel.y(), 0, rel.phi() + s.layout.yawOffset, 0, 0);
 	addScan(std::move(s), ts);
 	ScanRecord& r = out_.scans.back();
@@ -348,7 +364,9 @@ LogData parseCarmenLog(const std::vector<char>& text, const std::string& source,
 
 LogData readCarmenLog(const std::string& path, const ReadOptions& opt)
 {
-	return parseCarmenLog(readFileBytes(path), path, opt);
+	ReadLimits lim;
+	lim.onHead = [](std::string_view) { return kMaxLineBytes; };
+	return parseCarmenLog(readFileBytes(path, nullptr, lim), path, opt);
 }
 
 }  // namespace gridvector::io

@@ -31,7 +31,8 @@ bool parseIniValue(const std::string& text, double& value)
 {
 	char* end = nullptr;
 	const double x = std::strtod(text.c_str(), &end);
-	if (text.empty() || *end || !std::isfinite(x)) return false;
+	// decimal only: strtod would take hexadecimal floats ("0x1p3"), which no config writes
+	if (text.empty() || *end || !std::isfinite(x) || text.find_first_of("xX") != std::string::npos) return false;
 	return value = x, true;
 }
 

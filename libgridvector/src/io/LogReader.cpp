@@ -20,13 +20,32 @@ bool endsWith(const std::string& s, const std::string& suffix)
 }
 
 /** CARMEN logs are text; rawlogs are MRPT binary serialisations. */
-bool looksLikeText(const std::vector<char>& bytes)
+bool looksLikeText(std::string_view bytes)
 {
 	const size_t n = std::min<size_t>(bytes.size(), 4096);
 	return std::all_of(bytes.begin(), bytes.begin() + n, [](char c) {
 		const auto u = static_cast<unsigned char>(c);
 		return std::isprint(u) || std::isspace(u);
 	});
+}
+
+bool isRawlog(const std::string& name, std::string_view head)
+{
+	return endsWith(name, ".rawlog") || (!endsWith(name, ".log") && !endsWith(name, ".clf") && !looksLikeText(head));
+}
+
+/** Before the whole file is read: a rawlog's first byte is a class-name length with bit 7 set (MRPT >= 0.5.5),
+ * or the low byte of a non-zero length, never 0; text has no NUL either (so /dev/zero stops here). CARMEN
+ * lines are at most kMaxLineBytes long. */
+ReadLimits logLimits(const std::string& path, const std::string& name)
+{
+	ReadLimits lim;
+	lim.onHead = [path, name](std::string_view head) -> size_t {
+		if (!head.empty() && head[0] == '\0')
+			throw std::runtime_error(path + ": neither a CARMEN log nor an MRPT rawlog (it starts with a NUL byte)");
+		return isRawlog(name, head) ? 0 : kMaxLineBytes;
+	};
+	return lim;
 }
 }  // namespace
 
@@ -57,9 +76,8 @@ LogData readLog(const std::string& path, const ReadOptions& opt)
 	std::string name = path;
 	std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return char(std::tolower(c)); });
 	if (endsWith(name, ".gz")) name.resize(name.size() - 3);
-	const std::vector<char> bytes = readFileBytes(path);
-	const bool rawlog =
-		endsWith(name, ".rawlog") || (!endsWith(name, ".log") && !endsWith(name, ".clf") && !looksLikeText(bytes));
+	const std::vector<char> bytes = readFileBytes(path, nullptr, logLimits(path, name));
+	const bool rawlog = isRawlog(name, std::string_view(bytes.data(), bytes.size()));
 	if (rawlog) return parseRawlog(bytes, path, opt);
 	LogData log = parseCarmenLog(bytes, path, opt);
 	if (opt.detectNoReturnRange) applyNoReturnRange(log);

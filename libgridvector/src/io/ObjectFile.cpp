@@ -2,7 +2,7 @@
 #include "io/ErrorText.h"
 #include "io/FileBytes.h"
 #include "io/ObjectFile.h"
-#include <mrpt/io/CFileGZInputStream.h>
+#include <mrpt/io/CMemoryStream.h>
 #include <mrpt/serialization/CArchive.h>
 #include <mrpt/system/filesystem.h>
 
@@ -13,12 +13,13 @@ namespace gridvector::io
 void readObjectFile(const std::string& path, mrpt::serialization::CSerializable& obj)
 {
 	if (!mrpt::system::fileExists(path)) throw std::runtime_error(path + ": no such file");
-	checkReadableFile(path);  // a directory opened and failed in MRPT as "unknown error"
-	mrpt::io::CFileGZInputStream f;
-	if (!f.open(path)) throw std::runtime_error(path + ": cannot open");
+	// read (and gunzip, checking the gzip trailer's CRC) before MRPT sees a byte
+	const std::vector<char> bytes = readFileBytes(path);
+	mrpt::io::CMemoryStream mem;
+	mem.assignMemoryNotOwn(bytes.data(), bytes.size());
 	try
 	{
-		auto a = mrpt::serialization::archiveFrom(f);
+		auto a = mrpt::serialization::archiveFrom(mem);
 		a.ReadObject(&obj);
 	}
 	catch (const std::exception& e)

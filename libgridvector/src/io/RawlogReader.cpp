@@ -1,6 +1,8 @@
 #include "io/ErrorText.h"
 #include "io/FileBytes.h"
+#include "io/InputLimits.h"
 #include "io/OdometryTrack.h"
+#include "io/RawlogPrecheck.h"
 #include "io/Progress.h"
 #include "io/RawlogReader.h"
 #include "io/Counted.h"
@@ -35,6 +37,8 @@ class RawlogParser
 	void onActions(const CActionCollection& acts);
 	void onObservation(const CObservation::Ptr& obs, bool inFrame);
 	void checkRanges(const CObservation2DRangeScan& s) const;
+	void checkGeometry(const CObservation2DRangeScan& s) const;
+	void checkPose(const mrpt::math::TPose2D& p, const char* what) const;
 	void finish();
 	[[noreturn]] void fail(const std::string& msg) const;
 
@@ -57,6 +61,16 @@ LogData RawlogParser::parse(const std::vector<char>& bytes)
 	{
 		entry_++;
 		mrpt::serialization::CSerializable::Ptr obj;
+		const auto at = size_t(mem.getPosition());
+		try
+		{
+			// MRPT's deserialisers trust the counts in the stream: check them in the bytes first
+			precheckRawlogEntry(reinterpret_cast<const unsigned char*>(bytes.data()) + at, bytes.size() - at);
+		}
+		catch (const std::runtime_error& e)
+		{
+			fail(std::string("corrupt rawlog object (") + e.what() + ")");
+		}
 		try
 		{
 			arch >> obj;
@@ -103,10 +117,12 @@ void RawlogParser::onActions(const CActionCollection& acts)
 	out_.contents.actionSets++;
 	const auto mov = acts.getActionByClass<CActionRobotMovement2D>();
 	if (!mov) return;
-	const mrpt::poses::CPose2D inc = mov->estimationMethod == CActionRobotMovement2D::emOdometry
-										 ? mov->rawOdometryIncrementReading
-										 : mov->poseChange->getMeanVal();
+	const bool odometry = mov->estimationMethod == CActionRobotMovement2D::emOdometry;
+	if (!odometry && !mov->poseChange) fail("robot movement without a pose change (corrupt data?)");
+	const mrpt::poses::CPose2D inc = odometry ? mov->rawOdometryIncrementReading : mov->poseChange->getMeanVal();
+	checkPose(inc.asTPose(), "robot movement increment");
 	cumulative_ = cumulative_ + inc;
+	checkPose(cumulative_.asTPose(), "odometry (the sum of the robot movements)");
 	hasMotion_ = true;
 }
 
@@ -115,12 +131,16 @@ void RawlogParser::onObservation(const CObservation::Ptr& obs, bool inFrame)
 	if (!inFrame) out_.contents.observations++;
 	const double t = obs->timestamp == INVALID_TIMESTAMP ? 0.0 : mrpt::Clock::toDouble(obs->timestamp);
 	if (auto odo = std::dynamic_pointer_cast<CObservationOdometry>(obs))
+	{
+		checkPose(odo->odometry.asTPose(), "odometry observation");
 		return odomObs_.add(t, odo->odometry.asTPose());
+	}
 	auto scan = std::dynamic_pointer_cast<CObservation2DRangeScan>(obs);
 	if (!scan) return void(out_.contents.ignored[obs->GetRuntimeClass()->className]++);
 	if (!opt_.sensorLabel.empty() && scan->sensorLabel != opt_.sensorLabel)
 		return void(out_.contents.ignored["scans of other sensors"]++);
 	checkRanges(*scan);
+	checkGeometry(*scan);
 	if (obs->timestamp == INVALID_TIMESTAMP) noTimestamp_++;
 	ScanRecord r;
 	r.timestamp = t;
@@ -144,6 +164,29 @@ void RawlogParser::checkRanges(const CObservation2DRangeScan& s) const
 	if (!std::isfinite(s.aperture) || s.aperture <= 0 || !std::isfinite(s.maxRange) || s.maxRange <= 0)
 		fail("2D scan with aperture " + std::to_string(s.aperture) + " and max range " + std::to_string(s.maxRange) +
 			 " (corrupt data?)");
+}
+
+/** The sensor pose, aperture and max range place every beam endpoint: bounded as the CARMEN reader's. */
+void RawlogParser::checkGeometry(const CObservation2DRangeScan& s) const
+{
+	if (!(s.aperture <= kMaxApertureRad))
+		fail("2D scan with an aperture of " + std::to_string(s.aperture) + " rad (at most 2 pi)");
+	if (!(s.maxRange <= kMaxRangeLimit))
+		fail("2D scan with a max range of " + std::to_string(s.maxRange) + " m (at most " +
+			 std::to_string(int(kMaxRangeLimit)) + " m)");
+	const auto& p = s.sensorPose;
+	const double offset = std::sqrt(p.x() * p.x() + p.y() * p.y() + p.z() * p.z());
+	if (!(offset <= kMaxSensorOffset) || !std::isfinite(p.yaw()) || !std::isfinite(p.pitch()) || !std::isfinite(p.roll()))
+		fail("2D scan with its sensor at (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " +
+			 std::to_string(p.z()) + ") m, yaw " + std::to_string(p.yaw()) + " (at most " +
+			 std::to_string(int(kMaxSensorOffset)) + " m from the robot)");
+}
+
+void RawlogParser::checkPose(const mrpt::math::TPose2D& p, const char* what) const
+{
+	if (std::abs(p.x) <= kMaxCoordinate && std::abs(p.y) <= kMaxCoordinate && std::abs(p.phi) <= kMaxAngle) return;
+	fail(std::string(what) + " (" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.phi) +
+		 ") is not finite or beyond +-" + std::to_string(int(kMaxCoordinate)) + " m");
 }
 
 void RawlogParser::finish()
@@ -183,7 +226,13 @@ LogData parseRawlog(const std::vector<char>& bytes, const std::string& source, c
 
 LogData readRawlog(const std::string& path, const ReadOptions& opt)
 {
-	return parseRawlog(readFileBytes(path), path, opt);
+	ReadLimits lim;
+	lim.onHead = [path](std::string_view head) -> size_t {
+		if (!head.empty() && head[0] == '\0')
+			throw std::runtime_error(path + ": not an MRPT rawlog (it starts with a NUL byte)");
+		return 0;
+	};
+	return parseRawlog(readFileBytes(path, nullptr, lim), path, opt);
 }
 
 }  // namespace gridvector::io

@@ -66,8 +66,18 @@ double parseDouble(std::string_view tok, const TextPos& pos, const std::string& 
 	char* end = nullptr;
 	errno = 0;
 	const double v = std::strtod(s.c_str(), &end);
-	if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(v) || errno == ERANGE)
+	const bool hex = s.find_first_of("xX") != std::string::npos;
+	if (s.empty() || hex || end != s.c_str() + s.size() || !std::isfinite(v) || errno == ERANGE)
 		parseError(pos, what + " is '" + printableToken(s) + "' (not a finite number)");
+	return v;
+}
+
+double parseBounded(std::string_view tok, const TextPos& pos, const std::string& what, double limit,
+					const char* unit)
+{
+	const double v = parseDouble(tok, pos, what);
+	if (std::abs(v) > limit)
+		parseError(pos, what + " is " + printableToken(tok) + " (beyond +-" + shortestText(limit) + " " + unit + ")");
 	return v;
 }
 

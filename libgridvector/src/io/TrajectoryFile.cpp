@@ -13,7 +13,9 @@ namespace gridvector::io
 {
 Trajectory readTrajectory(const std::string& path)
 {
-	const std::vector<char> text = readFileBytes(path);
+	ReadLimits lim;
+	lim.onHead = [](std::string_view) { return kMaxLineBytes; };
+	const std::vector<char> text = readFileBytes(path, nullptr, lim);
 	Trajectory out;
 	LineCursor cur(text);
 	std::string_view line;

@@ -38,6 +38,14 @@ gridvector::GridVectorConfig readConfigV0(mrpt::serialization::CArchive& in)
 	c.visitGroups([&](const char*, auto& g) {
 		g.visit([&](const char*, auto& field, const char*, const gridvector::Range&) { in >> field; });
 	});
+	try
+	{
+		c.validate();
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(std::string("CGridVectorMap: stored config: ") + e.what());
+	}
 	return c;
 }
 
@@ -176,6 +184,33 @@ gridvector::GridVectorConfig readConfigV1(mrpt::serialization::CArchive& in)
 
 bool finite(const mrpt::math::TPoint2D& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
+/** The stored likelihood options pass the checks of the .ini path (TLikelihoodOptions::loadFromConfigFile). */
+void requireLikelihoodOptions(const CGridVectorMap::TLikelihoodOptions& o)
+{
+	const auto bad = [](const char* key, double v, const char* want) {
+		throw std::runtime_error("CGridVectorMap: stored likelihood option " + std::string(key) + " = " +
+								 std::to_string(v) + " (must be " + want + ")");
+	};
+	if (!(o.sigma > 0 && std::isfinite(o.sigma))) bad("sigma", o.sigma, "a number > 0");
+	if (!(o.maxCorrDistance > 0 && std::isfinite(o.maxCorrDistance)))
+		bad("maxCorrDistance", o.maxCorrDistance, "a number > 0");
+	if (!(o.zRandom >= 0 && o.zRandom < 1)) bad("zRandom", o.zRandom, "a number in [0,1)");
+	if (!(o.decimation >= 1 && o.decimation <= 1000000)) bad("decimation", o.decimation, "an integer in [1,1000000]");
+}
+
+/** Counts are non-negative and finite, the sums finite: what Algorithm 1 and 2 can produce. */
+void requireCells(const std::vector<GridCell>& cells, uint64_t vector)
+{
+	for (const GridCell& c : cells)
+	{
+		const bool counts = c.n_acc >= 0 && c.n_occupy >= 0 && c.n_visit >= 0 && std::isfinite(c.n_acc) &&
+							std::isfinite(c.n_occupy) && std::isfinite(c.n_visit);
+		if (!counts || !std::isfinite(c.x_acc) || !std::isfinite(c.y_acc))
+			throw std::runtime_error("CGridVectorMap: corrupt vector record " + std::to_string(vector) +
+									 " (a cell with a negative or non-finite count)");
+	}
+}
+
 // The cells of one vector, read in chunks so that a corrupt column count fails at the end
 // of the data instead of allocating what it claims.
 std::vector<GridCell> readCells(mrpt::serialization::CArchive& in, size_t count)
@@ -219,6 +254,7 @@ void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ve
 	int32_t decimation = 1;
 	in >> likelihoodOptions.sigma >> likelihoodOptions.maxCorrDistance >> likelihoodOptions.zRandom >> decimation;
 	likelihoodOptions.decimation = decimation;
+	requireLikelihoodOptions(likelihoodOptions);
 	uint64_t scans = 0, n = 0;
 	in >> scans >> n;
 	std::vector<GridVector> vectors;
@@ -238,6 +274,7 @@ void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ve
 		if (cols < 1 || cols > 10'000'000 || state > 2 || !finite(s) || !finite(e) || !(lengthInCells < 1e6))
 			throw std::runtime_error("CGridVectorMap: corrupt vector record " + std::to_string(i));
 		std::vector<GridCell> cells = readCells(in, size_t(cfg.grid.halfWidth * 2 + 1) * size_t(cols));
+		requireCells(cells, i);
 		GridVector v = GridVector::fromParts(s, e, cfg.grid, cols, std::move(cells));
 		v.scanIndex = scanIndex;
 		v.timestamp = t;

@@ -17,7 +17,8 @@ TEST(BadGeometry, CellOfANonFinitePointIsOutside)
 	const GridVector v(TPoint2D(0, 0), TPoint2D(1, 0), gridvector::GridOptions{});
 	const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
 	int row = -7, col = -7;
-	for (const TPoint2D p : {TPoint2D(nan, 0), TPoint2D(0, nan), TPoint2D(inf, 0), TPoint2D(-inf, inf), TPoint2D(1e308, 0)})
+	for (const TPoint2D p :
+		 {TPoint2D(nan, 0), TPoint2D(0, nan), TPoint2D(inf, 0), TPoint2D(-inf, inf), TPoint2D(1e308, 0)})
 		EXPECT_FALSE(v.cellOf(p, row, col)) << p.x << " " << p.y;
 	EXPECT_EQ(row, -7);
 	GridVector w = v;

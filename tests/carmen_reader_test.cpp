@@ -505,10 +505,12 @@ TEST(CarmenReader, AbsurdParamsAndGeometryAreErrorsNamingTheLine)
 					   "mem.log:1: PARAM laser_front_laser_resolution is 1e300 (at most 180 deg)"));
 	EXPECT_TRUE(starts(errorOf("PARAM laser_front_laser_resolution 10\n" + scan),
 					   "mem.log:2: FLASER: 180 beams at a resolution of 10 deg span more than 360 deg"));
-	EXPECT_TRUE(starts(errorOf("PARAM laser_front_laser_fov 1e300\n" + scan), "mem.log:1: PARAM laser_front_laser_fov"));
+	EXPECT_TRUE(
+		starts(errorOf("PARAM laser_front_laser_fov 1e300\n" + scan), "mem.log:1: PARAM laser_front_laser_fov"));
 	EXPECT_TRUE(starts(errorOf("PARAM robot_frontlaser_side_offset -1e308\n" + scan),
 					   "mem.log:1: PARAM robot_frontlaser_side_offset is -1e308 (beyond +-10 m)"));
-	EXPECT_TRUE(starts(errorOf("PARAM robot_frontlaser_offset 1e6\n" + scan), "mem.log:1: PARAM robot_frontlaser_offset"));
+	EXPECT_TRUE(
+		starts(errorOf("PARAM robot_frontlaser_offset 1e6\n" + scan), "mem.log:1: PARAM robot_frontlaser_offset"));
 	EXPECT_TRUE(starts(errorOf("PARAM robot_front_laser_max 1e9\n" + scan),
 					   "mem.log:1: PARAM robot_front_laser_max is 1e9 (at most 1000 m)"));
 	EXPECT_TRUE(starts(errorOf(flaser(180, 2.0, "1e15 2 0.5 3 4 0.25 10.5 host 10.5")),
@@ -523,8 +525,10 @@ TEST(CarmenReader, AbsurdParamsAndGeometryAreErrorsNamingTheLine)
 		return s;
 	};
 	EXPECT_EQ(parse(robotlaser("0.0174533", "50", "0.1")).scans.size(), 1u);
-	EXPECT_TRUE(starts(errorOf(robotlaser("1e300", "50", "0.1")), "mem.log:1: ROBOTLASER1: 3 beams at a resolution of"));
-	EXPECT_TRUE(starts(errorOf(robotlaser("0", "50", "0.1")), "mem.log:1: ROBOTLASER1: 3 beams at a resolution of 0 deg (must be > 0)"));
+	EXPECT_TRUE(
+		starts(errorOf(robotlaser("1e300", "50", "0.1")), "mem.log:1: ROBOTLASER1: 3 beams at a resolution of"));
+	EXPECT_TRUE(starts(errorOf(robotlaser("0", "50", "0.1")),
+					   "mem.log:1: ROBOTLASER1: 3 beams at a resolution of 0 deg (must be > 0)"));
 	EXPECT_TRUE(starts(errorOf(robotlaser("-0.01", "50", "0.1")), "mem.log:1: ROBOTLASER1: 3 beams"));
 	EXPECT_TRUE(starts(errorOf(robotlaser("0.0174533", "1e300", "0.1")), "mem.log:1: ROBOTLASER1 max range is 1e300"));
 	EXPECT_TRUE(starts(errorOf(robotlaser("0.0174533", "50", "1e6")),
@@ -539,9 +543,7 @@ TEST(CarmenReader, PipesAndFifosReadEveryByte)
 	const fs::path fifo = fs::temp_directory_path() / "gv_carmen_fifo.log";
 	fs::remove(fifo);
 	ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
-	std::thread writer([&] {
-		std::ofstream(fifo) << log;
-	});
+	std::thread writer([&] { std::ofstream(fifo) << log; });
 	const LogData d = readCarmenLog(fifo.string());
 	writer.join();
 	EXPECT_EQ(d.scans.size(), 40u);

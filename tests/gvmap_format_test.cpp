@@ -348,8 +348,9 @@ TEST(GvmapFormat, StoredLikelihoodOptionsAndCellsAreValidated)
 	for (double sigma : {std::nan(""), 0.0, -1.0})
 		EXPECT_NE(withRest(sigma, 2, 1).find("stored likelihood option sigma"), std::string::npos) << sigma;
 	EXPECT_NE(withRest(0.07, 0, 1).find("stored likelihood option decimation = 0"), std::string::npos);
-	EXPECT_NE(withRest(0.07, 2, std::nanf("")).find("corrupt vector record 0 (a cell with a negative or non-finite count)"),
-			  std::string::npos);
+	EXPECT_NE(
+		withRest(0.07, 2, std::nanf("")).find("corrupt vector record 0 (a cell with a negative or non-finite count)"),
+		std::string::npos);
 	EXPECT_NE(withRest(0.07, 2, -1).find("corrupt vector record 0"), std::string::npos);
 }
 

@@ -384,10 +384,17 @@ TEST(RawlogReader, AbsurdScanGeometryIsAnError)
 		edit(*log.scans[1].scan);
 		return parseError(rawlogBytes(log, RawlogFormat::Observations));
 	};
-	EXPECT_EQ(errorWith([](auto& s) { s.sensorPose.x(std::nan("")); }).rfind("mem.rawlog: entry 4: 2D scan with its sensor at (nan", 0), 0u);
-	EXPECT_EQ(errorWith([](auto& s) { s.sensorPose.y(1e15); }).rfind("mem.rawlog: entry 4: 2D scan with its sensor at", 0), 0u);
-	EXPECT_EQ(errorWith([](auto& s) { s.aperture = 1000; }), "mem.rawlog: entry 4: 2D scan with an aperture of 1000.000000 rad (at most 2 pi)");
-	EXPECT_EQ(errorWith([](auto& s) { s.maxRange = 1e9; }).rfind("mem.rawlog: entry 4: 2D scan with a max range of", 0), 0u);
+	EXPECT_EQ(errorWith([](auto& s) {
+				  s.sensorPose.x(std::nan(""));
+			  }).rfind("mem.rawlog: entry 4: 2D scan with its sensor at (nan", 0),
+			  0u);
+	EXPECT_EQ(
+		errorWith([](auto& s) { s.sensorPose.y(1e15); }).rfind("mem.rawlog: entry 4: 2D scan with its sensor at", 0),
+		0u);
+	EXPECT_EQ(errorWith([](auto& s) { s.aperture = 1000; }),
+			  "mem.rawlog: entry 4: 2D scan with an aperture of 1000.000000 rad (at most 2 pi)");
+	EXPECT_EQ(errorWith([](auto& s) { s.maxRange = 1e9; }).rfind("mem.rawlog: entry 4: 2D scan with a max range of", 0),
+			  0u);
 	EXPECT_EQ(errorWith([](auto& s) { s.sensorPose.x(0.3); }), "no error");
 }
 
@@ -400,6 +407,7 @@ TEST(RawlogReader, DevZeroAndNulBytesStopAtOnce)
 	}
 	catch (const std::runtime_error& e)
 	{
-		EXPECT_EQ(std::string(e.what()), "/dev/zero: neither a CARMEN log nor an MRPT rawlog (it starts with a NUL byte)");
+		EXPECT_EQ(std::string(e.what()),
+				  "/dev/zero: neither a CARMEN log nor an MRPT rawlog (it starts with a NUL byte)");
 	}
 }

@@ -110,7 +110,8 @@ std::string roomLog()
 		char pose[160];
 		std::snprintf(pose, sizeof pose, " %.4f %.4f %.4f %.4f %.4f %.4f %.6f fuzz %.6f", x, y, th, x, y, th, ts, ts);
 		o << "FLASER 181" << ranges(x, y, th) << pose << "\n";
-		std::snprintf(pose, sizeof pose, "ODOM %.4f %.4f %.4f 0.1 0 0 %.6f fuzz %.6f\n", x, y, th, ts + 0.05, ts + 0.05);
+		std::snprintf(pose, sizeof pose, "ODOM %.4f %.4f %.4f 0.1 0 0 %.6f fuzz %.6f\n", x, y, th, ts + 0.05,
+					  ts + 0.05);
 		o << pose;
 		if (t % 4 == 0)
 		{
@@ -164,15 +165,53 @@ const Seeds& seeds()
 
 // --- mutations -----------------------------------------------------------------------------------
 
-const char* const kExtremeTokens[] = {"0", "-0", "1", "-1", "1e300", "-1e308", "1e-300", "nan", "inf", "-inf",
-									  "2147483647", "2147483648", "4294967296", "1073741824", "268435456", "100001",
-									  "0x1p3", "1e6", "-1e6", "1e15", "3.5e38", "1e39", "", "1e-6", "6.2832",
-									  "360", "1000.5", "-90", "99999999999999999999"};
-const uint32_t kExtremeU32[] = {0, 1, 2, 0x7fffffff, 0x80000000, 0xffffffff, 1u << 30, 1u << 28, 100001, 65536,
-								0x7fc00000 /* float NaN */, 0x7f800000 /* float inf */, 0x7e967699 /* 1e38f */,
-								0xbf800000 /* -1.0f */, 0x88, 0x80};
-const double kExtremeDoubles[] = {std::nan(""), INFINITY, -INFINITY, 1e308, -1e308, 1e15, -1e15, 1e-300, 0.0,
-								  -1.0, 1e6};
+const char* const kExtremeTokens[] = {"0",
+									  "-0",
+									  "1",
+									  "-1",
+									  "1e300",
+									  "-1e308",
+									  "1e-300",
+									  "nan",
+									  "inf",
+									  "-inf",
+									  "2147483647",
+									  "2147483648",
+									  "4294967296",
+									  "1073741824",
+									  "268435456",
+									  "100001",
+									  "0x1p3",
+									  "1e6",
+									  "-1e6",
+									  "1e15",
+									  "3.5e38",
+									  "1e39",
+									  "",
+									  "1e-6",
+									  "6.2832",
+									  "360",
+									  "1000.5",
+									  "-90",
+									  "99999999999999999999"};
+const uint32_t kExtremeU32[] = {0,
+								1,
+								2,
+								0x7fffffff,
+								0x80000000,
+								0xffffffff,
+								1u << 30,
+								1u << 28,
+								100001,
+								65536,
+								0x7fc00000 /* float NaN */,
+								0x7f800000 /* float inf */,
+								0x7e967699 /* 1e38f */,
+								0xbf800000 /* -1.0f */,
+								0x88,
+								0x80};
+const double kExtremeDoubles[] = {std::nan(""), INFINITY, -INFINITY, 1e308, -1e308, 1e15,
+								  -1e15,        1e-300,   0.0,       -1.0,  1e6};
 
 using Rng = std::mt19937_64;
 size_t pick(Rng& r, size_t n) { return n ? size_t(r() % n) : 0; }
@@ -454,8 +493,8 @@ TEST(ReaderFuzz, EveryReaderRejectsMutantsWithOneLineAndNoRunaway)
 		const char* name;
 		void (*run)(Tally&, Rng&, size_t);
 	};
-	for (const Kind k : {Kind{"carmen", fuzzCarmen}, Kind{"rawlog", fuzzRawlog}, Kind{"gvmap", fuzzGvmap},
-						 Kind{"ini", fuzzIni}})
+	for (const Kind k :
+		 {Kind{"carmen", fuzzCarmen}, Kind{"rawlog", fuzzRawlog}, Kind{"gvmap", fuzzGvmap}, Kind{"ini", fuzzIni}})
 	{
 		const size_t before = t.inputs, acc = t.accepted;
 		k.run(t, rng, total / 4);

@@ -171,7 +171,8 @@ size_t CarmenParser::count(const Tokens& t, size_t i, const std::string& what)
 void CarmenParser::requireAperture(const BeamLayout& b, size_t n, const std::string& what)
 {
 	if (b.resolution > 0 && b.aperture <= kMaxApertureRad) return;
-	parseError(pos_, what + ": " + counted(n, "beam") + " at a resolution of " + fmt("%g deg", b.resolution * 180 / M_PI) +
+	parseError(pos_, what + ": " + counted(n, "beam") + " at a resolution of " +
+						 fmt("%g deg", b.resolution * 180 / M_PI) +
 						 (b.resolution > 0 ? " span more than 360 deg" : " (must be > 0)"));
 }
 

@@ -195,7 +195,8 @@ void gunzip(InputFile& in, std::vector<char> raw, size_t n, Sink& sink, const st
 			ended = r == Z_STREAM_END;
 			if (r == Z_BUF_ERROR && z.avail_out != 0) break;  // wants more input
 		} while ((z.avail_in > 0 || z.avail_out == 0) && !ended);
-		if (ended && z.avail_in > 0) corruptGzip(path, "data after the gzip stream; concatenated members are not supported");
+		if (ended && z.avail_in > 0)
+			corruptGzip(path, "data after the gzip stream; concatenated members are not supported");
 		if (!ended) n = in.read(raw.data(), raw.size());
 	}
 	if (!ended) corruptGzip(path, "CRC/length trailer mismatch");  // the file ends before the trailer

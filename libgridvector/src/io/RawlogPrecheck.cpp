@@ -19,8 +19,7 @@ constexpr size_t kMinObjectBytes = 4;
 
 /** Signals an object of a class this walker does not know (the entry goes to MRPT unchecked). */
 struct UnknownClass
-{
-};
+{};
 
 class Walker
 {
@@ -68,7 +67,8 @@ class Walker
 	uint32_t count(const char* what, size_t limit, size_t itemBytes)
 	{
 		const uint32_t c = get<uint32_t>(what);
-		if (c > limit) fail(std::string(what) + " is " + std::to_string(c) + " (at most " + std::to_string(limit) + ")");
+		if (c > limit)
+			fail(std::string(what) + " is " + std::to_string(c) + " (at most " + std::to_string(limit) + ")");
 		need(size_t(c) * itemBytes, what);
 		return c;
 	}
@@ -192,7 +192,8 @@ class Walker
 		{
 			object(false);
 			const int32_t model = get<int32_t>("a motion model");
-			if (model != 0 && model != 1) fail("a robot movement's motion model is " + std::to_string(model) + " (0 or 1)");
+			if (model != 0 && model != 1)
+				fail("a robot movement's motion model is " + std::to_string(model) + " (0 or 1)");
 			skip(6 * 4, "a Gaussian motion model");
 			const uint32_t particles = get<uint32_t>("a particle count");
 			if (model == 1 && (particles == 0 || particles > kMaxParticles))

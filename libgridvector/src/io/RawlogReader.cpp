@@ -176,7 +176,8 @@ void RawlogParser::checkGeometry(const CObservation2DRangeScan& s) const
 			 std::to_string(int(kMaxRangeLimit)) + " m)");
 	const auto& p = s.sensorPose;
 	const double offset = std::sqrt(p.x() * p.x() + p.y() * p.y() + p.z() * p.z());
-	if (!(offset <= kMaxSensorOffset) || !std::isfinite(p.yaw()) || !std::isfinite(p.pitch()) || !std::isfinite(p.roll()))
+	if (!(offset <= kMaxSensorOffset) || !std::isfinite(p.yaw()) || !std::isfinite(p.pitch()) ||
+		!std::isfinite(p.roll()))
 		fail("2D scan with its sensor at (" + std::to_string(p.x()) + ", " + std::to_string(p.y()) + ", " +
 			 std::to_string(p.z()) + ") m, yaw " + std::to_string(p.yaw()) + " (at most " +
 			 std::to_string(int(kMaxSensorOffset)) + " m from the robot)");

@@ -72,8 +72,7 @@ double parseDouble(std::string_view tok, const TextPos& pos, const std::string& 
 	return v;
 }
 
-double parseBounded(std::string_view tok, const TextPos& pos, const std::string& what, double limit,
-					const char* unit)
+double parseBounded(std::string_view tok, const TextPos& pos, const std::string& what, double limit, const char* unit)
 {
 	const double v = parseDouble(tok, pos, what);
 	if (std::abs(v) > limit)

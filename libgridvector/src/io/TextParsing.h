@@ -35,8 +35,7 @@ std::vector<std::string_view> splitTokens(std::string_view line);
  * (hexadecimal floats such as 0x1p3 included: no log or .ini writes them). */
 double parseDouble(std::string_view tok, const TextPos& pos, const std::string& what);
 /** The same, also within [-limit, limit]: else "file:line: <what> is V (beyond +-limit <unit>)". */
-double parseBounded(std::string_view tok, const TextPos& pos, const std::string& what, double limit,
-					const char* unit);
+double parseBounded(std::string_view tok, const TextPos& pos, const std::string& what, double limit, const char* unit);
 /** The whole token as an integer in [lo, hi]. */
 long parseInt(std::string_view tok, const TextPos& pos, const std::string& what, long lo, long hi);
 

@@ -182,6 +182,9 @@ gridvector::GridVectorConfig readConfigV1(mrpt::serialization::CArchive& in)
 	return c;
 }
 
+/** Columns a stored grid may have beyond its length: Intel's and ACES's maps have at most 2. */
+constexpr double kMaxExtraColumns = 4;
+
 bool finite(const mrpt::math::TPoint2D& p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
 /** The stored likelihood options pass the checks of the .ini path (TLikelihoodOptions::loadFromConfigFile). */
@@ -271,7 +274,10 @@ void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ve
 		in >> s.x >> s.y >> e.x >> e.y >> cols >> scanIndex >> t >> id >> state >> merged;
 		// (the GridVector constructor sizes a grid from the length before fromParts replaces it)
 		const double lengthInCells = std::hypot(e.x - s.x, e.y - s.y) / cfg.grid.resolution;
-		if (cols < 1 || cols > 10'000'000 || state > 2 || !finite(s) || !finite(e) || !(lengthInCells < 1e6))
+		// a grid covers its vector: cols is ceil(length / resolution), up to 2 more after a merge (Algorithm 2)
+		const bool covers = cols + 1 >= lengthInCells && cols <= lengthInCells + kMaxExtraColumns;
+		if (cols < 1 || cols > 10'000'000 || state > 2 || !finite(s) || !finite(e) || !(lengthInCells < 1e6) ||
+			!covers)
 			throw std::runtime_error("CGridVectorMap: corrupt vector record " + std::to_string(i));
 		std::vector<GridCell> cells = readCells(in, size_t(cfg.grid.halfWidth * 2 + 1) * size_t(cols));
 		requireCells(cells, i);

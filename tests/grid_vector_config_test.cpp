@@ -453,7 +453,7 @@ TEST(GridVectorConfig, LineWithoutEqualsIsAnErrorNamingTheLine)
 {
 	EXPECT_EQ(fileLoadError("[gridvector_grid]\nresolution 0.05\n"),
 			  "gv_layout_test.ini:2: 'resolution 0.05' is not 'key = value' (MRPT would skip the line)");
-	EXPECT_EQ(fileLoadError("; comment\n# comment\n// comment\n\n[gridvector_grid]\n  resolution = 0.05 ; ok\n"), "");
+	EXPECT_EQ(fileLoadError("; comment\n# comment\n\n[gridvector_grid]\n  resolution = 0.05 ; ok\n"), "");
 }
 
 TEST(GridVectorConfig, ConfigFromDevZeroStopsAtTheLineLimit)

@@ -355,7 +355,7 @@ TEST(RawlogReader, CorruptCountsAreRejectedBeforeMrptAllocates)
 		}
 		std::vector<char> b = good;  // a count that fits the limit but not the bytes left
 		ASSERT_TRUE(patchU32(b, b.size() / 2, 181, 90000));
-		EXPECT_NE(parseError(b).find("the scan's beam count needs 450000 bytes"), std::string::npos) << parseError(b);
+		EXPECT_NE(parseError(b).find("the scan's beam count is 90000: needs 450000 bytes"), std::string::npos) << parseError(b);
 	}
 	// a sensory frame announcing 2^30 observations; an action with an invalid estimation method
 	std::vector<char> sf = rawlogBytes(threeScans(), RawlogFormat::SensoryFrames);

@@ -1,10 +1,10 @@
 // Mutation fuzzing of every reader, in process: CARMEN logs, rawlogs (both layouts), .gvmap files
 // and .ini files, mutated with extreme values, corrupt length fields, byte flips, insertions and
 // truncations from a fixed seed. Every input must be read or rejected with one line naming the
-// file ("FILE: problem", "FILE:LINE: problem"); no signal, no input over kSecondsPerInput, peak RSS
-// under kMaxRssMb, address space capped at kAddressSpaceMb (a runaway allocation is a failure,
-// not a rejection). Accepted logs go on through extraction and map insertion, accepted maps
-// through their vectors: the geometry a reader lets through must not crash what follows.
+// file ("FILE: problem", "FILE:LINE: problem") and nothing printed to stderr; no signal, no input over
+// kSecondsPerInput, peak RSS under kMaxRssMb, address space capped at kAddressSpaceMb (a runaway allocation is a
+// failure, not a rejection). Accepted logs go on through extraction and map insertion, accepted maps through their
+// vectors: the geometry a reader lets through must not crash what follows.
 //
 // GV_FUZZ_INPUTS (default 12000, 3000 per format) and GV_FUZZ_SEED (default 1) set the corpus:
 // the longer mode of doc/benchmarks.md is GV_FUZZ_INPUTS=200000.
@@ -24,6 +24,7 @@
 #include <mrpt/poses/CPose3D.h>
 #include <mrpt/serialization/CArchive.h>
 
+#include <fcntl.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
@@ -345,7 +346,22 @@ struct Tally
 {
 	size_t inputs = 0, accepted = 0, rejected = 0;
 	std::vector<std::string> failures;  //!< empty: every rejection was one line naming the file
+	int stderrFd =
+		-1;  //!< stderr goes to this file while fuzzing: a reader must not print (a tool's error is one line)
+	off_t stderrSize = 0;
 };
+
+/** What was written to stderr since the last call (MRPT prints some problems before it throws). */
+std::string newStderr(Tally& t)
+{
+	std::fflush(stderr);
+	const off_t end = ::lseek(t.stderrFd, 0, SEEK_END);
+	if (end <= t.stderrSize) return "";
+	std::string text(size_t(end - t.stderrSize), '\0');
+	(void)!::pread(t.stderrFd, text.data(), text.size(), t.stderrSize);
+	t.stderrSize = end;
+	return text;
+}
 
 /** Downstream of an accepted log: the first scans through extraction and map insertion. */
 void useLog(const io::LogData& log)
@@ -392,12 +408,17 @@ void check(Tally& t, const std::string& kind, size_t i, const std::string& name,
 		t.failures.push_back(kind + " #" + std::to_string(i) + ": a non-std exception");
 	}
 	::alarm(0);
+	const std::string printed = newStderr(t);
+	if (!printed.empty())
+		t.failures.push_back(kind + " #" + std::to_string(i) + ": printed to stderr: " + printed.substr(0, 300));
 }
+
+int realStderr = 2;  //!< the terminal's stderr while fd 2 goes to the capture file
 
 void onAlarm(int)
 {
 	const char msg[] = "reader_fuzz_test: an input took longer than the limit (a hang)\n";
-	(void)!::write(2, msg, sizeof msg - 1);
+	(void)!::write(realStderr, msg, sizeof msg - 1);
 	std::_Exit(3);
 }
 
@@ -488,6 +509,13 @@ TEST(ReaderFuzz, EveryReaderRejectsMutantsWithOneLineAndNoRunaway)
 	seeds();
 	const auto t0 = std::chrono::steady_clock::now();
 	Tally t;
+	const std::string errPath = (workDir() / "stderr.txt").string();
+	t.stderrFd = ::open(errPath.c_str(), O_RDWR | O_CREAT | O_TRUNC, 0600);
+	ASSERT_GE(t.stderrFd, 0);
+	std::fflush(stderr);
+	const int savedStderr = ::dup(2);
+	realStderr = savedStderr;
+	::dup2(t.stderrFd, 2);
 	struct Kind
 	{
 		const char* name;
@@ -500,6 +528,11 @@ TEST(ReaderFuzz, EveryReaderRejectsMutantsWithOneLineAndNoRunaway)
 		k.run(t, rng, total / 4);
 		std::printf("%-7s %zu inputs, %zu accepted\n", k.name, t.inputs - before, t.accepted - acc);
 	}
+	std::fflush(stderr);
+	::dup2(savedStderr, 2);
+	realStderr = 2;
+	::close(savedStderr);
+	::close(t.stderrFd);
 	const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	std::printf("fuzz: %zu inputs (seed %zu) in %.1f s: %zu accepted, %zu rejected, %zu failures, peak RSS %ld MB\n",
 				t.inputs, envSize("GV_FUZZ_SEED", 1), secs, t.accepted, t.rejected, t.failures.size(), peakRssMb());

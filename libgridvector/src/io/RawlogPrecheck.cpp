@@ -1,5 +1,8 @@
 #include "io/RawlogPrecheck.h"
 #include "io/InputLimits.h"
+#include "io/TextParsing.h"
+
+#include <mrpt/rtti/CObject.h>
 
 #include <cstdint>
 #include <cstring>
@@ -35,6 +38,7 @@ class Walker
 			if (inContainer) fail("a null object inside a sensory frame or action collection");
 			return endFlag(name);
 		}
+		requireCreatable(name);
 		const size_t ns = name.rfind("::");  // MRPT 2 writes "mrpt::obs::CSensoryFrame", MRPT 1 "CSensoryFrame"
 		payload(ns == std::string::npos ? name : name.substr(ns + 2), version_);
 		endFlag(name);
@@ -43,11 +47,9 @@ class Walker
    private:
 	[[noreturn]] void fail(const std::string& what) const { throw std::runtime_error(what); }
 
-	void need(size_t k, const char* what) const
+	void need(size_t k, const char*) const
 	{
-		if (k > n_ - pos_)
-			fail(std::string(what) + " needs " + std::to_string(k) + " bytes, " + std::to_string(n_ - pos_) +
-				 " are left in the file");
+		if (k > n_ - pos_) throw TruncatedEntry();
 	}
 	template <class T>
 	T get(const char* what)
@@ -69,8 +71,18 @@ class Walker
 		const uint32_t c = get<uint32_t>(what);
 		if (c > limit)
 			fail(std::string(what) + " is " + std::to_string(c) + " (at most " + std::to_string(limit) + ")");
-		need(size_t(c) * itemBytes, what);
+		if (size_t(c) * itemBytes > n_ - pos_)
+			fail(std::string(what) + " is " + std::to_string(c) + ": needs " + std::to_string(size_t(c) * itemBytes) +
+				 " bytes, " + std::to_string(n_ - pos_) + " are left in the file");
 		return c;
+	}
+
+	/** MRPT prints to stderr, then fails, on a class it cannot create (an abstract one): say it here. */
+	void requireCreatable(const std::string& name) const
+	{
+		const mrpt::rtti::TRuntimeClassId* id = mrpt::rtti::findRegisteredClass(name);
+		if (!id) fail("an object of class '" + printableToken(name) + "', which is not registered");
+		if (!id->ptrCreateObject) fail("an object of abstract class '" + name + "'");
 	}
 
 	std::string header()

@@ -67,6 +67,10 @@ LogData RawlogParser::parse(const std::vector<char>& bytes)
 			// MRPT's deserialisers trust the counts in the stream: check them in the bytes first
 			precheckRawlogEntry(reinterpret_cast<const unsigned char*>(bytes.data()) + at, bytes.size() - at);
 		}
+		catch (const TruncatedEntry& e)
+		{
+			fail(e.what());
+		}
 		catch (const std::runtime_error& e)
 		{
 			fail(std::string("corrupt rawlog object (") + e.what() + ")");

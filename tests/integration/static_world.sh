@@ -12,7 +12,7 @@ fail() { echo "FAIL: $*" >&2; exit 1; }
 "$BIN/gv-em-slam" --input "$LOG" --out "$T/out" --quiet || fail "gv-em-slam failed (exit $?)"
 # vectors.txt: x1 y1 x2 y2 p_static static|dynamic
 share=$(awk '!/^#/ { l = sqrt(($3 - $1) ^ 2 + ($4 - $2) ^ 2); a += l; if ($6 != "dynamic") s += l }
-  END { printf "%.4f", a > 0 ? s / a : 0 }' "$T/out/vectors.txt")
+  END { printf "%.4f", (a > 0 ? s / a : 0) }' "$T/out/vectors.txt")
 doors=$(grep -vc '^#' "$T/out/doors.txt" || true)
 echo "static_world: static share $share of the vector length, $doors doors"
 awk -v s="$share" 'BEGIN { exit !(s >= 0.95) }' || fail "static share $share < 0.95"

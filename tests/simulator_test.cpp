@@ -5,6 +5,7 @@
 #include <gridvector/io/LogReader.h>
 #include "sim/BuiltinWorlds.h"
 #include "sim/OdometryNoise.h"
+#include "sim/People.h"
 #include "sim/Simulator.h"
 #include "sim/TruthFiles.h"
 
@@ -320,4 +321,51 @@ TEST(Scene, FanCastingEqualsOneRayAtATime)
 			}
 		}
 	}
+}
+
+// --door-swing-period: a door used all day swings again every P..2P s, many times a run;
+// 0 keeps the 2-4 swings of a run (and the same random draws: the default logs do not change)
+TEST(Simulator, DoorsSwingEveryPeriodWhenAsked)
+{
+	SimOptions o = small("corridor-loop", 1500);  // 300 s
+	const SimResult few = simulate(o);
+	for (const auto& tl : few.doors) EXPECT_LE(tl.swings.size(), 4u);
+	o.doorSwingPeriod = 30;
+	const SimResult many = simulate(o);
+	ASSERT_EQ(many.doors.size(), few.doors.size());
+	for (const auto& tl : many.doors)
+	{
+		EXPECT_GE(tl.swings.size(), 4u);  // 300 s at one swing per 30-60 s (+ the swing's own 1-2.5 s)
+		EXPECT_LE(tl.swings.size(), 10u);
+		for (size_t k = 1; k < tl.swings.size(); ++k)
+		{
+			EXPECT_GE(tl.swings[k].t0 - tl.swings[k - 1].t0, 30 - 1e-9);
+			EXPECT_LE(tl.swings[k].t0 - tl.swings[k - 1].t0, 60 + 1e-9);
+			EXPECT_NE(tl.swings[k].from, tl.swings[k].to);  // open <-> closed each time
+		}
+	}
+	o.doorSwingPeriod = 2;
+	EXPECT_THROW(o.validate(), SimOptionError);
+	o.doorSwingPeriod = 0;
+	o.pauseS = -1;
+	EXPECT_THROW(o.validate(), SimOptionError);
+}
+
+// --pause-s: a pauser (every third person, the second) stands still pause_s..2 pause_s s
+TEST(Simulator, PausersStandStillForMinutesWhenAsked)
+{
+	const World w = makeWorld("corridor-loop");
+	const WalkGraph graph(w, 0.35);
+	const auto stillFor = [&](double pauseS) {
+		Random rng(7);
+		Crowd crowd(graph, w.walls, 3, {w.start.x, w.start.y}, rng, pauseS);
+		const Vec2 start = crowd.people().at(1).pos, far(-100, -100);  // the robot far away
+		double t = 0;
+		while (t < 400 && (crowd.people().at(1).pos - start).norm() < 1e-9) crowd.step(0.2, far), t += 0.2;
+		return t;
+	};
+	EXPECT_LE(stillFor(0), 10.2);  // the first pause: 0-10 s
+	const double minutes = stillFor(120);
+	EXPECT_GE(minutes, 120 - 0.2);
+	EXPECT_LE(minutes, 240 + 0.2);
 }

@@ -30,6 +30,12 @@ printf '[gv_sim]\nworld = office\npeople = 6\nbeams = 181\n' > "$T/sim.ini"
 [ "$(grep -c '^FLASER 181 ' "$T/d/sim.log")" -eq 2000 ] || fail "--scans 2000 with 181 beams"
 grep -q "^people 6$" "$T/d/sim_info.txt" || fail "ini people"
 
+# doors used all day (a swing every 30-60 s) and pausers standing for minutes: more swings than the default run's
+"$BIN/gv-sim" --out "$T/f" --door-swing-period 30 --pause-s 120 --quiet
+few=$(awk '$1 == "door_swings" { print $2 }' "$T/a/sim_info.txt"); many=$(awk '$1 == "door_swings" { print $2 }' "$T/f/sim_info.txt")
+[ "$many" -ge $((3 * few)) ] || fail "--door-swing-period 30: $many swings against $few by default"
+grep -q "^pause_s 120$" "$T/f/sim_info.txt" || fail "--pause-s not in sim_info.txt"
+
 # bad options: one line, exit 2; unwritable output: exit 1
 set +e
 "$BIN/gv-sim" --out "$T/e" --peeple 3 2> "$T/err.txt"; rc=$?

@@ -15,8 +15,9 @@ size_t nearestNode(const WalkGraph& g, const Vec2& p)
 }
 }  // namespace
 
-Crowd::Crowd(const WalkGraph& graph, const std::vector<Segment>& walls, int count, const Vec2& robotStart, Random& rng)
-	: graph_(graph), walls_(walls), rng_(rng)
+Crowd::Crowd(const WalkGraph& graph, const std::vector<Segment>& walls, int count, const Vec2& robotStart, Random& rng,
+			 double pauseS)
+	: graph_(graph), walls_(walls), rng_(rng), pauseS_(pauseS)
 {
 	std::vector<size_t> starts;
 	for (size_t i = 0; i < graph.size(); i++)
@@ -29,10 +30,16 @@ Crowd::Crowd(const WalkGraph& graph, const std::vector<Segment>& walls, int coun
 		p.pos = graph.node(starts[size_t(rng_.uniformInt(0, int(starts.size()) - 1))]);
 		p.radius = rng_.uniform(0.2, 0.28);
 		p.speed = rng_.uniform(0.6, 1.3);
-		if (p.kind == Person::Kind::Pauser) p.pauseLeft = rng_.uniform(0, 10);
+		if (p.kind == Person::Kind::Pauser) p.pauseLeft = pauserPause(0, 10);
 		people_.push_back(p);
 		newGoal(people_.back());
 	}
+}
+
+// A pauser's pause: lo..hi s, or pauseS..2 pauseS s when set (one draw either way).
+double Crowd::pauserPause(double lo, double hi)
+{
+	return pauseS_ > 0 ? rng_.uniform(pauseS_, 2 * pauseS_) : rng_.uniform(lo, hi);
 }
 
 void Crowd::newGoal(Person& p)
@@ -98,7 +105,7 @@ void Crowd::step(double dt, const Vec2& robot)
 		if (p.path.empty())
 		{
 			const bool pause = rng_.chance(p.kind == Person::Kind::Pauser ? 0.7 : 0.2);
-			if (pause) p.pauseLeft = p.kind == Person::Kind::Pauser ? rng_.uniform(4, 15) : rng_.uniform(1, 4);
+			if (pause) p.pauseLeft = p.kind == Person::Kind::Pauser ? pauserPause(4, 15) : rng_.uniform(1, 4);
 			newGoal(p);
 			continue;
 		}

@@ -30,8 +30,10 @@ struct Person
 class Crowd
 {
    public:
-	/** count people at random nodes at least 3 m from the robot's start. */
-	Crowd(const WalkGraph& graph, const std::vector<Segment>& walls, int count, const Vec2& robotStart, Random& rng);
+	/** count people at random nodes at least 3 m from the robot's start; pauseS > 0: a pauser's
+	 * pauses last pauseS..2 pauseS s (0: 4-15 s). */
+	Crowd(const WalkGraph& graph, const std::vector<Segment>& walls, int count, const Vec2& robotStart, Random& rng,
+		  double pauseS = 0);
 	/** Advances everyone by dt seconds; robot is the robot's current position. */
 	void step(double dt, const Vec2& robot);
 	const std::vector<Person>& people() const { return people_; }
@@ -42,10 +44,12 @@ class Crowd
 	void newGoal(Person& p);
 	void walk(Person& p, double dt, const Vec2& robot);
 	bool freeOfWalls(const Vec2& c, double r) const;
+	double pauserPause(double lo, double hi);
 
 	const WalkGraph& graph_;
 	const std::vector<Segment>& walls_;
 	Random& rng_;
+	double pauseS_;
 	std::vector<Person> people_;
 };
 

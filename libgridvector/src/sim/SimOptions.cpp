@@ -29,6 +29,9 @@ void SimOptions::validate() const
 	require(laps >= 0 && laps <= 1000, "laps", "must be in 0..1000");
 	require(scans >= 0 && scans <= 10000000, "scans", "must be in 0..10000000");
 	require(people >= -1 && people <= 200, "people", "must be in -1..200");
+	require(doorSwingPeriod == 0 || (doorSwingPeriod >= 5 && doorSwingPeriod <= 3600), "door_swing_period",
+			"must be 0 or in [5, 3600] s");
+	require(pauseS >= 0 && pauseS <= 3600, "pause_s", "must be in [0, 3600] s");
 	require(speed > 0 && speed <= 3, "speed", "must be in (0, 3] m/s");
 	require(turnRateDeg > 0 && turnRateDeg <= 360, "turn_rate_deg", "must be in (0, 360]");
 	require(dt > 0 && dt <= 5, "dt", "must be in (0, 5] s");

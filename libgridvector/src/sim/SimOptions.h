@@ -27,6 +27,8 @@ struct SimOptions
 	int people = -1;  //!< -1: the world's default
 	bool doors = true;  //!< doors swing during the run (false: they stay as they start)
 	bool movedObject = true;  //!< the object changes place between visits (false: it stays)
+	double doorSwingPeriod = 0;  //!< > 0: each door swings every period..2 period s (0: 2-4 swings per run)
+	double pauseS = 0;  //!< > 0: pausers stand still pause_s..2 pause_s s (0: 4-15 s)
 	double speed = 0.5;
 	double turnRateDeg = 45;
 	double dt = 0.2;
@@ -49,6 +51,9 @@ struct SimOptions
 		v("people", people, "number of walking people (-1: the world's default)");
 		v("doors", doors, "doors swing between open and closed during the run");
 		v("moved_object", movedObject, "the world's movable object changes place between two visits");
+		v("door_swing_period", doorSwingPeriod,
+		  "> 0: every door swings again after this to twice this [s] (0: 2-4 swings in the run)");
+		v("pause_s", pauseS, "> 0: pausers stand still for this to twice this [s] (0: 4-15 s)");
 		v("speed", speed, "robot speed [m/s]");
 		v("turn_rate_deg", turnRateDeg, "robot turn rate [deg/s]");
 		v("dt", dt, "time between scans [s]");

@@ -65,6 +65,7 @@ class Simulator
 
    private:
 	void makeDoorTimelines(double duration);
+	std::vector<double> swingTimes(double duration);
 	void chooseMoveTime(const std::vector<mrpt::math::TPose2D>& path);
 	void fillScene(Scene& scene, double runTime, const Crowd& crowd) const;
 	void account(const LaserReading& r, const mrpt::math::TPose2D& pose, double t);
@@ -102,6 +103,23 @@ Simulator::Simulator(const SimOptions& opt)
 	for (size_t i = 0; i < w.walls.size(); i++) seenBins_[i].assign(size_t(w.walls[i].length() / kSeenBin) + 1, false);
 }
 
+// When a door starts to swing: 2-4 times anywhere in the run, or every period..2 period s.
+std::vector<double> Simulator::swingTimes(double duration)
+{
+	const double period = res_.options.doorSwingPeriod;
+	std::vector<double> times;
+	if (period > 0)
+	{
+		for (double t = doorRng_.uniform(0, period); t < duration; t += doorRng_.uniform(period, 2 * period))
+			times.push_back(t);
+		return times;
+	}
+	times.resize(size_t(doorRng_.uniformInt(2, 4)));
+	for (double& t : times) t = doorRng_.uniform(0.05, 0.95) * duration;
+	std::sort(times.begin(), times.end());
+	return times;
+}
+
 void Simulator::makeDoorTimelines(double duration)
 {
 	for (const DoorSpec& d : res_.world.doors)
@@ -112,9 +130,7 @@ void Simulator::makeDoorTimelines(double duration)
 		};
 		const bool startsOpen = doorRng_.chance(0.5);
 		tl.initial = startsOpen ? openAngle() : d.closedAngle;
-		std::vector<double> times(size_t(doorRng_.uniformInt(2, 4)));
-		for (double& t : times) t = doorRng_.uniform(0.05, 0.95) * duration;
-		std::sort(times.begin(), times.end());
+		const std::vector<double> times = swingTimes(duration);
 		double angle = tl.initial, free = 0;
 		for (double t : times)
 		{
@@ -236,7 +252,8 @@ SimResult Simulator::run(const std::function<void(double)>& progress)
 	makeDoorTimelines(duration);
 	chooseMoveTime(path);
 	const WalkGraph graph(w, 0.35);
-	Crowd crowd(graph, w.walls, opt.people >= 0 ? opt.people : w.defaultPeople, {w.start.x, w.start.y}, peopleRng_);
+	Crowd crowd(graph, w.walls, opt.people >= 0 ? opt.people : w.defaultPeople, {w.start.x, w.start.y}, peopleRng_,
+				opt.pauseS);
 	res_.stats.people = crowd.people().size();
 	NoisyOdometry odometry({opt.sigmaT, opt.sigmaR, opt.driftDegPerM}, odoRng_);
 	Scene scene(w.walls);

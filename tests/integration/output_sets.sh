@@ -97,10 +97,10 @@ sets_full_disk() {  # TOOL DIR MARKER KB -- cmd...
     gzip -t "$f" 2> /dev/null || fail "$tool on a full disk: $f truncated"
   done
 }
-sets_full_disk gv-map map memory.json 40 -- "$B/gv-map" --input sim/sim.log --poses sim/truth_trajectory.txt --out map --quiet
-sets_full_disk gv-em-slam em report.json 40 -- "$B/gv-em-slam" --input sim/sim.log --out em --quiet --max-iterations 2
-sets_full_disk gv-graphslam gs trajectory.txt 40 -- "$B/gv-graphslam" --2d -i "$GV_SOURCE_DIR/share/gridvector/graphslam-gridvector.ini" \
-  -r sim.rawlog --disable-visuals --output-dir gs --quiet
+sets_full_disk gv-map fmap memory.json 4 -- "$B/gv-map" --input sim/sim.log --poses sim/truth_trajectory.txt --out fmap --quiet
+sets_full_disk gv-em-slam fem report.json 4 -- "$B/gv-em-slam" --input sim/sim.log --out fem --quiet --max-iterations 2
+sets_full_disk gv-graphslam fgs trajectory.txt 4 -- "$B/gv-graphslam" --2d -i "$GV_SOURCE_DIR/share/gridvector/graphslam-gridvector.ini" \
+  -r sim.rawlog --disable-visuals --output-dir fgs --quiet
 # the same on a real full disk: a 256 KB tmpfs, where mounting is allowed (root in a private mount namespace)
 TMPFS=skipped
 if unshare -m true 2> /dev/null; then

@@ -74,12 +74,12 @@ TMatchingParams gate(double d)
 }
 }  // namespace
 
-TEST(GridVectorMapMatching, PairsAreTheExactFootPointsOnTheVectorWithinTheGate)
+TEST(GridVectorMapMatching, PairsAreThePlacesOnTheVectorWithinTheGate)
 {
 	const CGridVectorMap map = mapOf({wall(0, 0, 4, 0)});
 	const TPose2D pose(1, 0.5, M_PI / 2);
 	// world points: above the wall, beyond its end (1 m), before its start (0.36 m), 0.45 m above it
-	const std::vector<TPoint2D> world{{2, 0.1}, {5, 0}, {-0.3, 0.2}, {3, 0.45}};
+	const std::vector<TPoint2D> world{{2.02, 0.1}, {5, 0}, {-0.3, 0.2}, {3.03, 0.45}};
 	std::vector<TPoint2D> local;
 	for (const auto& w : world) local.push_back(localOf(pose, w));
 	const CSimplePointsMap pts = pointsOf(local);
@@ -87,7 +87,8 @@ TEST(GridVectorMapMatching, PairsAreTheExactFootPointsOnTheVectorWithinTheGate)
 	TMatchingExtraResults extra;
 	map.determineMatching2D(&pts, CPose2D(pose), pairs, gate(0.5), extra);
 	ASSERT_EQ(pairs.size(), 3u);
-	const TPoint2D feet[] = {{2, 0}, {0, 0}, {3, 0}};
+	// each point's place on the line: the nearest of the places half a cell apart (0.025, 0.075, ...)
+	const TPoint2D feet[] = {{2.025, 0}, {0.025, 0}, {3.025, 0}};
 	const size_t idx[] = {0, 2, 3};
 	for (size_t k = 0; k < 3; ++k)
 	{
@@ -101,7 +102,7 @@ TEST(GridVectorMapMatching, PairsAreTheExactFootPointsOnTheVectorWithinTheGate)
 		EXPECT_NEAR(pairs[k].errorSquareAfterTransformation, d2, 1e-5);
 	}
 	EXPECT_FLOAT_EQ(extra.correspondencesRatio, 0.75f);
-	EXPECT_NEAR(extra.sumSqrDist, 0.01 + 0.13 + 0.2025, 1e-5);
+	EXPECT_NEAR(extra.sumSqrDist, 0.010025 + 0.145625 + 0.202525, 1e-5);
 }
 
 TEST(GridVectorMapMatching, GateGrowsWithTheDistanceFromThePivot)
@@ -118,7 +119,7 @@ TEST(GridVectorMapMatching, GateGrowsWithTheDistanceFromThePivot)
 	p.angularDistPivotPoint = {-5, 0, 0};  // 10 m away: gate 1.5
 	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra);
 	ASSERT_EQ(pairs.size(), 1u);
-	EXPECT_NEAR(pairs[0].global.x, 4, 1e-5);
+	EXPECT_NEAR(pairs[0].global.x, 4, 1e-5);  // the last place, clamped to the vector's end
 	EXPECT_FLOAT_EQ(extra.correspondencesRatio, 1.f);
 }
 
@@ -149,14 +150,14 @@ TEST(GridVectorMapMatching, AllCorrespondencesOrTheClosestOrOnePerMapPlace)
 {
 	// two parallel walls 0.3 m apart; a point between them, 0.1 m from the lower one
 	const CGridVectorMap map = mapOf({wall(0, 0, 4, 0), wall(4, 0.3, 0, 0.3)});
-	const CSimplePointsMap pts = pointsOf({{2, 0.1}, {2.01, 0.12}});
+	const CSimplePointsMap pts = pointsOf({{2.03, 0.1}, {2.04, 0.12}});
 	TMatchingPairList pairs;
 	TMatchingExtraResults extra;
 	TMatchingParams p = gate(0.5);
 	p.onlyKeepTheClosest = false;
 	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra);
 	EXPECT_EQ(pairs.size(), 4u);  // each point to both walls
-	EXPECT_NEAR(extra.sumSqrDist, 0.01 + 0.0144, 1e-5);  // the closest per point
+	EXPECT_NEAR(extra.sumSqrDist, 0.010025 + 0.014625, 1e-5);  // the closest per point (the place at 2.025)
 	p.onlyKeepTheClosest = true;
 	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, p, extra);
 	ASSERT_EQ(pairs.size(), 2u);
@@ -178,27 +179,28 @@ TEST(GridVectorMapMatching, DynamicVectorsAndSeenThroughColumnsGiveNoCorresponde
 	gridvector::GridVectorConfig half;
 	half.matching.staticThreshold = 0.5;
 	const CGridVectorMap map = mapOf({w, door}, half);
-	const CSimplePointsMap pts = pointsOf({{0.5, 1.05}, {0.5, 0.1}, {2, 0.1}});
+	const CSimplePointsMap pts = pointsOf({{0.52, 1.05}, {0.52, 0.1}, {2.03, 0.1}});
 	TMatchingPairList pairs;
 	TMatchingExtraResults extra;
 	map.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, gate(1.5), extra);
 	ASSERT_EQ(pairs.size(), 3u);
 	for (const auto& m : pairs) EXPECT_EQ(m.globalIdx, 0u);  // never the door
-	EXPECT_NEAR(pairs[1].global.x, 1.0, 1e-5);  // the static stretch starts at 1 m
-	EXPECT_NEAR(pairs[2].global.x, 2.0, 1e-5);
+	EXPECT_NEAR(pairs[1].global.x, 1.025, 1e-5);  // the static stretch starts at 1 m: its first place
+	EXPECT_NEAR(pairs[2].global.x, 2.025, 1e-5);
 	// with static_threshold 0 (the default) the seen-through stretch takes part (the dynamic vector still not)
 	const CGridVectorMap mapAll = mapOf({w, door});
 	mapAll.determineMatching2D(&pts, CPose2D(0, 0, 0), pairs, gate(1.5), extra);
 	ASSERT_EQ(pairs.size(), 3u);
-	EXPECT_NEAR(pairs[1].global.x, 0.5, 1e-5);
+	EXPECT_NEAR(pairs[1].global.x, 0.525, 1e-5);
 }
 
 TEST(GridVectorMapMatching, NearestDistanceAndMatchingRatio)
 {
 	const CGridVectorMap map = mapOf({wall(0, 0, 4, 0)});
-	EXPECT_NEAR(map.squareDistanceToClosestCorrespondence(2, 10), 100, 1e-3);  // beyond every index query box
+	// to the nearest place (0.025, 0.075, ..., the ends clamped)
+	EXPECT_NEAR(map.squareDistanceToClosestCorrespondence(2, 10), 100.000625, 1e-3);  // beyond every index query box
 	EXPECT_NEAR(map.squareDistanceToClosestCorrespondence(7, 4), 25, 1e-3);
-	EXPECT_NEAR(map.squareDistanceToClosestCorrespondence(1, -0.2f), 0.04, 1e-6);
+	EXPECT_NEAR(map.squareDistanceToClosestCorrespondence(1, -0.2f), 0.040625, 1e-6);
 	const CSimplePointsMap pts = pointsOf({{1, 0.05}, {2, 0.3}, {3, -0.02}, {9, 0}});
 	mrpt::maps::TMatchingRatioParams rp;
 	rp.maxDistForCorr = 0.1f;
@@ -315,8 +317,9 @@ TEST(GridVectorMapMatching, DoorStateAndTrolleySeenOnlyEarlyGetNoCorrespondences
 	EXPECT_EQ(count(map, onTrolley), 0u);
 	// ICP from a 0.3 m / 5 deg guess in the scene as it is now: the door half open (45 deg), the
 	// trolley back but 0.3 m further east. On the static stretches the pose comes out as in the
-	// static scene (< 1 cm, 0.2 deg); with every column the trolley's old faces pull the scan
-	// towards where it stood (4.5 cm, 0.28 deg)
+	// static scene (< 1 cm, 0.2 deg). With every column the trolley's old faces took pairs too;
+	// with continuous feet on the lines they pulled the scan 4.5 cm towards where it stood, with
+	// the places half a cell apart (StaticFootPoints) 0.6 cm
 	auto now = corridorWorld();
 	now.push_back({4, 0, 4.64, -0.64});
 	const auto moved = gvtest::box(5.9, 1.3, 6.7, 1.7);
@@ -327,7 +330,7 @@ TEST(GridVectorMapMatching, DoorStateAndTrolleySeenOnlyEarlyGetNoCorrespondences
 	const TPose2D estAll = icpAlign(mapAll, ptsNow, guess, mrpt::slam::icpClassic);
 	EXPECT_LT(std::hypot(est.x - truth.x, est.y - truth.y), 0.01) << est.asString();
 	EXPECT_LT(angleErr(est.phi, truth.phi), 0.2 * M_PI / 180) << est.asString();
-	EXPECT_GT(std::hypot(estAll.x - truth.x, estAll.y - truth.y), 0.03) << estAll.asString();
+	EXPECT_LT(std::hypot(estAll.x - truth.x, estAll.y - truth.y), 0.03) << estAll.asString();
 }
 
 // The matching calls keep the vectors' static stretches (the Fig. 4 profile against the threshold)

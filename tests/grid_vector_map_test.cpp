@@ -101,6 +101,49 @@ TEST(CGridVectorMap, MisspeltSectionOfTheMapIsRejectedMrptsOwnAccepted)
 	EXPECT_TRUE(mm.mapByClass<CGridVectorMap>()->isEmpty());
 }
 
+TEST(CGridVectorMap, MrptsOwnSectionNamesCarryTheMapsKeys)
+{
+	// as for COccupancyGridMap2D: the layout in creationOpts, what insertion uses in insertOpts
+	const auto mm = multiMapFrom(
+		"[map]\ngridVectorMap_count = 1\n"
+		"[map_gridVectorMap_00_creationOpts]\nresolution = 0.05\nhalf_width = 2\nenableSaveAs3DObject = false\n"
+		"[map_gridVectorMap_00_insertOpts]\nsplit_threshold = 0.03\nmin_points = 5\nhit_band = 0.04\n"
+		"merge_on_insert = false\n"
+		"[map_gridVectorMap_00_likelihoodOpts]\nsigma = 0.08\n");
+	const auto gv = mm.mapByClass<CGridVectorMap>();
+	ASSERT_TRUE(gv);
+	EXPECT_DOUBLE_EQ(gv->config().grid.resolution, 0.05);
+	EXPECT_EQ(gv->config().grid.halfWidth, 2);
+	EXPECT_FALSE(gv->genericMapParams.enableSaveAs3DObject);
+	EXPECT_DOUBLE_EQ(gv->config().extraction.splitThreshold, 0.03);
+	EXPECT_EQ(gv->config().extraction.minPoints, 5);
+	EXPECT_DOUBLE_EQ(gv->config().map.hitBand, 0.04);
+	EXPECT_FALSE(gv->config().map.mergeOnInsert);
+	EXPECT_DOUBLE_EQ(gv->likelihoodOptions.sigma, 0.08);
+	// each section takes only its groups' keys, each key once, in its range
+	const std::string head = "[map]\ngridVectorMap_count = 1\n";
+	EXPECT_NE(iniError(head + "[map_gridVectorMap_00_insertOpts]\nresolution = 0.05\n")
+				  .find("unknown key 'resolution' in section [map_gridVectorMap_00_insertOpts]"),
+			  std::string::npos);
+	EXPECT_NE(iniError(head + "[map_gridVectorMap_00_insertOpts]\nmaxDistanceInsertion = 15\n")
+				  .find("unknown key 'maxDistanceInsertion' in section [map_gridVectorMap_00_insertOpts]"),
+			  std::string::npos);
+	EXPECT_NE(iniError(head + "[map_gridVectorMap_00_creationOpts]\nresolution = 0.05\n"
+							  "[map_gridVectorMap_00_grid]\nresolution = 0.1\n")
+				  .find("[map_gridVectorMap_00_creationOpts] resolution is also set in [map_gridVectorMap_00_grid]"),
+			  std::string::npos);
+	EXPECT_NE(iniError(head + "[map_gridVectorMap_00_creationOpts]\nresolution = 5\n")
+				  .find("[map_gridVectorMap_00_creationOpts] resolution = '5' must be in (0, 1]"),
+			  std::string::npos);
+	EXPECT_NE(iniError(head + "[map_gridVectorMap_00_insertOpts]\nmin_points = three\n")
+				  .find("[map_gridVectorMap_00_insertOpts] min_points = 'three' is not an integer"),
+			  std::string::npos);
+	// a grid's likelihood-field names say which of ours they are
+	EXPECT_NE(iniError(head + "[map_gridVectorMap_00_likelihoodOpts]\nLF_stdHit = 0.2\n")
+				  .find("LF_stdHit is COccupancyGridMap2D's key; this map's is sigma"),
+			  std::string::npos);
+}
+
 TEST(CGridVectorMap, LikelihoodOptionsAreReadStrictly)
 {
 	for (const char* bad : {"sigma = abc", "sigma = 0", "decimation = 2.5", "zRandom = 1", "maxCorrDistance = nan"})
@@ -255,7 +298,7 @@ TEST(CGridVectorMap, LikelihoodPeaksAtTheTruePose)
 TEST(CGridVectorMap, LikelihoodEqualsTheFieldOverEveryVector)
 {
 	CGridVectorMap m = mapOfRoom();
-	const double prior = gridvector::OccupancyConversion::priorRatio(m.config().grid);
+	const double prior = m.vectors().front().priorRatio();
 	for (int decimation : {1, 2, 7})
 	{
 		m.likelihoodOptions.decimation = decimation;
@@ -273,16 +316,17 @@ TEST(CGridVectorMap, LikelihoodEqualsTheFieldOverEveryVector)
 					// every beam of the closed room is valid; rightToLeft, aperture pi
 					const double a = pose.phi - M_PI / 2 + M_PI * double(i) / double(n - 1), r = obs.getScanRange(i);
 					const mrpt::math::TPoint2D p(pose.x + r * std::cos(a), pose.y + r * std::sin(a));
-					double best = o.maxCorrDistance, hit = 0;
+					// MRPT's field: the best vector's Gaussian times its wall row's occupancy at the
+					// foot, never below the Gaussian at maxCorrDistance
+					double hit = std::exp(-o.maxCorrDistance * o.maxCorrDistance / (2 * o.sigma * o.sigma));
 					for (const auto& v : m.vectors())
 					{
 						const auto g = v.toGridFrame(p);
-						const double d = std::hypot(g.x - std::clamp(g.x, 0.0, v.length()), g.y);
-						if (d >= best) continue;
-						int row, col;
-						best = d;
-						hit = (v.cellOf(p, row, col) ? v.cell(row, col).occupancy(prior) : prior) *
-							  std::exp(-d * d / (2 * o.sigma * o.sigma));
+						const double u = std::clamp(g.x, 0.0, v.length()), d = std::hypot(g.x - u, g.y);
+						if (d >= o.maxCorrDistance) continue;
+						const int col = std::min(v.cols() - 1, int(u / v.resolution()));
+						hit = std::max(hit, v.cell(v.halfWidth(), col).occupancy(prior) *
+												std::exp(-d * d / (2 * o.sigma * o.sigma)));
 					}
 					expected += std::log((1 - o.zRandom) * hit + o.zRandom);
 				}
@@ -349,4 +393,14 @@ TEST(CGridVectorMap, TextRepresentationAndVisualisation)
 	mrpt::opengl::CSetOfObjects o;
 	m.getVisualizationInto(o);
 	EXPECT_GT(o.size(), 0u);
+}
+
+TEST(CGridVectorMap, DefaultConstructedUsesTheDefaultsGvEmSlamRunsWith)
+{
+	// gv-em-slam, gv-map and gv-graphslam start from GridVectorConfig's defaults (one set of defaults,
+	// doc/parameters.md): so does a map made in code or from an .ini without gridvector sections
+	const auto defaults = gridvector::GridVectorConfig().namedValues();
+	EXPECT_EQ(CGridVectorMap().config().namedValues(), defaults);
+	EXPECT_EQ(multiMapFrom("[map]\ngridVectorMap_count = 1\n").mapByClass<CGridVectorMap>()->config().namedValues(),
+			  defaults);
 }

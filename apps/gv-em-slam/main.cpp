@@ -175,6 +175,7 @@ int run(const io::ArgParser& args)
 	app::writeGvmap(dir + "map.gvmap", cfg, res.finalVectors);
 	MapExport::writePng(grid, dir + "occupancy.png");
 	MapExport::writeRosMap(grid, dir + "occupancy.pgm", dir + "occupancy.yaml");
+	MapExport::write3DScene(res.finalVectors, grid, dir + "map.3Dscene");
 	fig.memory = MemoryAccounting::account(res.finalVectors, 0.1);
 	fig.outputSeconds = since(t1);
 	fig.totalSeconds = since(t0);
@@ -192,7 +193,7 @@ int run(const io::ArgParser& args)
 		std::fprintf(stderr, "%s", MemoryAccounting::summary(fig.memory).c_str());
 		std::fprintf(stderr,
 					 "wrote %s{trajectory.txt, map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, "
-					 "occupancy.yaml, doors.txt, door_states.txt, report.json}\n",
+					 "occupancy.yaml, map.3Dscene, doors.txt, door_states.txt, report.json}\n",
 					 dir.c_str());
 	}
 	return 0;

@@ -199,6 +199,7 @@ void writeGridVectorMap(const std::string& dir, const mrpt::maps::CGridVectorMap
 	map.saveToFile(dir + "/map.gvmap");
 	MapExport::writeVectorsText(map.vectors(), dir + "/vectors.txt");
 	MapExport::writeSvg(map.vectors(), dir + "/vectors.svg");
+	MapExport::write3DScene(map.vectors(), map.getAsOccupancyGrid(), dir + "/map.3Dscene");
 }
 
 /** The engine's own outputs, as MRPT's graphslam-engine app writes them. */

@@ -31,7 +31,7 @@ done
 grep -q "^gv-graphslam: CGridVectorNRD + CGridVectorERD + CLevMarqGSO: 500 entries, 250 scans" "$W/run.txt" \
 	|| fail "unexpected summary: $(grep '^gv-graphslam' "$W/run.txt")"
 # (--quiet prints nothing at all: tests/integration/quiet.sh)
-for f in trajectory.txt nodes.txt map.gvmap vectors.txt vectors.svg output_graph.graph CGraphSlamEngine.log \
+for f in trajectory.txt nodes.txt map.gvmap vectors.txt vectors.svg map.3Dscene output_graph.graph CGraphSlamEngine.log \
 	node_registrar.log edge_registrar.log timings.log; do
 	[ -s "$W/out/$f" ] || fail "missing or empty output $f"
 done
@@ -48,6 +48,20 @@ odo=$(score "$W/odo.txt")
 echo "ATE: grid-vector deciders $gv m, odometry $odo m"
 awk -v g="$gv" -v o="$odo" 'BEGIN { exit !(g < 0.5 && g < 0.5 * o) }' \
 	|| fail "trajectory not sane: ATE $gv m (odometry $odo m)"
+
+# every graphslam-engine .ini MRPT ships (their '//' comments included) runs, as MRPT's app takes them
+MRPT_INIS=/usr/share/mrpt/config_files/graphslam-engine
+n=0
+for ini in "$MRPT_INIS"/*.ini; do
+	[ -e "$ini" ] || fail "no .ini in $MRPT_INIS (mrpt-common)"
+	b=$(basename "$ini" .ini)
+	"$GV_BIN/gv-graphslam" --2d -i "$ini" -r "$W/short.rawlog" --disable-visuals -n CGridVectorNRD -e CGridVectorERD \
+		-o CLevMarqGSO --output-dir "$W/mrpt-$b" --quiet 2> "$W/mrpt-$b.err" || fail "$ini: $(cat "$W/mrpt-$b.err")"
+	[ "$(grep -c . "$W/mrpt-$b/trajectory.txt")" -eq 250 ] || fail "$ini: trajectory.txt should have 250 poses"
+	[ -s "$W/mrpt-$b/map.3Dscene" ] || fail "$ini: no map.3Dscene"
+	n=$((n + 1))
+done
+[ "$n" -eq 6 ] || fail "expected MRPT's 6 graphslam-engine .ini files, found $n"
 
 # bad input: one line on stderr, non-zero exit, no crash
 expect_error() {

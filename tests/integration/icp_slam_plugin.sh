@@ -1,15 +1,21 @@
 #!/usr/bin/env bash
 # Plug-in proof: MRPT's own, unmodified icp-slam builds a CGridVectorMap when
-# libgridvector.so is preloaded and the .ini declares gridVectorMap_count=1.
+# libgridvector.so is preloaded and the .ini declares gridVectorMap_count=1: the README's
+# LD_PRELOAD line, by the installed path of a fresh `cmake --install`.
 set -euo pipefail
 RAWLOG="$GV_MRPT_DATASETS/2006-01ENE-21-SENA_Telecom Faculty_one_loop_only.rawlog"
-INI="$GV_SOURCE_DIR/share/gridvector/icp-slam-gridvector.ini"
 command -v icp-slam >/dev/null || { echo "icp-slam not installed (mrpt-apps)"; exit 1; }
 [ -f "$RAWLOG" ] || { echo "$RAWLOG missing (mrpt-common)"; exit 1; }
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
+cmake --install "$(dirname "$GV_BIN")" --prefix "$work/prefix" > "$work/install.log"
+LIB="$work/prefix/lib/libgridvector.so"
+INI="$work/prefix/share/gridvector/icp-slam-gridvector.ini"
+[ -e "$LIB" ] && [ -e "$INI" ] || { echo "not installed: $LIB or $INI"; exit 1; }
 cd "$work"
 # GV_SANITIZER_PRELOAD (share/scripts/sanitize.sh): the ASan/UBSan runtimes, which must come first
-LD_PRELOAD="${GV_SANITIZER_PRELOAD:+$GV_SANITIZER_PRELOAD:}$GV_LIB" icp-slam "$INI" "$RAWLOG" > icp.log 2>&1 || { tail -20 icp.log; exit 1; }
+LD_PRELOAD="${GV_SANITIZER_PRELOAD:+$GV_SANITIZER_PRELOAD:}$LIB" icp-slam "$INI" "$RAWLOG" > icp.log 2>&1 || { tail -20 icp.log; exit 1; }
+# a preload the loader cannot find is only a warning of ld.so's, and icp-slam runs without the map
+! grep -q "ld.so" icp.log || { grep "ld.so" icp.log; exit 1; }
 vec=$(ls LOG_ICP-SLAM-GV/*CGridVectorMap*_vectors.txt)
 rows=$(grep -vc '^#' "$vec")
 echo "icp-slam wrote $rows grid vectors to $(basename "$vec")"

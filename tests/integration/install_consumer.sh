@@ -37,3 +37,20 @@ cmake -S "$GV_SOURCE_DIR/doc/examples/ini-consumer" -B "$work/ini-consumer" -DCM
 cmake --build "$work/ini-consumer" > "$work/ibuild.log" || { tail -30 "$work/ibuild.log"; exit 1; }
 LD_LIBRARY_PATH="$work/prefix/lib" "$work/ini-consumer/gv-ini-consumer" | tee "$work/iout.txt"
 grep -q "^1 map(s): mrpt::maps::CGridVectorMap" "$work/iout.txt"
+# The README's embedding snippet ("On a robot") compiles as shown against the install: its own
+# #include lines and nothing else of ours; `scan`, `robotPose3D` and `use` are the reader's.
+awk '/^On a robot/ { on = 1 } on && /^```cpp$/ { code = 1; next } code && /^```$/ { exit } code { print }' \
+  "$GV_SOURCE_DIR/README.md" > "$work/snippet.txt"
+[ -s "$work/snippet.txt" ] || { echo "README: no C++ block after 'On a robot'"; exit 1; }
+{
+  grep '^#include' "$work/snippet.txt"
+  echo '#include <mrpt/obs/CObservation2DRangeScan.h>'
+  echo '#include <mrpt/poses/CPose3D.h>'
+  echo 'template <class... T> void use(const T&...) {}'
+  echo 'void embed(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose3D& robotPose3D) {'
+  grep -v '^#include' "$work/snippet.txt"
+  echo '}'
+} > "$work/snippet.cpp"
+c++ -std=c++17 -fsyntax-only -I"$work/prefix/include" $(find /usr/include/mrpt -maxdepth 2 -name include -type d -printf '-isystem %p ') \
+    -isystem /usr/include/eigen3 "$work/snippet.cpp" || { echo "the README's embedding snippet does not compile"; exit 1; }
+echo "install_consumer: OK (README snippet compiles)"

@@ -14,7 +14,7 @@ void requireIniLayout(const std::string& text, const std::string& path)
 	for (size_t n = 1; std::getline(in, line); ++n)
 	{
 		const size_t b = line.find_first_not_of(" \t\r");
-		if (b == std::string::npos || line[b] == ';' || line[b] == '#') continue;
+		if (b == std::string::npos || line[b] == ';' || line[b] == '#' || line.compare(b, 2, "//") == 0) continue;
 		const auto where = path + ":" + std::to_string(n) + ": ";
 		if (line[b] == '[')
 		{

@@ -1,9 +1,7 @@
-#include "io/AtomicFile.h"
+#include "io/ArchiveFile.h"
 #include "io/RawlogWriter.h"
 
 #include <mrpt/core/Clock.h>
-#include <mrpt/io/CFileGZOutputStream.h>
-#include <mrpt/io/CFileOutputStream.h>
 #include <mrpt/obs/CActionCollection.h>
 #include <mrpt/obs/CActionRobotMovement2D.h>
 #include <mrpt/obs/CObservationOdometry.h>
@@ -23,20 +21,6 @@ namespace
 {
 using namespace mrpt::obs;
 using mrpt::poses::CPose2D;
-
-std::unique_ptr<mrpt::io::CStream> openOutput(const std::string& tmp, bool compress)
-{
-	if (compress)
-	{
-		auto gz = std::make_unique<mrpt::io::CFileGZOutputStream>();
-		std::string err;
-		if (!gz->open(tmp, 1, err)) throw std::runtime_error(err.empty() ? "cannot open" : err);
-		return gz;
-	}
-	auto f = std::make_unique<mrpt::io::CFileOutputStream>();
-	if (!f->open(tmp)) throw std::runtime_error("cannot open");
-	return f;
-}
 
 void writeObservations(mrpt::serialization::CArchive& ar, const ScanRecord& r)
 {
@@ -66,16 +50,12 @@ void writeFrame(mrpt::serialization::CArchive& ar, const ScanRecord& r, const CP
 
 void writeRawlog(const std::string& path, const LogData& log, const RawlogWriteOptions& opt)
 {
-	AtomicFile file(path, AtomicFile::Mode::External);
-	try
-	{
-		auto out = openOutput(file.tempPath(), opt.compress);
-		auto ar = mrpt::serialization::archiveFrom(*out);
+	writeArchiveFile(path, opt.compress, [&](mrpt::serialization::CArchive& ar) {
 		CPose2D prev;
 		bool havePrev = false;
 		for (const ScanRecord& r : log.scans)
 		{
-			if (!r.scan) throw std::runtime_error("scan record without a scan");
+			if (!r.scan) throw std::runtime_error(path + ": cannot write (scan record without a scan)");
 			if (opt.format == RawlogFormat::Observations)
 				writeObservations(ar, r);
 			else
@@ -85,13 +65,7 @@ void writeRawlog(const std::string& path, const LogData& log, const RawlogWriteO
 				if (r.hasOdometry) prev = odo, havePrev = true;
 			}
 		}
-		out.reset();  // flush and close before renaming
-	}
-	catch (const std::exception& e)
-	{
-		throw std::runtime_error(path + ": cannot write (" + e.what() + ")");
-	}
-	file.commit();
+	});
 }
 
 namespace
@@ -122,19 +96,7 @@ size_t writeSimplemap(const std::string& path, const LogData& log,
 					  const std::vector<std::optional<mrpt::math::TPose2D>>& poses)
 {
 	const mrpt::maps::CSimpleMap sm = simplemapOf(log, poses);
-	AtomicFile file(path, AtomicFile::Mode::External);
-	try
-	{
-		auto out = openOutput(file.tempPath(), true);
-		auto ar = mrpt::serialization::archiveFrom(*out);
-		ar << sm;
-		out.reset();  // flush and close before renaming
-	}
-	catch (const std::exception& e)
-	{
-		throw std::runtime_error(path + ": cannot write (" + e.what() + ")");
-	}
-	file.commit();
+	writeArchiveFile(path, true, [&](mrpt::serialization::CArchive& ar) { ar << sm; });
 	return sm.size();
 }
 

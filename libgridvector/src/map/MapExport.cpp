@@ -1,4 +1,5 @@
 #include "map/MapExport.h"
+#include "io/ArchiveFile.h"
 #include "io/AtomicFile.h"
 #include "io/TextParsing.h"
 
@@ -185,7 +186,7 @@ void MapExport::write3DScene(const std::vector<GridVector>& vectors, const mrpt:
 		lines->appendLine(v.start().x, v.start().y, 0.01, v.end().x, v.end().y, 0.01);
 	}
 	for (auto& kv : byColour) scene.insert(kv.second);
-	saveVia(path, "scene serialisation failed", [&](const std::string& tmp) { return scene.saveToFile(tmp); });
+	io::writeArchiveFile(path, true, [&](mrpt::serialization::CArchive& ar) { ar << scene; });  // as saveToFile
 }
 
 }  // namespace gridvector

@@ -3,6 +3,7 @@
 #include "io/IniValue.h"
 #include <mrpt/config/CConfigFileBase.h>
 #include "mrpt/CGridVectorMapImpl.h"
+#include "mrpt/MrptOptionSections.h"
 #include <mrpt/maps/CGridVectorMap.h>
 
 #include <stdexcept>
@@ -18,12 +19,13 @@ CGridVectorMap::TMapDefinition::TMapDefinition() = default;
 void CGridVectorMap::TMapDefinition::loadFromConfigFile_map_specific(const mrpt::config::CConfigFileBase& source,
 																	 const std::string& sectionNamePrefix)
 {
-	// [<prefix>_extraction], [<prefix>_grid], ... : see GridVectorConfig; [<prefix>_creationOpts]
-	// is MRPT's (TMapGenericParams, read by TMetricMapInitializer), [<prefix>_likelihoodOpts] below.
+	// [<prefix>_extraction], [<prefix>_grid], ... : see GridVectorConfig; MRPT's names
+	// [<prefix>_creationOpts] and [<prefix>_insertOpts]: readMrptOptionSections; [<prefix>_likelihoodOpts] below.
 	try
 	{
-		config.loadFromConfigFile(source, sectionNamePrefix, "CGridVectorMap config",
-								  {"creationOpts", "likelihoodOpts"});
+		const std::string from = "CGridVectorMap config";
+		config.loadFromConfigFile(source, sectionNamePrefix, from, {"creationOpts", "insertOpts", "likelihoodOpts"});
+		gridvector::readMrptOptionSections(source, sectionNamePrefix, config, from);
 		likelihoodOpts.loadFromConfigFile(source, sectionNamePrefix + "_likelihoodOpts");
 	}
 	catch (const std::exception& e)
@@ -143,6 +145,13 @@ void CGridVectorMap::TLikelihoodOptions::loadFromConfigFile(const mrpt::config::
 															const std::string& section)
 {
 	const std::string from = "CGridVectorMap config";
+	// COccupancyGridMap2D's likelihood-field names, as a section copied from a grid's holds them
+	for (const auto& [grids, ours] :
+		 {std::pair{"LF_stdHit", "sigma"}, std::pair{"LF_maxCorrsDistance", "maxCorrDistance"},
+		  std::pair{"LF_zRandom", "zRandom"}, std::pair{"LF_decimation", "decimation"}})
+		if (source.keyExists(section, grids))
+			throw std::runtime_error(from + ": [" + section + "] " + grids +
+									 " is COccupancyGridMap2D's key; this map's is " + ours);
 	gridvector::io::requireKnownKeys(source, section, {"sigma", "maxCorrDistance", "zRandom", "decimation"}, from);
 	using gridvector::io::readIniValue;
 	readIniValue(source, section, "sigma", sigma, from, "a number > 0", [](double v) { return v > 0; });

@@ -1,5 +1,6 @@
 // CGridVectorMap: serialization (versioned) and text/SVG representation.
 #include "map/MapExport.h"
+#include "io/ArchiveFile.h"
 #include "io/AtomicFile.h"
 #include "io/ObjectFile.h"
 #include <mrpt/io/CFileGZOutputStream.h>
@@ -298,14 +299,7 @@ void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ve
 
 void CGridVectorMap::saveToFile(const std::string& path) const
 {
-	gridvector::io::AtomicFile f(path, gridvector::io::AtomicFile::Mode::External);
-	{
-		mrpt::io::CFileGZOutputStream gz;
-		if (!gz.open(f.tempPath())) throw std::runtime_error(path + ": cannot write");
-		auto a = mrpt::serialization::archiveFrom(gz);
-		a << *this;
-	}
-	f.commit();
+	gridvector::io::writeArchiveFile(path, true, [&](mrpt::serialization::CArchive& a) { a << *this; });
 }
 
 void CGridVectorMap::loadFromFile(const std::string& path)

@@ -1,6 +1,5 @@
-// CGridVectorMap: observation likelihood as a likelihood field over the vectors,
-// each weighted by the occupancy (n_occupy / n_visit) of the cell the point falls in.
-#include "map/OccupancyConversion.h"
+// CGridVectorMap: observation likelihood as a likelihood field over the vectors (MRPT's
+// likelihood-field model), each vector weighted by its wall row's occupancy (n_occupy / n_visit).
 #include "map/VectorIndex.h"
 #include "mrpt/CGridVectorMapImpl.h"
 #include <mrpt/maps/CGridVectorMap.h>
@@ -15,19 +14,17 @@ using mrpt::math::TPoint2D;
 
 namespace
 {
-double distanceToSegment(const GridVector& v, const TPoint2D& p)
+/** A point's hit term through one vector: the Gaussian of its distance d to the segment, weighted
+ * by the occupancy of the vector's own row (the wall, Eq. 2's centre row) at the column of the
+ * point's foot. The wall row's, not the cell the point falls in: the rows beside the wall read
+ * free on the open side and prior behind it, which would pull every point behind the walls. */
+double hitThrough(const GridVector& v, const TPoint2D& p, double inv2s2)
 {
 	const TPoint2D g = v.toGridFrame(p);
 	const double u = std::clamp(g.x, 0.0, v.length());
-	return std::hypot(g.x - u, g.y);
-}
-
-// Occupancy of the cell of v nearest to p (the prior's ratio where no cell covers p or the cell has no counts).
-double occupancyNear(const GridVector& v, const TPoint2D& p, double prior)
-{
-	int row, col;
-	if (!v.cellOf(p, row, col)) return prior;
-	return v.cell(row, col).occupancy(prior);
+	const double d2 = (g.x - u) * (g.x - u) + g.y * g.y;
+	const int col = std::min(v.cols() - 1, int(u / v.resolution()));
+	return v.cell(v.halfWidth(), col).occupancy(v.priorRatio()) * std::exp(-d2 * inv2s2);
 }
 }  // namespace
 
@@ -49,7 +46,9 @@ double CGridVectorMap::internal_computeObservationLikelihood(const mrpt::obs::CO
 	const double m = likelihoodOptions.maxCorrDistance;
 	const double inv2s2 = 1.0 / (2 * likelihoodOptions.sigma * likelihoodOptions.sigma);
 	const double zr = likelihoodOptions.zRandom, zh = 1.0 - zr;
-	const double prior = gridvector::OccupancyConversion::priorRatio(impl_->map.config().grid);
+	// as MRPT's likelihood field: a point with no map place within maxCorrDistance reads as one that far
+	// from a wall, and so does a point near vectors that are mostly seen free (the field never dips below it)
+	const double floorHit = std::exp(-m * m * inv2s2);
 	double logLik = 0;
 	for (size_t i = 0; i < pts.size(); ++i)
 	{
@@ -57,15 +56,8 @@ double CGridVectorMap::internal_computeObservationLikelihood(const mrpt::obs::CO
 		// Only the vectors within maxCorrDistance of this point, through the map's spatial index.
 		slots.clear();
 		impl_->map.index().query(gridvector::Box2D{p.x, p.y, p.x, p.y}.expanded(m), slots);
-		double best = m;
-		const GridVector* bestV = nullptr;
-		for (uint32_t slot : slots)
-		{
-			const GridVector& v = impl_->map.vectors()[slot];
-			const double d = distanceToSegment(v, p);
-			if (d < best) best = d, bestV = &v;
-		}
-		const double hit = bestV ? occupancyNear(*bestV, p, prior) * std::exp(-best * best * inv2s2) : 0.0;
+		double hit = floorHit;
+		for (uint32_t slot : slots) hit = std::max(hit, hitThrough(impl_->map.vectors()[slot], p, inv2s2));
 		logLik += std::log(zh * hit + zr);
 	}
 	return logLik;

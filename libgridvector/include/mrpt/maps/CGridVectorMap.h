@@ -37,8 +37,11 @@ namespace mrpt::maps
  * [MappingApplication_gridVectorMap_00_grid]
  * resolution = 0.10
  * [MappingApplication_gridVectorMap_00_likelihoodOpts]
- * sigma = 0.05
+ * sigma = 0.30
  * \endcode
+ * or in MRPT's own section names, as for COccupancyGridMap2D: the grid group's keys in
+ * `[..._creationOpts]` (next to MRPT's enableSaveAs3DObject, ...), the extraction and map
+ * groups' in `[..._insertOpts]` (libgridvector/src/mrpt/MrptOptionSections.h).
  * Unknown keys in these sections are an error, not silently ignored.
  *
  * Threads: every const member (likelihood, matching, getAsOccupancyGrid,
@@ -60,14 +63,18 @@ class CGridVectorMap : public CMetricMap
 	CGridVectorMap& operator=(CGridVectorMap&& o) noexcept;
 	~CGridVectorMap() override;
 
-	/** Parameters of computeObservationLikelihood(): a likelihood field over
-	 * the vectors, each weighted by its occupancy. */
+	/** Parameters of computeObservationLikelihood(): MRPT's likelihood field over the vectors,
+	 * each weighted by its wall row's occupancy. The defaults localise with MRPT's particle filter
+	 * as MRPT's grid does with its test's options (tests/mrpt_generic_checks_test.cpp, MonteCarlo2D):
+	 * sigma is the spread of a particle's points about the walls (its pose error as well as the
+	 * range noise: MRPT's grid default LF_stdHit is 0.35), not the range noise alone; 0.05 and one
+	 * beam in 2 made every scan so sharp that the filter kept a wrong pose 4.5 m off. */
 	struct TLikelihoodOptions : public mrpt::config::CLoadableOptions
 	{
-		double sigma = 0.05;  //!< std. dev. of the range error [m]
-		double maxCorrDistance = 0.30;  //!< beyond this a point has no correspondence [m]
+		double sigma = 0.30;  //!< std. dev. of a point's distance to the nearest wall [m]
+		double maxCorrDistance = 0.50;  //!< beyond this a point reads as this far from a wall [m]
 		double zRandom = 0.05;  //!< weight of the uniform "random measurement" term
-		int decimation = 2;  //!< use one beam out of this many
+		int decimation = 10;  //!< use one beam out of this many
 		void loadFromConfigFile(const mrpt::config::CConfigFileBase& source, const std::string& section) override;
 		void dumpToTextStream(std::ostream& out) const override;
 	} likelihoodOptions;

@@ -342,6 +342,8 @@ void writeGzip(const fs::path& p, const Bytes& b)
 
 // --- the readers and what follows them ----------------------------------------------------------
 
+char current[96] = "";  //!< the input being read, for the signal handlers
+
 struct Tally
 {
 	size_t inputs = 0, accepted = 0, rejected = 0;
@@ -385,6 +387,7 @@ template <class Read>
 void check(Tally& t, const std::string& kind, size_t i, const std::string& name, Read&& read)
 {
 	t.inputs++;
+	std::snprintf(current, sizeof current, "%s #%zu", kind.c_str(), i);
 	::alarm(kSecondsPerInput);
 	try
 	{
@@ -415,10 +418,19 @@ void check(Tally& t, const std::string& kind, size_t i, const std::string& name,
 
 int realStderr = 2;  //!< the terminal's stderr while fd 2 goes to the capture file
 
+void onSignal(int sig)
+{
+	char msg[200];
+	const int n = std::snprintf(msg, sizeof msg, "reader_fuzz_test: signal %d on %s\n", sig, current);
+	(void)!::write(realStderr, msg, size_t(n));
+	std::_Exit(128 + sig);
+}
+
 void onAlarm(int)
 {
-	const char msg[] = "reader_fuzz_test: an input took longer than the limit (a hang)\n";
-	(void)!::write(realStderr, msg, sizeof msg - 1);
+	char msg[200];
+	const int n = std::snprintf(msg, sizeof msg, "reader_fuzz_test: %s took longer than the limit (a hang)\n", current);
+	(void)!::write(realStderr, msg, size_t(n));
 	std::_Exit(3);
 }
 
@@ -429,11 +441,22 @@ long peakRssMb()
 	return u.ru_maxrss / 1024;
 }
 
+/** GV_FUZZ_DUMP=kind#index (as a failure names it) writes that input to GV_FUZZ_DUMP_FILE (default
+ * fuzz_input.bin) before it is read: a crash's input, to reproduce with the tools. */
+void dumpIfAsked(const char* kind, size_t i, const Bytes& b)
+{
+	const char* want = std::getenv("GV_FUZZ_DUMP");
+	if (!want || std::string(want) != std::string(kind) + " #" + std::to_string(i)) return;
+	const char* file = std::getenv("GV_FUZZ_DUMP_FILE");
+	writeBytes(file ? file : "fuzz_input.bin", b);
+}
+
 void fuzzCarmen(Tally& t, Rng& r, size_t n)
 {
 	for (size_t i = 0; i < n; ++i)
 	{
 		const Bytes b = mutateText(seeds().carmen, r);
+		dumpIfAsked("carmen", i, b);
 		if (i % 8 == 0)  // through the file path too: readLog (format sniffing, line limit), gzip or not
 		{
 			const fs::path p = workDir() / (i % 16 == 0 ? "m.log.gz" : "m.log");
@@ -450,6 +473,7 @@ void fuzzRawlog(Tally& t, Rng& r, size_t n)
 	for (size_t i = 0; i < n; ++i)
 	{
 		const Bytes b = mutateBinary(seeds().rawlogs[i % 2], r);
+		dumpIfAsked("rawlog", i, b);
 		if (i % 8 == 0)
 		{
 			const fs::path p = workDir() / "m.rawlog";
@@ -504,6 +528,7 @@ TEST(ReaderFuzz, EveryReaderRejectsMutantsWithOneLineAndNoRunaway)
 	const rlimit as{kAddressSpaceMb << 20, kAddressSpaceMb << 20};
 	ASSERT_EQ(::setrlimit(RLIMIT_AS, &as), 0);
 	std::signal(SIGALRM, onAlarm);
+	for (int sig : {SIGSEGV, SIGBUS, SIGFPE, SIGABRT, SIGILL}) std::signal(sig, onSignal);
 	const size_t total = envSize("GV_FUZZ_INPUTS", 12000);
 	Rng rng(envSize("GV_FUZZ_SEED", 1));
 	seeds();

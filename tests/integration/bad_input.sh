@@ -178,7 +178,7 @@ expect 2 "--pass-gap must be > 0" - -- "$B/gv-eval" map okvec.txt sim --breakdow
 expect 2 "--pass-gap needs a number, got 'nan'" - -- "$B/gv-eval" map okvec.txt sim --breakdown --pass-gap nan
 expect 1 "garbage.txt:1: ground-truth lines must be 't x y theta'" g9/trajectory.txt -- "$B/gv-graphslam" --2d -i "$INI" -r room.rawlog -g garbage.txt --disable-visuals --output-dir g9
 # .gvmap files
-expect 1 "trunc.gvmap: not a valid mrpt::maps::CGridVectorMap file" m10.gvmap -- "$B/gv-map-info" trunc.gvmap --save m10.gvmap
+expect 1 "trunc.gvmap: truncated or corrupt gzip data (CRC/length trailer mismatch)" m10.gvmap -- "$B/gv-map-info" trunc.gvmap --save m10.gvmap
 expect 1 "garbage.gvmap: not a valid mrpt::maps::CGridVectorMap file" - -- "$B/gv-map-info" garbage.gvmap
 # session 10 audit (doc/benchmarks-history.md "Session 10: sanitizers and bad input")
 # graphslam ground truth: MRPT's engine indexes it without bounds checks (empty file: a segfault)

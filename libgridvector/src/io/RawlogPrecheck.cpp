@@ -195,7 +195,7 @@ class Walker
 	}
 	void movement2D(uint8_t v)
 	{
-		if (v < 4) throw UnknownClass{};  // MRPT < 1.0: not walked
+		if (v < 4) return oldMovement2D(v);
 		if (v > 7) unknownVersion("CActionRobotMovement2D", v);
 		const int32_t method = get<int32_t>("an estimation method");
 		if (method != 0 && method != 1)
@@ -225,6 +225,43 @@ class Walker
 		const bool encoders = get<uint8_t>("an encoder flag");
 		if (v < 7 || encoders) skip(8, "encoder ticks");
 		if (v >= 6) skip(8, "a movement's timestamp");
+	}
+	void method(int32_t m) const
+	{
+		if (m != 0 && m != 1) fail("a robot movement's estimation method is " + std::to_string(m) + " (0 or 1)");
+	}
+	/** Versions 0-3 (MRPT < 1.0): MRPT dereferences the pose change of versions 0-1 and re-draws 2-3's. */
+	void oldMovement2D(uint8_t v)
+	{
+		if (v <= 1)
+		{
+			object(true);  // the pose change PDF: must not be null
+			method(get<int32_t>("an estimation method"));
+			if (v == 1) skip(1 + 8 + 1 + 8, "velocities and encoders");
+			return;
+		}
+		const int32_t m = get<int32_t>("an estimation method");
+		method(m);
+		if (m == 0)
+		{
+			object(false);  // the odometry increment
+			if (v == 2)
+				skip(44, "an old motion model");
+			else
+			{
+				const int32_t model = get<int32_t>("a motion model");
+				if (model != 0 && model != 1)
+					fail("a robot movement's motion model is " + std::to_string(model) + " (0 or 1)");
+				skip(3 * 4 + 2 * 8, "a Gaussian motion model");
+				const uint32_t particles = get<uint32_t>("a particle count");
+				if (model == 1 && (particles == 0 || particles > kMaxParticles))
+					fail("a robot movement's Thrun model draws " + std::to_string(particles) + " particles");
+				skip(4 * 4, "a Thrun motion model");
+			}
+		}
+		else
+			object(false);
+		skip(1 + 8 + 1 + 8, "velocities and encoders");
 	}
 	void poseGaussian(uint8_t v)
 	{

@@ -1,0 +1,193 @@
+#include "em/SelfCheck.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <unordered_map>
+
+namespace gridvector
+{
+using mrpt::math::TPoint2D;
+using mrpt::math::TPose2D;
+
+double PoseGraphFit::normalisedChi2() const
+{
+	const double redundancy = odometryDof + registrationDof - 3.0 * (double(std::max<size_t>(nodes, 1)) - 1);
+	return redundancy > 0 ? (odometryChi2 + registrationChi2) / redundancy : std::numeric_limits<double>::quiet_NaN();
+}
+
+PoseGraphFit poseGraphFit(const PoseGraph& graph)
+{
+	PoseGraphFit f;
+	f.nodes = graph.nodes().size();
+	for (const PoseEdge& e : graph.edges())
+	{
+		const bool odometry = e.kind == EdgeKind::Odometry;
+		if (!e.active)
+		{
+			f.inactive += !odometry;
+			continue;
+		}
+		(odometry ? f.odometryEdges : f.registrationEdges)++;
+		(odometry ? f.odometryChi2 : f.registrationChi2) += e.chi2;
+		(odometry ? f.odometryDof : f.registrationDof) += odometry ? 3 : std::clamp(e.dof, 1, 3);
+		f.downweighted += !odometry && e.scale < kDownweighted;
+	}
+	return f;
+}
+
+namespace
+{
+/** Bucket side of the static vectors' spatial index: a few vectors per bucket indoors, a beam of 80 m crosses
+ * fewer than 200 buckets [m]. */
+constexpr double kBucket = 1.0;
+
+double cross(const TPoint2D& a, const TPoint2D& b, const TPoint2D& c)
+{
+	return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+
+// Every bucket the segment a-b passes, in order (Amanatides & Woo's traversal).
+template <class F>
+void forEachBucket(const TPoint2D& a, const TPoint2D& b, F&& f)
+{
+	int ix = int(std::floor(a.x / kBucket)), iy = int(std::floor(a.y / kBucket));
+	const int ex = int(std::floor(b.x / kBucket)), ey = int(std::floor(b.y / kBucket));
+	const double dx = b.x - a.x, dy = b.y - a.y;
+	const int sx = dx > 0 ? 1 : -1, sy = dy > 0 ? 1 : -1;
+	const double inf = std::numeric_limits<double>::infinity();
+	const double tdx = dx != 0 ? kBucket / std::abs(dx) : inf, tdy = dy != 0 ? kBucket / std::abs(dy) : inf;
+	double tx = dx != 0 ? ((sx > 0 ? (ix + 1) * kBucket : ix * kBucket) - a.x) / dx : inf;
+	double ty = dy != 0 ? ((sy > 0 ? (iy + 1) * kBucket : iy * kBucket) - a.y) / dy : inf;
+	const int steps = std::abs(ex - ix) + std::abs(ey - iy);
+	for (int k = 0;; ++k)
+	{
+		if (!f(ix, iy) || k >= steps) return;
+		if (tx < ty)
+			ix += sx, tx += tdx;
+		else
+			iy += sy, ty += tdy;
+	}
+}
+
+int64_t bucketKey(int ix, int iy) { return (int64_t(ix) << 32) ^ int64_t(uint32_t(iy)); }
+
+class SegmentIndex
+{
+   public:
+	explicit SegmentIndex(const std::vector<GridVector>& vs) : vs_(vs), seen_(vs.size(), 0)
+	{
+		for (uint32_t i = 0; i < vs.size(); ++i)
+			forEachBucket(vs[i].start(), vs[i].end(), [&](int ix, int iy) {
+				buckets_[bucketKey(ix, iy)].push_back(i);
+				return true;
+			});
+	}
+
+	// Does the beam o-e cross a vector and end kThroughWall or more behind its line?
+	bool throughWall(const TPoint2D& o, const TPoint2D& e)
+	{
+		++stamp_;
+		bool through = false;
+		forEachBucket(o, e, [&](int ix, int iy) {
+			const auto b = buckets_.find(bucketKey(ix, iy));
+			if (b == buckets_.end()) return true;
+			for (uint32_t i : b->second)
+			{
+				if (seen_[i] == stamp_) continue;
+				seen_[i] = stamp_;
+				if ((through = crosses(vs_[i], o, e))) return false;
+			}
+			return true;
+		});
+		return through;
+	}
+
+   private:
+	static bool crosses(const GridVector& v, const TPoint2D& o, const TPoint2D& e)
+	{
+		const TPoint2D &s = v.start(), &t = v.end();
+		const double len = std::hypot(t.x - s.x, t.y - s.y);
+		if (len <= 0) return false;
+		const double co = cross(s, t, o), ce = cross(s, t, e);
+		if ((co > 0) == (ce > 0) || std::abs(ce) < kThroughWall * len) return false;
+		return (cross(o, e, s) > 0) != (cross(o, e, t) > 0);
+	}
+
+	const std::vector<GridVector>& vs_;
+	std::unordered_map<int64_t, std::vector<uint32_t>> buckets_;
+	std::vector<uint32_t> seen_;
+	uint32_t stamp_ = 0;
+};
+
+TPoint2D compose(const TPose2D& p, const TPoint2D& q)
+{
+	const double c = std::cos(p.phi), s = std::sin(p.phi);
+	return {p.x + c * q.x - s * q.y, p.y + s * q.x + c * q.y};
+}
+}  // namespace
+
+BeamConsistency beamConsistency(const std::vector<GridVector>& staticMap, const std::vector<ScanBeams>& scans)
+{
+	SegmentIndex index(staticMap);
+	BeamConsistency out;
+	for (const ScanBeams& sc : scans)
+	{
+		const TPoint2D o = compose(sc.pose, sc.origin);
+		for (const TPoint2D& q : sc.ends)
+		{
+			++out.beams;
+			out.throughWalls += index.throughWall(o, compose(sc.pose, q));
+		}
+	}
+	return out;
+}
+
+SelfCheckEvidence selfCheckEvidence(bool converged, const std::vector<MStepReport>& iterations, const PoseGraphFit& fit,
+									const BeamConsistency& beams)
+{
+	SelfCheckEvidence e;
+	e.converged = converged;
+	e.iterations = iterations.size();
+	for (const MStepReport& m : iterations)
+		e.registrations += m.registrations, e.failedRegistrations += m.failedRegistrations;
+	if (!iterations.empty())
+	{
+		const MStepReport& last = iterations.back();
+		e.edges = last.constraints;
+		e.rejectedEdges = last.constraints - std::min(last.active, last.constraints) + fit.downweighted;
+	}
+	e.graph = fit;
+	e.beams = beams;
+	return e;
+}
+
+namespace
+{
+std::string reason(const char* what, double value, const char* op, double limit)
+{
+	char buf[160];
+	std::snprintf(buf, sizeof buf, "%s %.3g %s %.3g", what, value, op, limit);
+	return buf;
+}
+}  // namespace
+
+SelfCheckVerdict judge(const SelfCheckEvidence& e)
+{
+	SelfCheckVerdict v;
+	auto test = [&](bool bad, std::string why) {
+		if (bad) v.reasons.push_back(std::move(why));
+	};
+	test(e.failedShare() > kMaxFailedShare, reason("failed registrations", e.failedShare(), ">", kMaxFailedShare));
+	test(e.rejectedShare() > kMaxRejectedShare, reason("rejected edges", e.rejectedShare(), ">", kMaxRejectedShare));
+	const double chi2 = e.graph.normalisedChi2();
+	test(std::isfinite(chi2) && chi2 > kMaxNormalisedChi2, reason("normalised chi2", chi2, ">", kMaxNormalisedChi2));
+	test(e.beams.share() > kMaxThroughWallShare,
+		 reason("beams through static walls", e.beams.share(), ">", kMaxThroughWallShare));
+	v.ok = v.reasons.empty();
+	return v;
+}
+
+}  // namespace gridvector

@@ -1,0 +1,103 @@
+// Beyond the paper (issue 21, item 3): the self-check of an EM-SLAM run. Evidence, from the run
+// alone (no ground truth), that its trajectory or map is broken, and a verdict, ok or suspect.
+#pragma once
+
+#include "mstep/Constraint.h"
+#include "posegraph/PoseGraph.h"
+#include <gridvector/GridVector.h>
+
+#include <mrpt/math/TPoint2D.h>
+#include <mrpt/math/TPose2D.h>
+
+#include <string>
+#include <vector>
+
+namespace gridvector
+{
+/** How well the final pose graph (Eq. 22) fits its own edges. */
+struct PoseGraphFit
+{
+	size_t nodes = 0;
+	size_t odometryEdges = 0, registrationEdges = 0;  //!< active edges
+	size_t downweighted = 0;  //!< active registration edges the robust kernel (DCS) weighs below kDownweighted
+	size_t inactive = 0;  //!< registration edges the chi2 test switched off in the last optimisation
+	double odometryChi2 = 0, registrationChi2 = 0;  //!< sum of e^T Omega e over the active edges
+	double odometryDof = 0, registrationDof = 0;  //!< their residual dimensions
+	/** chi2 / (residual dimensions - 3 (nodes - 1)): ~1 for a graph whose errors are as its
+	 * informations say; NaN where the graph has no redundancy. */
+	double normalisedChi2() const;
+};
+
+/** DCS scale below which an active registration edge counts as rejected by the robust kernel: it then weighs less
+ * than half of what its information says (s = 2 Phi / (Phi + chi2) < 0.5: chi2 > 3 Phi). */
+constexpr double kDownweighted = 0.5;
+
+/** PoseGraphFit of a graph after PoseGraph::optimize (its edges' chi2 and scale are those of its nodes). */
+PoseGraphFit poseGraphFit(const PoseGraph& graph);
+
+/** One scan for the map's self-consistency: its pose, its sensor's origin and its valid beam
+ * endpoints, both in the robot frame. */
+struct ScanBeams
+{
+	mrpt::math::TPose2D pose;
+	mrpt::math::TPoint2D origin{0, 0};
+	std::vector<mrpt::math::TPoint2D> ends;
+};
+
+/** The map's self-consistency: of the scans' beams, how many end beyond a static vector of the
+ * final map they cross (by kThroughWall or more behind its line). In a consistent map a beam
+ * stops at the first wall it meets; a trajectory that is broken puts walls of one pass across the
+ * beams of another. */
+struct BeamConsistency
+{
+	size_t beams = 0, throughWalls = 0;
+	double share() const { return beams ? double(throughWalls) / double(beams) : 0.0; }
+};
+
+/** A beam counts as through a wall if its endpoint lies this far behind the wall's line: well above the range
+ * noise and the vectors' fit error (a few cm), so a beam that ends on a wall, at any incidence, does not [m]. */
+constexpr double kThroughWall = 0.25;
+
+BeamConsistency beamConsistency(const std::vector<GridVector>& staticMap, const std::vector<ScanBeams>& scans);
+
+/** Everything the verdict looks at. */
+struct SelfCheckEvidence
+{
+	bool converged = false;
+	size_t iterations = 0;
+	size_t registrations = 0, failedRegistrations = 0;  //!< summed over the M-steps
+	size_t edges = 0, rejectedEdges = 0;  //!< registration edges at the end, and of them out (chi2) or down-weighted
+	PoseGraphFit graph;
+	BeamConsistency beams;
+
+	double failedShare() const { return registrations ? double(failedRegistrations) / double(registrations) : 0.0; }
+	double rejectedShare() const { return edges ? double(rejectedEdges) / double(edges) : 0.0; }
+};
+
+/** Gathers the evidence of a run: `iterations` its M-steps' reports (the last one's edges are the final graph's),
+ * `fit` the final graph's fit. */
+SelfCheckEvidence selfCheckEvidence(bool converged, const std::vector<MStepReport>& iterations, const PoseGraphFit& fit,
+									const BeamConsistency& beams);
+
+struct SelfCheckVerdict
+{
+	bool ok = true;
+	std::vector<std::string> reasons;  //!< one per failed test, with its figure and threshold
+};
+
+// Thresholds of the verdict (doc/benchmarks-history.md, "Session 14: self-check": every signal on every good
+// and broken run; each threshold lies far from both groups).
+
+/** A run that fails more than this share of its registrations has not found its scans in each other: on good runs
+ * it is a few per cent. */
+constexpr double kMaxFailedShare = 0.25;
+/** More than this share of the final registration edges out or down-weighted: the graph disagrees with itself. */
+constexpr double kMaxRejectedShare = 0.25;
+/** The final graph's chi2 per residual dimension above this: edges and trajectory do not fit (good runs: ~1). */
+constexpr double kMaxNormalisedChi2 = 10.0;
+/** More beams than this through the final map's static walls: the map contradicts its own scans. */
+constexpr double kMaxThroughWallShare = 0.03;
+
+SelfCheckVerdict judge(const SelfCheckEvidence& e);
+
+}  // namespace gridvector

@@ -49,12 +49,17 @@ PoseGraph noisyCircle(double sigma, unsigned seed, double loopBias = 0)
 	return g;
 }
 
-// The walls of a 10 x 10 m room, open side (left of each vector) inside.
+// The walls of a 10 x 10 m room, open side (left of each vector) inside, each seen along its length (Algorithm 1:
+// its cells occupied).
 std::vector<GridVector> room()
 {
 	const GridOptions grid;
-	return {GridVector({0, 0}, {10, 0}, grid), GridVector({10, 0}, {10, 10}, grid), GridVector({10, 10}, {0, 10}, grid),
-			GridVector({0, 10}, {0, 0}, grid)};
+	std::vector<GridVector> walls{GridVector({0, 0}, {10, 0}, grid), GridVector({10, 0}, {10, 10}, grid),
+								  GridVector({10, 10}, {0, 10}, grid), GridVector({0, 10}, {0, 0}, grid)};
+	for (GridVector& w : walls)
+		for (double u = 0.01; u < w.length(); u += 0.02)
+			w.addEndpoint(TPoint2D(w.start().x + u * w.direction().x, w.start().y + u * w.direction().y));
+	return walls;
 }
 
 // A scan from (x, y) of the room: 90 beams ending on its walls, in the robot frame (robot at `pose`).
@@ -120,6 +125,7 @@ TEST(BeamConsistency, ConsistentScansStopAtTheWalls)
 		beamConsistency(map, {roomScan(5, 5, TPose2D(5, 5, 0.3)), roomScan(2, 7, TPose2D(2, 7, -1))});
 	EXPECT_EQ(b.beams, 180u);
 	EXPECT_EQ(b.throughWalls, 0u);
+	EXPECT_EQ(b.throughOccupied, 0u);
 	EXPECT_EQ(b.share(), 0.0);
 }
 
@@ -131,6 +137,22 @@ TEST(BeamConsistency, MisplacedScanSeesThroughWalls)
 	const BeamConsistency b = beamConsistency(map, {s});
 	EXPECT_GT(b.throughWalls, 10u);
 	EXPECT_LT(b.throughWalls, 60u);  // the others end inside the room
+	EXPECT_EQ(b.throughOccupied, b.throughWalls);
+	EXPECT_DOUBLE_EQ(b.share(), double(b.throughWalls) / 90);
+}
+
+TEST(BeamConsistency, AWallWhoseCellsAreFreeIsNoEvidence)
+{
+	auto map = room();
+	for (GridCell& c : map[1].cells()) c.n_occupy = 0.1f * c.n_visit;  // x = 10 seen through: free
+	ScanBeams s;
+	s.pose = TPose2D(5, 5, 0);
+	s.ends = {TPoint2D(6, 0)};  // 1 m behind x = 10
+	const BeamConsistency b = beamConsistency(map, {s});
+	EXPECT_EQ(b.throughWalls, 1u);
+	EXPECT_EQ(b.throughOccupied, 0u);
+	EXPECT_EQ(b.share(), 0.0);
+	EXPECT_EQ(b.geometricShare(), 1.0);
 }
 
 TEST(BeamConsistency, EndpointsJustBehindTheWallAreNoise)
@@ -143,6 +165,7 @@ TEST(BeamConsistency, EndpointsJustBehindTheWallAreNoise)
 	const BeamConsistency b = beamConsistency(map, {s});
 	EXPECT_EQ(b.beams, 4u);
 	EXPECT_EQ(b.throughWalls, 1u);
+	EXPECT_EQ(b.throughOccupied, 1u);
 }
 
 TEST(BeamConsistency, SensorOffsetCounts)
@@ -152,7 +175,7 @@ TEST(BeamConsistency, SensorOffsetCounts)
 	s.pose = TPose2D(9.5, 5, 0);
 	s.origin = TPoint2D(1, 0);  // the sensor itself is behind the wall x = 10: a beam back into the room crosses it
 	s.ends = {TPoint2D(-1, 0)};
-	EXPECT_EQ(beamConsistency(map, {s}).throughWalls, 1u);
+	EXPECT_EQ(beamConsistency(map, {s}).throughOccupied, 1u);
 }
 
 TEST(SelfCheckEvidence, SumsTheMStepsAndCountsTheFinalEdges)
@@ -164,8 +187,9 @@ TEST(SelfCheckEvidence, SumsTheMStepsAndCountsTheFinalEdges)
 	PoseGraphFit fit;
 	fit.downweighted = 5;
 	BeamConsistency beams;
-	beams.beams = 1000, beams.throughWalls = 7;
-	const SelfCheckEvidence e = selfCheckEvidence(true, {a, b}, fit, beams);
+	b.sequential = 40;
+	beams.beams = 1000, beams.throughWalls = 9, beams.throughOccupied = 7;
+	const SelfCheckEvidence e = selfCheckEvidence(true, {a, b}, 51, fit, beams);
 	EXPECT_EQ(e.iterations, 2u);
 	EXPECT_EQ(e.registrations, 120u);
 	EXPECT_EQ(e.failedRegistrations, 12u);
@@ -174,6 +198,9 @@ TEST(SelfCheckEvidence, SumsTheMStepsAndCountsTheFinalEdges)
 	EXPECT_EQ(e.rejectedEdges, 10u);
 	EXPECT_DOUBLE_EQ(e.rejectedShare(), 0.2);
 	EXPECT_DOUBLE_EQ(e.beams.share(), 0.007);
+	EXPECT_EQ(e.keyframes, 51u);
+	EXPECT_EQ(e.sequentialEdges, 40u);
+	EXPECT_DOUBLE_EQ(e.unlinkedShare(), 0.2);
 }
 
 namespace
@@ -187,7 +214,8 @@ SelfCheckEvidence goodRun()
 	e.edges = 500, e.rejectedEdges = 10;
 	e.graph.nodes = 101, e.graph.odometryDof = 300, e.graph.registrationDof = 900;
 	e.graph.odometryChi2 = 300, e.graph.registrationChi2 = 600;  // 900 / 900
-	e.beams.beams = 10000, e.beams.throughWalls = 50;
+	e.keyframes = 200, e.sequentialEdges = 250;
+	e.beams.beams = 10000, e.beams.throughWalls = 60, e.beams.throughOccupied = 50;
 	return e;
 }
 }  // namespace
@@ -217,8 +245,11 @@ TEST(SelfCheckVerdict, EachSignalAloneMakesARunSuspect)
 	e.graph.registrationChi2 = 900 * (kMaxNormalisedChi2 + 1);
 	expectSuspect(e, "normalised chi2");
 	e = goodRun();
-	e.beams.throughWalls = size_t((kMaxThroughWallShare + 0.01) * double(e.beams.beams));
+	e.beams.throughOccupied = size_t((kMaxThroughWallShare + 0.01) * double(e.beams.beams));
 	expectSuspect(e, "beams through static walls");
+	e = goodRun();
+	e.sequentialEdges = size_t((1 - kMaxUnlinkedShare - 0.01) * double(e.keyframes - 1));
+	expectSuspect(e, "keyframes without a sequential edge");
 }
 
 TEST(SelfCheckVerdict, AllReasonsAreListed)
@@ -227,8 +258,9 @@ TEST(SelfCheckVerdict, AllReasonsAreListed)
 	e.failedRegistrations = e.registrations;
 	e.rejectedEdges = e.edges;
 	e.graph.registrationChi2 = 1e9;
-	e.beams.throughWalls = e.beams.beams;
+	e.beams.throughOccupied = e.beams.beams;
+	e.sequentialEdges = 0;
 	const SelfCheckVerdict v = judge(e);
 	EXPECT_FALSE(v.ok);
-	EXPECT_EQ(v.reasons.size(), 4u);
+	EXPECT_EQ(v.reasons.size(), 5u);
 }

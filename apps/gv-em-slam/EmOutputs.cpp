@@ -166,6 +166,9 @@ nlohmann::ordered_json selfCheckJson(const SelfCheckEvidence& e, const SelfCheck
 			{"rejected_edges", e.rejectedEdges},
 			{"rejected_share", e.rejectedShare()},
 			{"normalised_chi2", g.normalisedChi2()},
+			{"keyframes", e.keyframes},
+			{"sequential_edges", e.sequentialEdges},
+			{"unlinked_share", e.unlinkedShare()},
 			{"graph",
 			 {{"nodes", g.nodes},
 			  {"odometry_edges", g.odometryEdges},
@@ -178,7 +181,9 @@ nlohmann::ordered_json selfCheckJson(const SelfCheckEvidence& e, const SelfCheck
 			  {"inactive", g.inactive}}},
 			{"beams", e.beams.beams},
 			{"beams_through_walls", e.beams.throughWalls},
-			{"through_wall_share", e.beams.share()}};
+			{"beams_through_occupied", e.beams.throughOccupied},
+			{"through_wall_share", e.beams.share()},
+			{"through_wall_geometric_share", e.beams.geometricShare()}};
 }
 }  // namespace
 

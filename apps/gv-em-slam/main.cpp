@@ -126,10 +126,11 @@ void printSelfCheck(const SelfCheckEvidence& e, const SelfCheckVerdict& v)
 {
 	std::fprintf(stderr,
 				 "self-check: EM %s after %s; %.1f%% of %zu registrations failed; %.1f%% of %zu edges rejected; "
-				 "normalised chi2 %.2f; %.2f%% of %zu beams through static walls\n",
+				 "normalised chi2 %.2f; %.1f%% of %zu keyframes without a sequential edge; %.2f%% of %zu beams "
+				 "through static walls\n",
 				 e.converged ? "converged" : "did not converge", io::counted(e.iterations, "iteration").c_str(),
 				 100 * e.failedShare(), e.registrations, 100 * e.rejectedShare(), e.edges, e.graph.normalisedChi2(),
-				 100 * e.beams.share(), e.beams.beams);
+				 100 * e.unlinkedShare(), e.keyframes, 100 * e.beams.share(), e.beams.beams);
 	std::string why;
 	for (const auto& r : v.reasons) why += (why.empty() ? "" : "; ") + r;
 	std::fprintf(stderr, "self-check: %s%s\n", v.ok ? "ok" : "suspect (exit status 3): ", why.c_str());
@@ -201,8 +202,8 @@ int run(const io::ArgParser& args)
 	fig.emSeconds = since(t1);
 	std::vector<MStepReport> msteps;
 	for (const auto& it : res.iterations) msteps.push_back(it.mstep);
-	fig.selfCheck =
-		selfCheckEvidence(res.converged, msteps, res.finalGraph, mapConsistency(log, scans, odo, res, ex, cfg));
+	fig.selfCheck = selfCheckEvidence(res.converged, msteps, res.keyframes, res.finalGraph,
+									  mapConsistency(log, scans, odo, res, ex, cfg));
 	fig.verdict = judge(fig.selfCheck);
 
 	// outputs: everything that can fail on the results (the occupancy grid's size) before the first file

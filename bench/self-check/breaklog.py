@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """Deliberately broken benchmark logs for the self-check (issue 21, item 3).
 
-  breaklog.py splice ODOM_LOG SCAN_LOG OUT.log   the k-th ODOM line of ODOM_LOG with the k-th
-      FLASER line of SCAN_LOG, for k below the shorter log's count (mkbench.py logs share one
+  breaklog.py splice ODOM_LOG SCAN_LOG OUT.log   the k-th ODOM pose of ODOM_LOG with the k-th
+      FLASER line of SCAN_LOG (its poses replaced by that odometry), for k below the shorter log's count (mkbench.py logs share one
       timeline, t0 + 0.2 s per scan, so the timestamps stay consistent: the scan's own are kept)
   breaklog.py drop LOG OUT.log                   every other FLASER line dropped (ODOM kept)
 Score either against the scans' log's reference (.ref.txt), matched by time."""
@@ -22,8 +22,10 @@ def splice(odom_log, scan_log, out):
         o.writelines(header(scan_log))
         for od, sc in zip(odom, scans):
             p, s = od.split(), sc.split()
-            ts = s[2 + int(s[1]) + 6]
-            o.write(' '.join(p[:7] + [ts, 'bench', ts]) + '\n' + sc)
+            n = int(s[1])
+            ts = s[2 + n + 6]
+            s[2 + n:2 + n + 6] = p[1:4] * 2  # FLASER carries the odometry too (both poses, as mkbench.py writes)
+            o.write(' '.join(p[:7] + [ts, 'bench', ts]) + '\n' + ' '.join(s) + '\n')
 
 def drop(log, out):
     k = 0

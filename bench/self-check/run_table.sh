@@ -10,7 +10,7 @@ field() { sed -n "s/.*$1=\([^ ]*\).*/\1/p"; }
 for spec in "$@"; do
   IFS=: read -r name log ref <<< "$spec"
   out=$work/$name; rm -rf "$out"; mkdir -p "$out/dbg"
-  GV_EM_DEBUG_DIR=$out/dbg "$bin/gv-em-slam" --input "$log" --out "$out/em" --quiet 2> "$out/stderr.txt"
+  LD_LIBRARY_PATH=$bin GV_EM_DEBUG_DIR=$out/dbg "$bin/gv-em-slam" --input "$log" --out "$out/em" --quiet 2> "$out/stderr.txt"
   rc=$?
   est=$(python3 $ev "$out/em/trajectory.txt" "$ref" | tr '\n' ' ')
   odo=$(python3 $ev "$out/dbg/traj_0.txt" "$ref" | tr '\n' ' ')

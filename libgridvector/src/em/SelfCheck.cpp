@@ -86,11 +86,17 @@ class SegmentIndex
 			});
 	}
 
-	// Does the beam o-e cross a vector and end kThroughWall or more behind its line?
-	bool throughWall(const TPoint2D& o, const TPoint2D& e)
+	enum Crossing
+	{
+		None,
+		Geometric,  //!< ends behind a vector it crosses
+		Occupied  //!< ... crossing it at an occupied cell
+	};
+	// Does the beam o-e cross a vector and end kThroughWall or more behind its line; at an occupied cell?
+	Crossing throughWall(const TPoint2D& o, const TPoint2D& e)
 	{
 		++stamp_;
-		bool through = false;
+		Crossing worst = None;
 		forEachBucket(o, e, [&](int ix, int iy) {
 			const auto b = buckets_.find(bucketKey(ix, iy));
 			if (b == buckets_.end()) return true;
@@ -98,28 +104,50 @@ class SegmentIndex
 			{
 				if (seen_[i] == stamp_) continue;
 				seen_[i] = stamp_;
-				if ((through = crosses(vs_[i], o, e))) return false;
+				worst = std::max(worst, crosses(i, o, e));
+				if (worst == Occupied) return false;
 			}
 			return true;
 		});
-		return through;
+		return worst;
 	}
 
    private:
-	static bool crosses(const GridVector& v, const TPoint2D& o, const TPoint2D& e)
+	Crossing crosses(uint32_t i, const TPoint2D& o, const TPoint2D& e)
 	{
+		const GridVector& v = vs_[i];
 		const TPoint2D &s = v.start(), &t = v.end();
-		const double len = std::hypot(t.x - s.x, t.y - s.y);
-		if (len <= 0) return false;
+		const double len = v.length();
+		if (len <= 0) return None;
 		const double co = cross(s, t, o), ce = cross(s, t, e);
-		if ((co > 0) == (ce > 0) || std::abs(ce) < kThroughWall * len) return false;
-		return (cross(o, e, s) > 0) != (cross(o, e, t) > 0);
+		if ((co > 0) == (ce > 0) || std::abs(ce) < kThroughWall * len) return None;
+		const double cs = cross(o, e, s), ct = cross(o, e, t);
+		if ((cs > 0) == (ct > 0)) return None;
+		const double u = len * cs / (cs - ct);  // the crossing, along the vector from its start
+		return columnOccupied(i, u) ? Occupied : Geometric;
+	}
+
+	// Does a cell of the vector's column at u (metres from its start) hold occupancy above kOccupied?
+	bool columnOccupied(uint32_t i, double u)
+	{
+		std::vector<bool>& cols = occupied_[i];
+		const GridVector& v = vs_[i];
+		if (cols.empty())
+		{
+			cols.assign(size_t(std::max(v.cols(), 1)), false);
+			for (int c = 0; c < v.cols(); ++c)
+				for (int r = 0; r < v.rows(); ++r)
+					cols[size_t(c)] = cols[size_t(c)] || v.cell(r, c).occupancy(v.priorRatio()) > kOccupied;
+		}
+		const int c = std::clamp(int(std::floor(u / v.resolution())), 0, int(cols.size()) - 1);
+		return cols[size_t(c)];
 	}
 
 	const std::vector<GridVector>& vs_;
 	std::unordered_map<int64_t, std::vector<uint32_t>> buckets_;
 	std::vector<uint32_t> seen_;
 	uint32_t stamp_ = 0;
+	std::unordered_map<uint32_t, std::vector<bool>> occupied_;  //!< per vector crossed: its columns' occupancy
 };
 
 TPoint2D compose(const TPose2D& p, const TPoint2D& q)
@@ -139,17 +167,20 @@ BeamConsistency beamConsistency(const std::vector<GridVector>& staticMap, const 
 		for (const TPoint2D& q : sc.ends)
 		{
 			++out.beams;
-			out.throughWalls += index.throughWall(o, compose(sc.pose, q));
+			const auto c = index.throughWall(o, compose(sc.pose, q));
+			out.throughWalls += c != SegmentIndex::None;
+			out.throughOccupied += c == SegmentIndex::Occupied;
 		}
 	}
 	return out;
 }
 
-SelfCheckEvidence selfCheckEvidence(bool converged, const std::vector<MStepReport>& iterations, const PoseGraphFit& fit,
-									const BeamConsistency& beams)
+SelfCheckEvidence selfCheckEvidence(bool converged, const std::vector<MStepReport>& iterations, size_t keyframes,
+									const PoseGraphFit& fit, const BeamConsistency& beams)
 {
 	SelfCheckEvidence e;
 	e.converged = converged;
+	e.keyframes = keyframes;
 	e.iterations = iterations.size();
 	for (const MStepReport& m : iterations)
 		e.registrations += m.registrations, e.failedRegistrations += m.failedRegistrations;
@@ -157,6 +188,7 @@ SelfCheckEvidence selfCheckEvidence(bool converged, const std::vector<MStepRepor
 	{
 		const MStepReport& last = iterations.back();
 		e.edges = last.constraints;
+		e.sequentialEdges = last.sequential;
 		e.rejectedEdges = last.constraints - std::min(last.active, last.constraints) + fit.downweighted;
 	}
 	e.graph = fit;
@@ -184,6 +216,8 @@ SelfCheckVerdict judge(const SelfCheckEvidence& e)
 	test(e.rejectedShare() > kMaxRejectedShare, reason("rejected edges", e.rejectedShare(), ">", kMaxRejectedShare));
 	const double chi2 = e.graph.normalisedChi2();
 	test(std::isfinite(chi2) && chi2 > kMaxNormalisedChi2, reason("normalised chi2", chi2, ">", kMaxNormalisedChi2));
+	test(e.unlinkedShare() > kMaxUnlinkedShare,
+		 reason("keyframes without a sequential edge", e.unlinkedShare(), ">", kMaxUnlinkedShare));
 	test(e.beams.share() > kMaxThroughWallShare,
 		 reason("beams through static walls", e.beams.share(), ">", kMaxThroughWallShare));
 	v.ok = v.reasons.empty();

@@ -9,6 +9,7 @@
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/TPose2D.h>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -45,14 +46,21 @@ struct ScanBeams
 };
 
 /** The map's self-consistency: of the scans' beams, how many end beyond a static vector of the
- * final map they cross (by kThroughWall or more behind its line). In a consistent map a beam
- * stops at the first wall it meets; a trajectory that is broken puts walls of one pass across the
- * beams of another. */
+ * final map they cross (by kThroughWall or more behind its line), and how many of those cross it
+ * where its grid (Eq. 2) says occupied: a cell of the column the beam crosses holds
+ * n_occupy / n_visit > kOccupied. In a consistent map a beam stops at the first wall it meets; a
+ * trajectory that is broken puts walls of one pass across the beams of another. */
 struct BeamConsistency
 {
-	size_t beams = 0, throughWalls = 0;
-	double share() const { return beams ? double(throughWalls) / double(beams) : 0.0; }
+	size_t beams = 0;
+	size_t throughWalls = 0;  //!< beams ending behind a static vector they cross
+	size_t throughOccupied = 0;  //!< ... that cross it at an occupied cell
+	double share() const { return beams ? double(throughOccupied) / double(beams) : 0.0; }
+	double geometricShare() const { return beams ? double(throughWalls) / double(beams) : 0.0; }
 };
+
+/** A cell is occupied above this n_occupy / n_visit (Eq. 6's even odds). */
+constexpr double kOccupied = 0.5;
 
 /** A beam counts as through a wall if its endpoint lies this far behind the wall's line: well above the range
  * noise and the vectors' fit error (a few cm), so a beam that ends on a wall, at any incidence, does not [m]. */
@@ -67,17 +75,24 @@ struct SelfCheckEvidence
 	size_t iterations = 0;
 	size_t registrations = 0, failedRegistrations = 0;  //!< summed over the M-steps
 	size_t edges = 0, rejectedEdges = 0;  //!< registration edges at the end, and of them out (chi2) or down-weighted
+	size_t keyframes = 0, sequentialEdges = 0;  //!< the scans EM placed, and the active sequential edges at the end
 	PoseGraphFit graph;
 	BeamConsistency beams;
 
 	double failedShare() const { return registrations ? double(failedRegistrations) / double(registrations) : 0.0; }
 	double rejectedShare() const { return edges ? double(rejectedEdges) / double(edges) : 0.0; }
+	/** Share of the keyframes after the first that no active sequential edge registers to a predecessor:
+	 * 1 - sequential edges / (keyframes - 1), at least 0. */
+	double unlinkedShare() const
+	{
+		return keyframes > 1 ? std::max(0.0, 1.0 - double(sequentialEdges) / double(keyframes - 1)) : 0.0;
+	}
 };
 
 /** Gathers the evidence of a run: `iterations` its M-steps' reports (the last one's edges are the final graph's),
  * `fit` the final graph's fit. */
-SelfCheckEvidence selfCheckEvidence(bool converged, const std::vector<MStepReport>& iterations, const PoseGraphFit& fit,
-									const BeamConsistency& beams);
+SelfCheckEvidence selfCheckEvidence(bool converged, const std::vector<MStepReport>& iterations, size_t keyframes,
+									const PoseGraphFit& fit, const BeamConsistency& beams);
 
 struct SelfCheckVerdict
 {
@@ -95,6 +110,8 @@ constexpr double kMaxFailedShare = 0.25;
 constexpr double kMaxRejectedShare = 0.25;
 /** The final graph's chi2 per residual dimension above this: edges and trajectory do not fit (good runs: ~1). */
 constexpr double kMaxNormalisedChi2 = 10.0;
+/** More keyframes than this not registered to a predecessor: the registration itself fails. */
+constexpr double kMaxUnlinkedShare = 0.2;
 /** More beams than this through the final map's static walls: the map contradicts its own scans. */
 constexpr double kMaxThroughWallShare = 0.03;
 

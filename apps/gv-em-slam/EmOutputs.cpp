@@ -169,6 +169,7 @@ nlohmann::ordered_json selfCheckJson(const SelfCheckEvidence& e, const SelfCheck
 			{"keyframes", e.keyframes},
 			{"sequential_edges", e.sequentialEdges},
 			{"unlinked_share", e.unlinkedShare()},
+			{"dynamic_share", e.dynamicShare()},
 			{"graph",
 			 {{"nodes", g.nodes},
 			  {"odometry_edges", g.odometryEdges},

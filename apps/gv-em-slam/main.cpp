@@ -125,12 +125,12 @@ BeamConsistency mapConsistency(const io::LogData& log, const std::vector<LocalSc
 void printSelfCheck(const SelfCheckEvidence& e, const SelfCheckVerdict& v)
 {
 	std::fprintf(stderr,
-				 "self-check: EM %s after %s; %.1f%% of %zu registrations failed; %.1f%% of %zu edges rejected; "
-				 "normalised chi2 %.2f; %.1f%% of %zu keyframes without a sequential edge; %.2f%% of %zu beams "
-				 "through static walls\n",
+				 "self-check: EM %s (%s); %.1f%% of %zu registrations failed; %.1f%% of %zu edges rejected; "
+				 "normalised chi2 %.2f; %.1f%% of %zu keyframes without a sequential edge; map %.1f%% dynamic; "
+				 "%.2f%% of beams through occupied static cells\n",
 				 e.converged ? "converged" : "did not converge", io::counted(e.iterations, "iteration").c_str(),
 				 100 * e.failedShare(), e.registrations, 100 * e.rejectedShare(), e.edges, e.graph.normalisedChi2(),
-				 100 * e.unlinkedShare(), e.keyframes, 100 * e.beams.share(), e.beams.beams);
+				 100 * e.unlinkedShare(), e.keyframes, 100 * e.dynamicShare(), 100 * e.beams.share());
 	std::string why;
 	for (const auto& r : v.reasons) why += (why.empty() ? "" : "; ") + r;
 	std::fprintf(stderr, "self-check: %s%s\n", v.ok ? "ok" : "suspect (exit status 3): ", why.c_str());
@@ -203,7 +203,7 @@ int run(const io::ArgParser& args)
 	std::vector<MStepReport> msteps;
 	for (const auto& it : res.iterations) msteps.push_back(it.mstep);
 	fig.selfCheck = selfCheckEvidence(res.converged, msteps, res.keyframes, res.finalGraph,
-									  mapConsistency(log, scans, odo, res, ex, cfg));
+									  mapConsistency(log, scans, odo, res, ex, cfg), res.finalVectors);
 	fig.verdict = judge(fig.selfCheck);
 
 	// outputs: everything that can fail on the results (the occupancy grid's size) before the first file

@@ -176,7 +176,8 @@ BeamConsistency beamConsistency(const std::vector<GridVector>& staticMap, const 
 }
 
 SelfCheckEvidence selfCheckEvidence(bool converged, const std::vector<MStepReport>& iterations, size_t keyframes,
-									const PoseGraphFit& fit, const BeamConsistency& beams)
+									const PoseGraphFit& fit, const BeamConsistency& beams,
+									const std::vector<GridVector>& finalMap)
 {
 	SelfCheckEvidence e;
 	e.converged = converged;
@@ -193,6 +194,8 @@ SelfCheckEvidence selfCheckEvidence(bool converged, const std::vector<MStepRepor
 	}
 	e.graph = fit;
 	e.beams = beams;
+	for (const GridVector& v : finalMap)
+		(v.state == VectorState::Dynamic ? e.dynamicLength : e.staticLength) += v.length();
 	return e;
 }
 
@@ -212,14 +215,15 @@ SelfCheckVerdict judge(const SelfCheckEvidence& e)
 	auto test = [&](bool bad, std::string why) {
 		if (bad) v.reasons.push_back(std::move(why));
 	};
-	test(e.failedShare() > kMaxFailedShare, reason("failed registrations", e.failedShare(), ">", kMaxFailedShare));
-	test(e.rejectedShare() > kMaxRejectedShare, reason("rejected edges", e.rejectedShare(), ">", kMaxRejectedShare));
 	const double chi2 = e.graph.normalisedChi2();
 	test(std::isfinite(chi2) && chi2 > kMaxNormalisedChi2, reason("normalised chi2", chi2, ">", kMaxNormalisedChi2));
+	test(e.rejectedShare() > kMaxRejectedShare, reason("rejected edges", e.rejectedShare(), ">", kMaxRejectedShare));
 	test(e.unlinkedShare() > kMaxUnlinkedShare,
 		 reason("keyframes without a sequential edge", e.unlinkedShare(), ">", kMaxUnlinkedShare));
-	test(e.beams.share() > kMaxThroughWallShare,
-		 reason("beams through static walls", e.beams.share(), ">", kMaxThroughWallShare));
+	test(!e.converged && e.failedShare() > kMaxFailedShareUnconverged,
+		 reason("EM did not converge and failed registrations", e.failedShare(), ">", kMaxFailedShareUnconverged));
+	test(e.dynamicShare() > kMaxDynamicShare,
+		 reason("dynamic share of the map", e.dynamicShare(), ">", kMaxDynamicShare));
 	v.ok = v.reasons.empty();
 	return v;
 }

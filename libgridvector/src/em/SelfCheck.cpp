@@ -222,8 +222,9 @@ SelfCheckVerdict judge(const SelfCheckEvidence& e)
 		 reason("keyframes without a sequential edge", e.unlinkedShare(), ">", kMaxUnlinkedShare));
 	test(!e.converged && e.failedShare() > kMaxFailedShareUnconverged,
 		 reason("EM did not converge and failed registrations", e.failedShare(), ">", kMaxFailedShareUnconverged));
-	test(e.dynamicShare() > kMaxDynamicShare,
-		 reason("dynamic share of the map", e.dynamicShare(), ">", kMaxDynamicShare));
+	test(
+		!e.converged && e.dynamicShare() > kMaxDynamicShareUnconverged,
+		reason("EM did not converge and dynamic share of the map", e.dynamicShare(), ">", kMaxDynamicShareUnconverged));
 	v.ok = v.reasons.empty();
 	return v;
 }

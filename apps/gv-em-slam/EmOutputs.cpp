@@ -151,6 +151,41 @@ nlohmann::ordered_json finalMapJson(const std::vector<GridVector>& vectors, size
 			{"dynamic_length_m", ld},
 			{"doors", doors}};
 }
+// NaN (a graph without redundancy) is written as null by io::writeJsonFile.
+nlohmann::ordered_json selfCheckJson(const SelfCheckEvidence& e, const SelfCheckVerdict& v)
+{
+	const PoseGraphFit& g = e.graph;
+	return {{"verdict", v.ok ? "ok" : "suspect"},
+			{"reasons", v.reasons},
+			{"converged", e.converged},
+			{"iterations", e.iterations},
+			{"registrations", e.registrations},
+			{"failed_registrations", e.failedRegistrations},
+			{"failed_share", e.failedShare()},
+			{"registration_edges", e.edges},
+			{"rejected_edges", e.rejectedEdges},
+			{"rejected_share", e.rejectedShare()},
+			{"normalised_chi2", g.normalisedChi2()},
+			{"keyframes", e.keyframes},
+			{"sequential_edges", e.sequentialEdges},
+			{"unlinked_share", e.unlinkedShare()},
+			{"dynamic_share", e.dynamicShare()},
+			{"graph",
+			 {{"nodes", g.nodes},
+			  {"odometry_edges", g.odometryEdges},
+			  {"registration_edges", g.registrationEdges},
+			  {"odometry_chi2", g.odometryChi2},
+			  {"registration_chi2", g.registrationChi2},
+			  {"odometry_dof", g.odometryDof},
+			  {"registration_dof", g.registrationDof},
+			  {"downweighted", g.downweighted},
+			  {"inactive", g.inactive}}},
+			{"beams", e.beams.beams},
+			{"beams_through_walls", e.beams.throughWalls},
+			{"beams_through_occupied", e.beams.throughOccupied},
+			{"through_wall_share", e.beams.share()},
+			{"through_wall_geometric_share", e.beams.geometricShare()}};
+}
 }  // namespace
 
 void writeReport(const std::string& path, const RunFigures& run, const EmResult& res)
@@ -165,6 +200,7 @@ void writeReport(const std::string& path, const RunFigures& run, const EmResult&
 	r["keyframes"] = res.keyframes;
 	r["iterations_run"] = res.iterations.size();
 	r["converged"] = res.converged;
+	r["self_check"] = selfCheckJson(run.selfCheck, run.verdict);
 	r["iterations"] = nlohmann::ordered_json::array();
 	for (const auto& it : res.iterations) r["iterations"].push_back(iterationJson(it));
 	r["final_map"] = finalMapJson(res.finalVectors, run.doors);

@@ -3,6 +3,7 @@
 
 #include "doors/DoorDetector.h"
 #include "em/EmSlam.h"
+#include "em/SelfCheck.h"
 #include "map/MemoryAccounting.h"
 
 #include <string>
@@ -34,6 +35,8 @@ struct RunFigures
 	size_t doors = 0;
 	MemoryReport memory;
 	std::string configJson;  //!< the full effective configuration (GridVectorConfig::toJson)
+	SelfCheckEvidence selfCheck;
+	SelfCheckVerdict verdict;
 };
 /** report.json (io::writeJsonFile: keys in this order, dump(2), a non-finite number as null);
  * `config` is run.configJson parsed, so it is one JSON tree with the rest. */

@@ -8,7 +8,7 @@
 // map.gvmap (serialized mrpt::maps::CGridVectorMap), vectors.txt
 // (x1 y1 x2 y2 p_static static|dynamic), vectors.svg, occupancy.png/.pgm/.yaml,
 // doors.txt, door_states.txt (every state, wall and leaves of each door) and report.json (per-iteration figures, memory
-// as Table 1, timings).
+// as Table 1, timings, the self-check). Exit status 3: the self-check finds the run suspect (doc/io.md).
 #include "EmOutputs.h"
 #include "InitialTrajectory.h"
 
@@ -34,6 +34,9 @@
 using namespace gridvector;
 using Clock = std::chrono::steady_clock;
 
+/** Exit status of a run whose self-check says suspect (doc/io.md): 1 and 2 are bad input and bad usage. */
+constexpr int kSuspectStatus = 3;
+
 namespace
 {
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
@@ -50,7 +53,8 @@ void printIteration(const EmIteration& it)
 				 it.doors.doors, it.doors.excluded, it.doors.cut, it.mSeconds, it.eSeconds);
 }
 
-// Debugging aid: GV_EM_DEBUG_DIR=dir writes dir/traj_<iteration>.txt after each iteration.
+// Debugging aid: GV_EM_DEBUG_DIR=dir writes dir/traj_<iteration>.txt after each iteration, and traj_0.txt, the
+// start (the raw odometry, or --init's trajectory), before the first: what the run is to improve on.
 void dumpIteration(const io::LogData& log, const EmIteration& it, const std::vector<mrpt::math::TPose2D>& poses)
 {
 	const char* dir = std::getenv("GV_EM_DEBUG_DIR");
@@ -94,6 +98,42 @@ void dumpEdges(int iteration, const MStep& m, const std::vector<std::vector<Matc
 		std::fprintf(f, "%zu %zu %.3f\n", key[k], statics[k].size(), len);
 	}
 	std::fclose(f);
+}
+
+// The self-check's map consistency: the keyframes' beams (the scans EM placed) at their final poses against the
+// final static map.
+BeamConsistency mapConsistency(const io::LogData& log, const std::vector<LocalScan>& scans,
+							   const std::vector<mrpt::math::TPose2D>& odometry, const EmResult& res,
+							   const VectorExtractor& ex, const GridVectorConfig& cfg)
+{
+	std::vector<GridVector> statics;
+	for (const auto& v : res.finalVectors)
+		if (v.state == VectorState::Static) statics.push_back(v);
+	std::vector<ScanBeams> beams;
+	for (size_t t : EmSlam::keyframes(odometry, cfg.mstep))
+	{
+		ScanBeams b;
+		b.pose = res.poses[t];
+		b.origin = scans[t].sensorOrigin;
+		ex.scanToPoints(*log.scans[t].scan, b.ends, 1);
+		beams.push_back(std::move(b));
+	}
+	return beamConsistency(statics, beams);
+}
+
+// The self-check's one or two lines: the evidence, then the verdict with its reasons.
+void printSelfCheck(const SelfCheckEvidence& e, const SelfCheckVerdict& v)
+{
+	std::fprintf(stderr,
+				 "self-check: EM %s (%s); %.1f%% of %zu registrations failed; %.1f%% of %zu edges rejected; "
+				 "normalised chi2 %.2f; %.1f%% of %zu keyframes without a sequential edge; map %.1f%% dynamic; "
+				 "%.2f%% of beams through occupied static cells\n",
+				 e.converged ? "converged" : "did not converge", io::counted(e.iterations, "iteration").c_str(),
+				 100 * e.failedShare(), e.registrations, 100 * e.rejectedShare(), e.edges, e.graph.normalisedChi2(),
+				 100 * e.unlinkedShare(), e.keyframes, 100 * e.dynamicShare(), 100 * e.beams.share());
+	std::string why;
+	for (const auto& r : v.reasons) why += (why.empty() ? "" : "; ") + r;
+	std::fprintf(stderr, "self-check: %s%s\n", v.ok ? "ok" : "suspect (exit status 3): ", why.c_str());
 }
 
 int run(const io::ArgParser& args)
@@ -141,6 +181,8 @@ int run(const io::ArgParser& args)
 	if (args.has("init")) odo = app::initialTrajectory(log, odo, args.get("init"));
 
 	// Sec. 4: EM
+	EmIteration start;  // index 0
+	dumpIteration(log, start, odo);
 	t1 = Clock::now();
 	EmSlam em(cfg);
 	if (std::getenv("GV_EM_DEBUG_DIR")) em.setMStepObserver(dumpEdges);
@@ -158,6 +200,11 @@ int run(const io::ArgParser& args)
 		});
 	progress.done();
 	fig.emSeconds = since(t1);
+	std::vector<MStepReport> msteps;
+	for (const auto& it : res.iterations) msteps.push_back(it.mstep);
+	fig.selfCheck = selfCheckEvidence(res.converged, msteps, res.keyframes, res.finalGraph,
+									  mapConsistency(log, scans, odo, res, ex, cfg), res.finalVectors);
+	fig.verdict = judge(fig.selfCheck);
 
 	// outputs: everything that can fail on the results (the occupancy grid's size) before the first file
 	t1 = Clock::now();
@@ -196,7 +243,8 @@ int run(const io::ArgParser& args)
 					 "occupancy.yaml, map.3Dscene, doors.txt, door_states.txt, report.json}\n",
 					 dir.c_str());
 	}
-	return 0;
+	if (!quiet || !fig.verdict.ok) printSelfCheck(fig.selfCheck, fig.verdict);  // --quiet: only a suspect run
+	return fig.verdict.ok ? 0 : kSuspectStatus;
 }
 }  // namespace
 

@@ -23,6 +23,9 @@ assert r["input"].endswith('sim\tlog "1"\\a.log'), r["input"]
 assert r["init"] is None, r["init"]
 assert set(r["version"]) == {"gridvector", "git", "mrpt"} and all(r["version"].values()), r["version"]
 assert r["keyframes"] > 0
+# the self-check (doc/io.md): a good run of a busy world (most of its length dynamic, converged) is ok
+assert r["self_check"]["verdict"] == "ok" and r["self_check"]["reasons"] == [], r["self_check"]
+assert r["self_check"]["converged"] == r["converged"]
 for it in r["iterations"]:
     assert 0 <= it["wipe_seconds"] and 0 <= it["classify_seconds"]
     assert it["wipe_seconds"] + it["classify_seconds"] <= it["e_seconds"] + 1e-6
@@ -53,12 +56,13 @@ awk -v a="$ate" 'BEGIN { exit !(a <= 0.10) }' || { echo "ATE $ate m > 0.10 m"; e
 ate2=$("$GV_BIN/gv-eval" traj "$tmp/init/trajectory.txt" "$tmp/sim/truth_trajectory.txt" | sed -n 's/.*ate_rmse_m=\([0-9.]*\).*/\1/p')
 echo "ATE from --init truth: $ate2 m"
 awk -v a="$ate2" 'BEGIN { exit !(a <= 0.10) }' || { echo "ATE with --init $ate2 m > 0.10 m"; exit 1; }
-# the debugging aid: GV_EM_DEBUG_DIR gets traj_, edges_ and static_<iteration>.txt and changes nothing;
+# the debugging aid: GV_EM_DEBUG_DIR gets traj_, edges_ and static_<iteration>.txt (traj_0.txt: the odometry) and
+# changes nothing;
 # bench/em-slam/edge_errors.py scores the edges against a reference (here the truth)
 mkdir "$tmp/dbg"
 GV_EM_DEBUG_DIR="$tmp/dbg" "$GV_BIN/gv-em-slam" --input "$tmp/sim/sim.log" --out "$tmp/dbgout" --quiet
 cmp -s "$tmp/dbgout/trajectory.txt" "$tmp/out/trajectory.txt" || { echo "GV_EM_DEBUG_DIR changed the trajectory"; exit 1; }
-for f in traj_1.txt edges_1.txt static_1.txt; do [ -s "$tmp/dbg/$f" ] || { echo "GV_EM_DEBUG_DIR: missing $f"; exit 1; }; done
+for f in traj_0.txt traj_1.txt edges_1.txt static_1.txt; do [ -s "$tmp/dbg/$f" ] || { echo "GV_EM_DEBUG_DIR: missing $f"; exit 1; }; done
 [ "$(wc -l < "$tmp/dbg/static_1.txt")" -gt 0 ] || { echo "static_1.txt empty"; exit 1; }
 python3 "$GV_SOURCE_DIR/bench/em-slam/edge_errors.py" "$tmp/dbg/edges_1.txt" "$tmp/sim/truth_trajectory.txt" > "$tmp/edges.md" \
   || { echo "edge_errors.py failed"; exit 1; }

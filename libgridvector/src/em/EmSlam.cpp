@@ -293,6 +293,7 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		res.iterations.push_back(it);
 		if (onIteration) onIteration(it, res.poses);
 	}
+	res.finalGraph = poseGraphFit(mstep.graph());
 	const auto t0 = std::chrono::steady_clock::now();
 	finalMap(res, estep, ePoses, cfg_);
 	const auto td = std::chrono::steady_clock::now();

@@ -3,6 +3,7 @@
 
 #include "doors/DoorDetector.h"
 #include "doors/DoorExclusion.h"
+#include "em/SelfCheck.h"
 #include "estep/EStep.h"
 #include "map/GlobalMap.h"
 #include <gridvector/GridVectorConfig.h>
@@ -49,6 +50,7 @@ struct EmResult
 	double finalMergeSeconds = 0;  //!< of finalMapSeconds: the final split and the Eq. 4 merges (GlobalMap::mergeAll)
 	double doorSeconds = 0;  //!< of finalMapSeconds: Sec. 5.4 and the door-state cuts
 	size_t keyframes = 0;  //!< scans EM worked on (the others follow their odometry)
+	PoseGraphFit finalGraph;  //!< the last M-step's pose graph at the final trajectory (the self-check's)
 };
 
 /** Runs EM: M-step (all vectors static at first, from raw odometry), then

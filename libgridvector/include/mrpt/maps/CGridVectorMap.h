@@ -114,8 +114,8 @@ class CGridVectorMap : public CMetricMap
 
 	// --- CMetricMap matching: the map as the reference ("this", m1) of mrpt::slam::CICP (icpClassic) ---
 	/** Each point of `otherMap` (a CPointsMap; std::invalid_argument otherwise), moved by
-	 * otherMapPose, is paired with the nearest point of the map's static stretches
-	 * (gridvector::StaticFootPoints: vectors not classified dynamic, their columns whose Fig. 4
+	 * otherMapPose, is paired with the nearest of the fixed places every half cell along the map's
+	 * static stretches (gridvector::StaticFootPoints: vectors not classified dynamic, their columns whose Fig. 4
 	 * profile is at least matching.static_threshold, 0 by default: all) closer than
 	 * params.maxDistForCorrespondence + params.maxAngularDistForCorrespondence x its distance to
 	 * params.angularDistPivotPoint. Pairs: `global` = that point on the vector's line (z = the

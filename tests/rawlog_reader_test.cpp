@@ -196,7 +196,10 @@ TEST(RawlogReader, TruncatedOrCorruptFilesAreErrors)
 	for (const auto& p : {plain, cut, bad, cutGz}) fs::remove(p);
 }
 
-TEST(RawlogReader, ZeroBeamScanIsAnErrorAndTimeGoingBackIsAWarning)
+namespace
+{
+/** Three scans of 181 beams at 2 m, odometry at the origin. */
+LogData threeScans()
 {
 	LogData log;
 	for (int k = 0; k < 3; k++)
@@ -212,6 +215,13 @@ TEST(RawlogReader, ZeroBeamScanIsAnErrorAndTimeGoingBackIsAWarning)
 		r.hasOdometry = true;
 		log.scans.push_back(r);
 	}
+	return log;
+}
+}  // namespace
+
+TEST(RawlogReader, ZeroBeamScanIsAnErrorAndTimeGoingBackIsAWarning)
+{
+	LogData log = threeScans();
 	std::swap(log.scans[1].timestamp, log.scans[2].timestamp);  // out of order
 	std::swap(log.scans[1].scan->timestamp, log.scans[2].scan->timestamp);
 	const std::string unsorted = tmp("unsorted.rawlog");
@@ -288,26 +298,6 @@ TEST(Carmen2Rawlog, ToolWritesRawlogsMrptCanRead)
 
 namespace
 {
-/** Three scans of 181 beams at 2 m, odometry at the origin. */
-LogData threeScans()
-{
-	LogData log;
-	for (int k = 0; k < 3; k++)
-	{
-		ScanRecord r;
-		r.timestamp = 1000 + 0.2 * k;
-		r.scan = mrpt::obs::CObservation2DRangeScan::Create();
-		r.scan->aperture = float(M_PI);
-		r.scan->maxRange = 30;
-		r.scan->resizeScan(181);
-		for (size_t i = 0; i < 181; i++) r.scan->setScanRange(i, 2.0f), r.scan->setScanRangeValidity(i, true);
-		r.scan->timestamp = mrpt::Clock::fromDouble(r.timestamp);
-		r.hasOdometry = true;
-		log.scans.push_back(r);
-	}
-	return log;
-}
-
 std::vector<char> rawlogBytes(const LogData& log, RawlogFormat format)
 {
 	const std::string p = tmp("bytes.rawlog");
@@ -355,7 +345,8 @@ TEST(RawlogReader, CorruptCountsAreRejectedBeforeMrptAllocates)
 		}
 		std::vector<char> b = good;  // a count that fits the limit but not the bytes left
 		ASSERT_TRUE(patchU32(b, b.size() / 2, 181, 90000));
-		EXPECT_NE(parseError(b).find("the scan's beam count is 90000: needs 450000 bytes"), std::string::npos) << parseError(b);
+		EXPECT_NE(parseError(b).find("the scan's beam count is 90000: needs 450000 bytes"), std::string::npos)
+			<< parseError(b);
 	}
 	// a sensory frame announcing 2^30 observations; an action with an invalid estimation method
 	std::vector<char> sf = rawlogBytes(threeScans(), RawlogFormat::SensoryFrames);

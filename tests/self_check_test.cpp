@@ -13,13 +13,6 @@ using mrpt::math::TPose2D;
 
 namespace
 {
-TPose2D relative(const TPose2D& a, const TPose2D& b)
-{
-	const double c = std::cos(a.phi), s = std::sin(a.phi);
-	const double dx = b.x - a.x, dy = b.y - a.y;
-	return {c * dx + s * dy, -s * dx + c * dy, mrpt::math::wrapToPi(b.phi - a.phi)};
-}
-
 // A circle of 60 poses; every edge (chain and chords) is its true relative pose plus noise of sigma, its
 // information 1 / sigma^2: at the optimum chi2 per redundant dimension is about 1.
 PoseGraph noisyCircle(double sigma, unsigned seed, double loopBias = 0)
@@ -39,7 +32,7 @@ PoseGraph noisyCircle(double sigma, unsigned seed, double loopBias = 0)
 	auto add = [&](size_t i, size_t j, EdgeKind kind, double bias) {
 		PoseEdge e;
 		e.from = uint32_t(i), e.to = uint32_t(j), e.kind = kind;
-		e.z = relative(truth[i], truth[j]);
+		e.z = truth[j] - truth[i];
 		e.z.x += n(rng) + bias, e.z.y += n(rng), e.z.phi += n(rng);
 		e.information = Eigen::Matrix3d::Identity() / (sigma * sigma);
 		g.addEdge(e);

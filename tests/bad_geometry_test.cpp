@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <pthread.h>
 #include <limits>
 
 using gridvector::GridVector;
@@ -52,8 +53,28 @@ TEST(BadGeometry, SplitEndsOnPointsNoLineFits)
 		pts.assign(9, TPoint2D(far, far));
 		EXPECT_LE(ex.splitAndMerge(pts, 0, 8).size(), 8u) << far;
 	}
+	// A zigzag splits down to pairs, one level per point: an explicit stack, not a 2*10^4-deep recursion,
+	// shown on a thread with a 256 KiB stack (a recursion that deep needs megabytes; the split of this
+	// worst case is quadratic, so the points are kept few).
 	std::vector<TPoint2D> zigzag;
-	for (int i = 0; i < 100000; i++) zigzag.emplace_back(0.01 * i, (i % 2) * 0.5);  // splits down to pairs
-	const auto segs = ex.splitAndMerge(zigzag, 0, zigzag.size() - 1);
-	EXPECT_GT(segs.size(), 1000u);  // an explicit stack: no 10^5-deep recursion
+	for (int i = 0; i < 20000; i++) zigzag.emplace_back(0.01 * i, (i % 2) * 0.5);
+	struct Job
+	{
+		const gridvector::VectorExtractor* ex;
+		const std::vector<TPoint2D>* pts;
+		size_t segments = 0;
+	} job{&ex, &zigzag};
+	pthread_attr_t attr;
+	ASSERT_EQ(pthread_attr_init(&attr), 0);
+	ASSERT_EQ(pthread_attr_setstacksize(&attr, 256 * 1024), 0);
+	pthread_t thread;
+	auto run = [](void* p) -> void* {
+		auto* j = static_cast<Job*>(p);
+		j->segments = j->ex->splitAndMerge(*j->pts, 0, j->pts->size() - 1).size();
+		return nullptr;
+	};
+	ASSERT_EQ(pthread_create(&thread, &attr, run, &job), 0);
+	pthread_join(thread, nullptr);
+	pthread_attr_destroy(&attr);
+	EXPECT_GT(job.segments, 1000u);
 }

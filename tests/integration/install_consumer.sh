@@ -5,7 +5,7 @@ set -euo pipefail
 build_dir=$(dirname "$GV_BIN")
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 cmake --install "$build_dir" --prefix "$work/prefix" > "$work/install.log"
-for f in lib/libgridvector.so include/mrpt/maps/CGridVectorMap.h include/gridvector/GridVector.h \
+for f in lib/libgridvector.so lib/libgridvector-graphslam.so include/mrpt/maps/CGridVectorMap.h include/gridvector/GridVector.h \
          bin/gv-map-info share/gridvector/icp-slam-gridvector.ini lib/cmake/gridvector/gridvectorConfig.cmake; do
   [ -e "$work/prefix/$f" ] || { echo "not installed: $f"; exit 1; }
 done

@@ -157,27 +157,20 @@ std::vector<ScanSegment> VectorExtractor::splitAndMerge(const std::vector<TPoint
 	std::vector<ScanSegment> segs;
 	const PrefixMoments pm(pts, first, last + 1);
 	split(pts, pm, first, last, segs);
-	// Each sweep joins disjoint neighbouring pairs left to right (a joint is tried again in the next sweep),
-	// copying into a new list: in place, each join's erase made a sweep quadratic in the segment count.
 	bool merged = true;
 	while (merged && segs.size() > 1)
 	{
 		merged = false;
-		std::vector<ScanSegment> next;
-		next.reserve(segs.size());
-		for (size_t s = 0; s < segs.size(); ++s)
+		for (size_t s = 0; s + 1 < segs.size(); ++s)
 		{
 			ScanSegment joint;
-			if (s + 1 < segs.size() && fitSegment(pts, pm, segs[s].first, segs[s + 1].last, joint, ext_.mergeThreshold))
+			if (fitSegment(pts, pm, segs[s].first, segs[s + 1].last, joint, ext_.mergeThreshold))
 			{
-				next.push_back(joint);
+				segs[s] = joint;
+				segs.erase(segs.begin() + long(s) + 1);
 				merged = true;
-				++s;
 			}
-			else
-				next.push_back(segs[s]);
 		}
-		segs.swap(next);
 	}
 	return segs;
 }

@@ -21,9 +21,10 @@ struct OnlineReplay
 	/** Per scan [s]: vector extraction, OnlineEmSlam::addScan and, where an optimisation was due, its
 	 * take and apply (the robot's thread). */
 	std::vector<double> latency;
+	std::vector<double> latencyCpu;  //!< the same as this thread's CPU time (robust to a loaded machine)
 	/** Per optimisation [s]: OnlineEmSlam::runOptimisation (a background thread's on a robot; run here
 	 * right after its scan, on the same core, so the replay is deterministic). */
-	std::vector<double> background;
+	std::vector<double> background, backgroundCpu;
 	std::vector<double> synchronous;  //!< per scan [s]: latency and background together
 	EmResult result;  //!< the final trajectory and map (after OnlineEmSlam::finish), as the batch's
 	MStepReport report;  //!< the online run's registrations and edges
@@ -36,8 +37,9 @@ struct OnlineReplay
 OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::TPose2D>& odometry,
 						  const VectorExtractor& ex, const GridVectorConfig& cfg, io::Progress& progress);
 
-/** report.json's "online" object: latency (median, p99, max in ms), the background optimisations
- * (count, median, max in ms) and both summed per scan (p99), keyframes, edges, and whether
+/** report.json's "online" object: latency (median, p99, max in ms, wall clock and thread CPU time),
+ * the background optimisations (count, median, max in ms) and both summed per scan, keyframes, edges,
+ * and whether
  * --refine ran the batch EM after it. */
 std::string onlineJson(const OnlineReplay& r, bool refined);
 

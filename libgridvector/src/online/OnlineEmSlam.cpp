@@ -185,9 +185,25 @@ size_t OnlineEmSlam::reanchor(size_t n)
 	return k;
 }
 
+// The end of the run, once: Eq. 22, then the batch M-step's edge search over the whole trajectory at
+// its estimate (Sec. 4.3's overlap edges, the loop search, their consistency) and Eq. 22 again, for the
+// pairs that a keyframe's search did not reach as it came in (the estimate was off then).
 void OnlineEmSlam::finish()
 {
-	if (keyPose_.size() > 1) optimise();
+	if (keyPose_.size() < 2) return;
+	optimise();
+	for (int round = 0; round < kClosingRounds; ++round)
+	{
+		book_.beginStep(segs_, nullptr);
+		auto fresh = overlaps_.add(segs_, keyPose_, rep_);
+		std::vector<EdgeKey> deferred;
+		const auto found = loopClosure_.search(segs_, keyPose_, fresh, rep_, &deferred);
+		fresh.insert(fresh.end(), found.begin(), found.end());
+		verifyOverlaps(book_, cfg_.mstep, keyPose_, fresh, rep_);
+		loopClosure_.searchDeferred(segs_, keyPose_, deferred, rep_);
+		if (fresh.empty() && deferred.empty()) break;
+		optimise();
+	}
 	while (next_) reanchor(std::numeric_limits<size_t>::max());
 }
 

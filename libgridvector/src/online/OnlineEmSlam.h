@@ -60,13 +60,18 @@ class OnlineEmSlam
 	 * of a few insertions, and it catches up with a robot that adds at most one keyframe a scan. */
 	static constexpr size_t kReanchorPerScan = 2;
 
+	/** finish() searches the whole trajectory for edges (overlap, loop) and re-optimises at most this
+	 * often: the first round finds what the estimate at the time hid; later ones find little. */
+	static constexpr int kClosingRounds = 2;
+
 	explicit OnlineEmSlam(const GridVectorConfig& cfg = {});
 	OnlineEmSlam(const OnlineEmSlam&) = delete;  // its parts refer to its members
 	OnlineEmSlam& operator=(const OnlineEmSlam&) = delete;
 
 	/** One scan: `scan` in the robot frame, `odometry` the dead-reckoning pose it was taken at. */
 	OnlineStep addScan(const LocalScan& scan, const mrpt::math::TPose2D& odometry);
-	/** End of the run: a last optimisation and the map re-anchored to its result at once. */
+	/** End of the run: a last optimisation, the batch M-step's edge search over the whole trajectory
+	 * and Eq. 22 again (kClosingRounds), and the map re-anchored to the result at once. */
 	void finish();
 
 	/** Eq. 22 over a copy of the graph, made by takeOptimisation(), solved by runOptimisation(). */

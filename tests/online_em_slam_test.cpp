@@ -69,6 +69,16 @@ TEST(OnlineEmSlam, TrajectoryAccurateAndAnObjectSeenThroughIsDynamicWithinTenSca
 	const auto grid = slam.occupancyGrid();
 	EXPECT_GT(grid.getSizeX(), 10u);
 	EXPECT_GT(slam.report().loop, 0u);
+	// the batch's final map at the online trajectory: the board dynamic there too
+	const auto fin = slam.finalMap();
+	double finStatic = 0;
+	const TPose2D toTruth = truth[0] + (TPose2D(0, 0, 0) - final[0]);
+	for (const auto& v : fin)
+	{
+		if (v.state == VectorState::Static) finStatic += v.length();
+		EXPECT_TRUE(!onBoard(v, toTruth) || v.state == VectorState::Dynamic);
+	}
+	EXPECT_GT(finStatic, 60.0);
 }
 
 TEST(OnlineEmSlam, ScansWithoutVectorsFollowTheOdometry)

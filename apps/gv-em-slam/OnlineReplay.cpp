@@ -76,7 +76,7 @@ OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::
 	slam.finish();
 	EmResult& res = out.result;
 	res.poses = slam.trajectory();
-	res.finalVectors = slam.vectors();
+	res.finalVectors = slam.finalMap();  // the live map's states: slam.vectors()
 	res.keyframes = slam.keyframes().size();
 	res.converged = true;  // no EM iterations to converge: the self-check judges the graph and the map
 	res.finalGraph = poseGraphFit(slam.graph());

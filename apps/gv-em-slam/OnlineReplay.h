@@ -33,7 +33,8 @@ struct OnlineReplay
 };
 
 /** Every scan extracted (Sec. 3.1) and given to OnlineEmSlam with its odometry, timed; then finish(),
- * the final map's vectors, doors (Sec. 5.4: leaves dynamic) and the final trajectory in `result`. */
+ * the final map (OnlineEmSlam::finalMap: the batch's, at the online trajectory), doors (Sec. 5.4:
+ * leaves dynamic) and the final trajectory in `result`. */
 OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::TPose2D>& odometry,
 						  const VectorExtractor& ex, const GridVectorConfig& cfg, io::Progress& progress);
 

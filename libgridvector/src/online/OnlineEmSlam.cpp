@@ -1,4 +1,5 @@
 #include "online/OnlineEmSlam.h"
+#include "doors/DoorExclusion.h"
 #include "em/EmSlam.h"
 #include "map/OccupancyConversion.h"
 #include "mstep/Consistency.h"
@@ -231,6 +232,17 @@ std::vector<GridVector> OnlineEmSlam::vectors() const
 	std::stable_partition(all.begin(), all.end(), [](const GridVector& v) { return v.state == VectorState::Static; });
 	for (size_t k = 0; k < all.size(); ++k) all[k].id = k + 1;  // unique across both maps
 	return all;
+}
+
+// Sec. 4.1 and Eq. 4 as the batch's last E-step and final map, at the online trajectory.
+std::vector<GridVector> OnlineEmSlam::finalMap() const
+{
+	if (keyScans_.empty()) return {};
+	const EStep estep(cfg_.estep, cfg_.grid);
+	const EStepResult e = estep.run(GlobalMap::buildPerScan(keyPose_, keyScans_, cfg_));
+	std::vector<GridVector> out = SplitMap::of(e.children, estep, cfg_).vectors;
+	for (size_t k = 0; k < out.size(); ++k) out[k].id = k + 1;  // unique across both maps
+	return out;
 }
 
 std::vector<GridVector> OnlineEmSlam::staticMap() const

@@ -106,6 +106,11 @@ class OnlineEmSlam
 	std::vector<GridVector> vectors() const;
 	std::vector<GridVector> staticMap() const;
 	std::vector<GridVector> dynamicVectors() const;
+	/** The batch's final map at the current trajectory, for the end of a run (O(map), not per scan):
+	 * Eq. 8's full product over the keyframes (GlobalMap::buildPerScan), Eq. 14-15 on it
+	 * (EStep::run), the final split and the Eq. 4 merges per state (SplitMap::of); static then
+	 * dynamic, ids 1..n. */
+	std::vector<GridVector> finalMap() const;
 	/** The static map as an occupancy grid (OccupancyConversion, occupancy.* keys). */
 	mrpt::maps::COccupancyGridMap2D occupancyGrid() const;
 

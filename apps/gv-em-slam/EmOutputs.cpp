@@ -203,6 +203,7 @@ void writeReport(const std::string& path, const RunFigures& run, const EmResult&
 	r["self_check"] = selfCheckJson(run.selfCheck, run.verdict);
 	r["iterations"] = nlohmann::ordered_json::array();
 	for (const auto& it : res.iterations) r["iterations"].push_back(iterationJson(it));
+	if (!run.onlineJson.empty()) r["online"] = nlohmann::ordered_json::parse(run.onlineJson);
 	r["final_map"] = finalMapJson(res.finalVectors, run.doors);
 	r["memory"] = MemoryAccounting::toJson(run.memory);
 	r["seconds"] = {{"read", run.readSeconds},

@@ -35,6 +35,7 @@ struct RunFigures
 	size_t doors = 0;
 	MemoryReport memory;
 	std::string configJson;  //!< the full effective configuration (GridVectorConfig::toJson)
+	std::string onlineJson;  //!< --online's figures (a JSON object); empty: a batch run
 	SelfCheckEvidence selfCheck;
 	SelfCheckVerdict verdict;
 };

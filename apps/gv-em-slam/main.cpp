@@ -2,8 +2,11 @@
 // log or an MRPT rawlog: static/dynamic vectors (E-step) and the robot path
 // (M-step, pose graph) estimated alternately from raw odometry and scans.
 //
-//   gv-em-slam --input LOG --out DIR [--config FILE.ini] [--max-iterations N] [--quiet]
+//   gv-em-slam --input LOG --out DIR [--config FILE.ini] [--max-iterations N] [--online [--refine]] [--quiet]
 //
+// --online replays the log scan by scan through OnlineEmSlam (Sec. 6's sequential mode) and writes the same
+// files from its final map and trajectory, plus trajectory_online.txt (each scan's pose when it came in);
+// --refine then runs the batch EM from the online trajectory.
 // Writes to DIR: trajectory.txt (t x y theta per scan, the input's timestamps),
 // map.gvmap (serialized mrpt::maps::CGridVectorMap), vectors.txt
 // (x1 y1 x2 y2 p_static static|dynamic), vectors.svg, occupancy.png/.pgm/.yaml,
@@ -11,6 +14,7 @@
 // as Table 1, timings, the self-check). Exit status 3: the self-check finds the run suspect (doc/io.md).
 #include "EmOutputs.h"
 #include "InitialTrajectory.h"
+#include "OnlineReplay.h"
 
 #include "doors/DoorDetector.h"
 #include "em/EmSlam.h"
@@ -163,45 +167,66 @@ int run(const io::ArgParser& args)
 	io::Progress progress(quiet);
 	auto t1 = Clock::now();
 	const VectorExtractor ex(cfg.extraction, cfg.grid);
+	const bool online = args.has("online");
 	std::vector<LocalScan> scans;
 	std::vector<mrpt::math::TPose2D> odo;
 	scans.reserve(log.scans.size());
 	for (size_t t = 0; t < log.scans.size(); ++t)
 	{
-		progress.show("extracting vectors", t + 1, log.scans.size());
 		const auto& r = log.scans[t];
+		odo.push_back(r.hasOdometry ? r.odometry : r.hasLogPose ? r.logPose : mrpt::math::TPose2D(0, 0, 0));
+		if (online) continue;  // extracted scan by scan in the replay, timed with it
+		progress.show("extracting vectors", t + 1, log.scans.size());
 		scans.push_back(ex.extract(*r.scan));
 		scans.back().scanIndex = int64_t(t);
 		scans.back().timestamp = r.timestamp;
-		fig.localVectors += scans.back().vectors.size();
-		odo.push_back(r.hasOdometry ? r.odometry : r.hasLogPose ? r.logPose : mrpt::math::TPose2D(0, 0, 0));
 	}
 	progress.done();
 	fig.extractSeconds = since(t1);
 	if (args.has("init")) odo = app::initialTrajectory(log, odo, args.get("init"));
 
-	// Sec. 4: EM
+	// Sec. 6's sequential mode: the log scan by scan (--online), then (--refine) the batch EM from its trajectory
 	EmIteration start;  // index 0
 	dumpIteration(log, start, odo);
 	t1 = Clock::now();
-	EmSlam em(cfg);
-	if (std::getenv("GV_EM_DEBUG_DIR")) em.setMStepObserver(dumpEdges);
-	const EmResult res = em.run(
-		scans, odo,
-		[&](const EmIteration& it, const std::vector<mrpt::math::TPose2D>& poses) {
-			progress.done();
-			if (!quiet) printIteration(it);
-			dumpIteration(log, it, poses);
-		},
-		[&](const char* stage, int iteration, double f) {
-			progress.show("iteration " + std::to_string(iteration) + " of at most " +
-							  std::to_string(cfg.mstep.maxIterations) + ": " + stage,
-						  f);
-		});
-	progress.done();
+	app::OnlineReplay replay;
+	if (online)
+	{
+		replay = app::replayOnline(log, odo, ex, cfg, progress);
+		scans = std::move(replay.scans);
+		if (!quiet)
+		{
+			const std::string j = app::onlineJson(replay, false);
+			std::fprintf(stderr, "online: %s\n", j.c_str());
+		}
+	}
+	for (const auto& s : scans) fig.localVectors += s.vectors.size();
+	const bool batch = !online || args.has("refine");
+	EmResult res = online ? std::move(replay.result) : EmResult{};
+	if (batch)
+	{
+		// Sec. 4: EM, from the raw odometry or (--refine) the online trajectory
+		EmSlam em(cfg);
+		if (std::getenv("GV_EM_DEBUG_DIR")) em.setMStepObserver(dumpEdges);
+		res = em.run(
+			scans, online ? res.poses : odo,
+			[&](const EmIteration& it, const std::vector<mrpt::math::TPose2D>& poses) {
+				progress.done();
+				if (!quiet) printIteration(it);
+				dumpIteration(log, it, poses);
+			},
+			[&](const char* stage, int iteration, double f) {
+				progress.show("iteration " + std::to_string(iteration) + " of at most " +
+								  std::to_string(cfg.mstep.maxIterations) + ": " + stage,
+							  f);
+			});
+		progress.done();
+	}
 	fig.emSeconds = since(t1);
+	if (online) fig.onlineJson = app::onlineJson(replay, batch);
 	std::vector<MStepReport> msteps;
 	for (const auto& it : res.iterations) msteps.push_back(it.mstep);
+	if (res.iterations.empty()) msteps.push_back(replay.report);  // online alone: its registrations
 	fig.selfCheck = selfCheckEvidence(res.converged, msteps, res.keyframes, res.finalGraph,
 									  mapConsistency(log, scans, odo, res, ex, cfg), res.finalVectors);
 	fig.verdict = judge(fig.selfCheck);
@@ -213,6 +238,12 @@ int run(const io::ArgParser& args)
 	io::Trajectory traj;
 	for (size_t t = 0; t < res.poses.size(); ++t) traj.emplace_back(log.scans[t].timestamp, res.poses[t]);
 	io::writeTrajectory(dir + "trajectory.txt", traj);
+	if (online)
+	{
+		io::Trajectory causal;
+		for (size_t t = 0; t < replay.causal.size(); ++t) causal.emplace_back(log.scans[t].timestamp, replay.causal[t]);
+		io::writeTrajectory(dir + "trajectory_online.txt", causal);
+	}
 	const auto& doors = res.doors;
 	fig.doors = doors.size();
 	app::writeVectors(dir + "vectors.txt", res.finalVectors);
@@ -240,8 +271,8 @@ int run(const io::ArgParser& args)
 		std::fprintf(stderr, "%s", MemoryAccounting::summary(fig.memory).c_str());
 		std::fprintf(stderr,
 					 "wrote %s{trajectory.txt, map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, "
-					 "occupancy.yaml, map.3Dscene, doors.txt, door_states.txt, report.json}\n",
-					 dir.c_str());
+					 "occupancy.yaml, map.3Dscene, doors.txt, door_states.txt, report.json%s}\n",
+					 dir.c_str(), online ? ", trajectory_online.txt" : "");
 	}
 	if (!quiet || !fig.verdict.ok) printSelfCheck(fig.selfCheck, fig.verdict);  // --quiet: only a suspect run
 	return fig.verdict.ok ? 0 : kSuspectStatus;
@@ -251,7 +282,8 @@ int run(const io::ArgParser& args)
 int main(int argc, char** argv)
 {
 	io::ArgParser args("gv-em-slam",
-					   "--input LOG --out DIR [--config FILE.ini] [--init TRAJ] [--max-iterations N] [--quiet]");
+					   "--input LOG --out DIR [--config FILE.ini] [--init TRAJ] [--max-iterations N] [--online [--refine]] "
+					   "[--quiet]");
 	args.option("input", "LOG", "CARMEN log (.log/.clf[.gz]) or MRPT rawlog", io::ArgParser::kRequired);
 	args.option("out", "DIR", "output directory (created if missing)", io::ArgParser::kRequired);
 	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_*] sections)",
@@ -261,9 +293,14 @@ int main(int argc, char** argv)
 				"none: raw odometry");
 	args.option("max-iterations", "N", "EM iterations at most (overrides [gridvector_mstep] max_iterations)",
 				std::to_string(GridVectorConfig().mstep.maxIterations));
+	args.flag("online",
+			  "replay the log scan by scan through the online EM-SLAM (OnlineEmSlam); also writes "
+			  "trajectory_online.txt (each scan's pose when it came in) and the per-scan latency in report.json");
+	args.flag("refine", "with --online: run the batch EM afterwards, from the online trajectory");
 	args.flag("quiet", "no progress or summary output");
 	return io::runTool(args, argc, argv, [&] {
 		if (!args.has("input") || !args.has("out")) args.fail("--input and --out are required");
+		if (args.has("refine") && !args.has("online")) args.fail("--refine needs --online");
 		args.requirePositional(0, 0);
 		return run(args);  // a bad option value found there (--max-iterations 0) is bad usage: status 2
 	});

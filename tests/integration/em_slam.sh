@@ -71,6 +71,28 @@ printf '# t x y theta\n1.0 0 0 0\n' > "$tmp/far.txt"
 if "$GV_BIN/gv-em-slam" --input "$tmp/sim/sim.log" --out "$tmp/bad" --init "$tmp/far.txt" 2> "$tmp/err.txt"; then
   echo "--init without matching timestamps accepted"; exit 1; fi
 grep -q "far.txt: no pose within" "$tmp/err.txt" || { cat "$tmp/err.txt"; exit 1; }
+# --online: the same files from OnlineEmSlam, the causal trajectory, the per-scan latency; --refine after it
+"$GV_BIN/gv-em-slam" --input "$tmp/sim/sim.log" --out "$tmp/online" --online --quiet
+for f in trajectory.txt trajectory_online.txt map.gvmap vectors.txt occupancy.png doors.txt report.json; do
+  [ -s "$tmp/online/$f" ] || { echo "--online: missing or empty: $f"; exit 1; }
+done
+[ "$(grep -vc '^#' "$tmp/online/trajectory_online.txt")" -eq 400 ] || { echo "trajectory_online.txt: one pose per scan"; exit 1; }
+python3 - "$tmp/online/report.json" <<'PY' || { echo "report.json: online figures missing"; exit 1; }
+import json, sys
+o = json.load(open(sys.argv[1]))["online"]
+assert 0 < o["latency_ms"]["median"] <= o["latency_ms"]["p99"] <= o["latency_ms"]["max"], o["latency_ms"]
+assert 0 < o["cpu_ms"]["median"] <= o["cpu_ms"]["p99"], o["cpu_ms"]
+assert o["keyframes"] > 0 and o["edges"]["sequential"] > 0 and o["refined"] is False, o
+PY
+for d in online; do
+  a=$("$GV_BIN/gv-eval" traj "$tmp/$d/trajectory.txt" "$tmp/sim/truth_trajectory.txt" | sed -n 's/.*ate_rmse_m=\([0-9.]*\).*/\1/p')
+  echo "--online: ATE $a m"
+  awk -v a="$a" 'BEGIN { exit !(a <= 0.10) }' || { echo "--online: ATE $a m > 0.10 m"; exit 1; }
+done
+"$GV_BIN/gv-em-slam" --input "$tmp/sim/sim.log" --out "$tmp/refine" --online --refine --quiet
+grep -q '"refined": true' "$tmp/refine/report.json" || { echo "--refine: not in report.json"; exit 1; }
+if "$GV_BIN/gv-em-slam" --input "$tmp/sim/sim.log" --out "$tmp/bad" --refine 2> "$tmp/err.txt"; then echo "--refine without --online accepted"; exit 1; fi
+grep -q "needs --online" "$tmp/err.txt" || { cat "$tmp/err.txt"; exit 1; }
 # bad input: one line "file: problem", non-zero exit, no crash
 printf 'FLASER 3 1.0 oops\n' > "$tmp/bad.log"
 if "$GV_BIN/gv-em-slam" --input "$tmp/bad.log" --out "$tmp/bad" 2> "$tmp/err.txt"; then echo "bad log accepted"; exit 1; fi

@@ -35,20 +35,6 @@ std::vector<std::vector<MatchSegment>> initialSegments(const std::vector<LocalSc
 	return out;
 }
 
-// Beyond the paper: the E-step is re-run only when the M-step moved a pose by more than this:
-// half a grid cell, a degree (below them the map, and so the E-step, barely changes).
-constexpr double kRerunTranslation = 0.05;  // [m]
-constexpr double kRerunRotationDeg = 1.0;  // [deg]
-
-bool movedEnough(const std::vector<TPose2D>& a, const std::vector<TPose2D>& b)
-{
-	for (size_t t = 0; t < a.size() && t < b.size(); ++t)
-		if (std::hypot(a[t].x - b[t].x, a[t].y - b[t].y) > kRerunTranslation ||
-			std::abs(mrpt::math::wrapToPi(a[t].phi - b[t].phi)) > kRerunRotationDeg * M_PI / 180)
-			return true;
-	return a.size() != b.size();
-}
-
 // m_{i,t} follows its pose: x_new (+) x_old^-1 (+) m.
 void rebase(std::vector<GridVector>& vs, const std::vector<TPose2D>& from, const std::vector<TPose2D>& to)
 {
@@ -67,6 +53,21 @@ void rebase(std::vector<GridVector>& vs, const std::vector<TPose2D>& from, const
 }  // namespace
 
 EmSlam::EmSlam(const GridVectorConfig& cfg) : cfg_(cfg) {}
+
+// Beyond the paper: the E-step is re-run only when the M-step moved a pose by more than this:
+// half a grid cell, a degree (below them the map, and so the E-step, barely changes).
+constexpr double kRerunTranslation = 0.05;  // [m]
+constexpr double kRerunRotationDeg = 1.0;  // [deg]
+
+bool EmSlam::movedEnough(const std::vector<TPose2D>& a, const std::vector<TPose2D>& b)
+{
+	for (size_t t = 0; t < a.size() && t < b.size(); ++t)
+		if (std::hypot(a[t].x - b[t].x, a[t].y - b[t].y) > kRerunTranslation ||
+			std::abs(mrpt::math::wrapToPi(a[t].phi - b[t].phi)) > kRerunRotationDeg * M_PI / 180)
+			return true;
+	return a.size() != b.size();
+}
+
 
 // Eq. 19-20: the M-step registers the static vectors only; dynamic ones are outliers.
 std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<GridVector>& children,
@@ -88,16 +89,14 @@ std::vector<size_t> EmSlam::keyframes(const std::vector<TPose2D>& odometry, cons
 {
 	std::vector<size_t> k;
 	for (size_t t = 0; t < odometry.size(); ++t)
-	{
-		const bool last = t + 1 == odometry.size();
-		if (k.empty() || last ||
-			std::hypot(odometry[k.back()].x - odometry[t].x, odometry[k.back()].y - odometry[t].y) >=
-				o.keyframeDistance ||
-			std::abs(mrpt::math::wrapToPi(odometry[t].phi - odometry[k.back()].phi)) >=
-				o.keyframeRotationDeg * M_PI / 180)
-			k.push_back(t);
-	}
+		if (k.empty() || t + 1 == odometry.size() || isKeyframe(odometry[k.back()], odometry[t], o)) k.push_back(t);
 	return k;
+}
+
+bool EmSlam::isKeyframe(const TPose2D& lastKeyOdometry, const TPose2D& odometry, const MStepOptions& o)
+{
+	return std::hypot(lastKeyOdometry.x - odometry.x, lastKeyOdometry.y - odometry.y) >= o.keyframeDistance ||
+		   std::abs(mrpt::math::wrapToPi(odometry.phi - lastKeyOdometry.phi)) >= o.keyframeRotationDeg * M_PI / 180;
 }
 
 // EM on the keyframes; every other scan is placed by the odometry from the

@@ -84,6 +84,12 @@ class EmSlam
 	/** Scans EM works on: the first, the last, and each one whose odometry moved
 	 * mstep.keyframe_distance or turned mstep.keyframe_rotation_deg since the last. */
 	static std::vector<size_t> keyframes(const std::vector<mrpt::math::TPose2D>& odometry, const MStepOptions& o);
+	/** keyframes()' rule for one scan: did the odometry move or turn enough since the last keyframe's? */
+	static bool isKeyframe(const mrpt::math::TPose2D& lastKeyOdometry, const mrpt::math::TPose2D& odometry,
+						   const MStepOptions& o);
+	/** Did a pose of `b` move from `a` by more than the E-step's re-run threshold (half a grid cell,
+	 * a degree), or do they differ in length? Below it the map, and so the E-step, barely changes. */
+	static bool movedEnough(const std::vector<mrpt::math::TPose2D>& a, const std::vector<mrpt::math::TPose2D>& b);
 	/** Poses of all scans from the keyframes' and the odometry in between. */
 	static std::vector<mrpt::math::TPose2D> expand(const std::vector<mrpt::math::TPose2D>& keyPoses,
 												   const std::vector<size_t>& key,

@@ -1,0 +1,269 @@
+#include "online/OnlineEmSlam.h"
+#include "doors/DoorExclusion.h"
+#include "em/EmSlam.h"
+#include "map/OccupancyConversion.h"
+#include "mstep/Consistency.h"
+#include "mstep/ConstraintUpdate.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace gridvector
+{
+using mrpt::math::TPose2D;
+
+OnlineEmSlam::OnlineEmSlam(const GridVectorConfig& cfg)
+	: cfg_(cfg),
+	  book_(cfg_.matcher),
+	  reg_(cfg_, book_),
+	  overlaps_(cfg_, book_, reg_, progress_),
+	  loopClosure_(cfg_, book_, progress_),
+	  loopSearch_(cfg_.matcher, cfg_.mstep),
+	  passes_(std::max({cfg_.mstep.loopSearchMaxRadius, cfg_.mstep.overlapDistance, kLoopWindowMinTranslation}),
+			  cfg_.mstep.passHeadingWeight),
+	  optimiser_(cfg_),
+	  live_(std::make_unique<ClassifiedMap>(cfg_))
+{}
+
+// Sec. 4.2: the scan registered against the last keyframe from the odometry since it.
+TPose2D OnlineEmSlam::poseNow(const std::vector<MatchSegment>& segs, const TPose2D& odometry, bool& registered) const
+{
+	const TPose2D guess = odometry - keyOdo_.back();
+	const MatchResult r = reg_.matcher().match(segs_.back(), segs, guess);
+	registered = r.ok();
+	return keyPose_.back() + (registered ? r.pose : guess);
+}
+
+OnlineStep OnlineEmSlam::addScan(const LocalScan& scan, const TPose2D& odometry)
+{
+	OnlineStep st;
+	const size_t t = odometry_.size();
+	std::vector<MatchSegment> segs = MatchSegment::fromVectors(scan.vectors);
+	for (auto& s : segs) s.id = nextSegmentId_++;
+	TPose2D pose = odometry;  // the first scan fixes the frame, as the batch's first pose
+	st.keyframe = keyPose_.empty();
+	if (!st.keyframe)
+	{
+		pose = poseNow(segs, odometry, st.registered);
+		st.keyframe = EmSlam::isKeyframe(keyOdo_.back(), odometry, cfg_.mstep);
+	}
+	odometry_.push_back(odometry);
+	if (st.keyframe)
+	{
+		const uint32_t i = uint32_t(keyPose_.size());
+		segs_.push_back(std::move(segs));
+		keyScans_.push_back(scan);
+		if (keyScans_.back().scanIndex < 0) keyScans_.back().scanIndex = int64_t(t);
+		keyOdo_.push_back(odometry);
+		keyPose_.push_back(pose);
+		keyScan_.push_back(t);
+		book_.beginStep(segs_, nullptr);  // the new keyframe's signature (its vectors never change)
+		loopClosure_.setOdometry(keyOdo_);  // the loop-search windows grow along the path
+		st.loops = addEdges(i);
+		st.optimised = st.loops > 0;
+		due_ = due_ || st.optimised;
+		st.classified = live_->insert(pose, keyScans_.back());
+		liveAt_.push_back(pose);
+	}
+	st.reanchored = reanchor(kReanchorPerScan);
+	st.pose = lastPose_ = pose;
+	return st;
+}
+
+// Sec. 4.2-4.3 for one new keyframe: its sequential edges, then per earlier pass near it an overlap edge
+// where the estimate links the passes already, else a loop search; the new edges' consistency checked.
+size_t OnlineEmSlam::addEdges(uint32_t i)
+{
+	const auto& m = cfg_.mstep;
+	const uint32_t w = uint32_t(std::max(1, m.sequentialWindow));
+	for (uint32_t j = i > w ? i - w : 0; j < i; ++j)
+	{
+		Constraint c;
+		if (reg_.registerPair(j, i, EdgeKind::Sequential, segs_, keyPose_[i] - keyPose_[j], c, rep_))
+			book_.keep({j, i}, std::move(c), rep_);
+		else
+			book_.fail({j, i}, keyPose_[i] - keyPose_[j]);
+	}
+	const uint32_t K = uint32_t(std::max(1, m.overlapRunGap));
+	const auto& passes = passes_.next(i, keyPose_, w, K, [&](uint32_t j) {
+		return std::hypot(keyPose_[i].x - keyPose_[j].x, keyPose_[i].y - keyPose_[j].y) <
+			   std::max(loopClosure_.windowOf(j, i).translation, m.overlapDistance);
+	});
+	std::vector<EdgeKey> fresh, loops;
+	for (const auto& p : passes)
+	{
+		if (segs_[i].empty()) break;
+		const auto link = loopClosure_.linked(p.lo > K ? p.lo - K : 0, p.hi + K, i > K ? i - K : 0, i, fresh);
+		const double dist = std::hypot(keyPose_[i].x - keyPose_[p.nearest].x, keyPose_[i].y - keyPose_[p.nearest].y);
+		if (link != LoopClosure::Link::None)
+		{
+			if (dist >= m.overlapDistance || book_.hasEdgeNear(i, p.lo, p.hi)) continue;
+			for (uint32_t from : overlaps_.partners(i, p.nearest, p.members, segs_, keyPose_))
+			{
+				const EdgeKey key{from, i};
+				const TPose2D rel = keyPose_[i] - keyPose_[from];
+				Constraint c;
+				if (overlaps_.registerOverlap(key, from == p.nearest, segs_, rel, c, rep_))
+				{
+					book_.keep(key, std::move(c), rep_);
+					fresh.push_back(key);
+					break;
+				}
+				book_.fail(key, rel);
+			}
+			continue;
+		}
+		if (!m.loopSearch || dist >= loopClosure_.windowOf(p.nearest, i).translation) continue;
+		const uint32_t j = p.nearest;
+		const TPose2D rel = keyPose_[i] - keyPose_[j];
+		++rep_.loopSearches, ++rep_.registrations;
+		const MatchResult r = loopSearch_.search(segs_[j], segs_[i], rel, loopClosure_.windowOf(j, i));
+		if (!r.ok())
+		{
+			++rep_.failedRegistrations;
+			continue;
+		}
+		book_.edges[{j, i}] = book_.make({j, i}, EdgeKind::Loop, r, rel);
+		++rep_.added;
+		fresh.push_back({j, i});
+		loops.push_back({j, i});
+	}
+	verifyOverlaps(book_, m, keyPose_, fresh, rep_);
+	return size_t(std::count_if(loops.begin(), loops.end(), [&](const EdgeKey& k) { return book_.edges.count(k); }));
+}
+
+OnlineEmSlam::Optimisation OnlineEmSlam::takeOptimisation()
+{
+	due_ = false;
+	return {keyPose_, keyOdo_, book_.edges, {}};
+}
+
+void OnlineEmSlam::runOptimisation(Optimisation& job)
+{
+	optimiser_.beginStep();
+	optimiser_.optimise(job.poses, job.odometry, job.edges, job.report);
+}
+
+// Eq. 22's trajectory for the keyframes it had; a keyframe added since follows the last of them
+// (x_k = x_n' (+) x_n^-1 (+) x_k); a trajectory that moved re-anchors the map.
+void OnlineEmSlam::applyOptimisation(const Optimisation& job)
+{
+	const size_t n = std::min(job.poses.size(), keyPose_.size());
+	if (n == 0) return;
+	const TPose2D carry = job.poses[n - 1] + (TPose2D(0, 0, 0) - keyPose_[n - 1]);
+	for (size_t k = n; k < keyPose_.size(); ++k) keyPose_[k] = carry + keyPose_[k];
+	std::copy(job.poses.begin(), job.poses.begin() + long(n), keyPose_.begin());
+	lastPose_ = carry + lastPose_;
+	for (const auto& [key, c] : job.edges)
+		if (auto it = book_.edges.find(key); it != book_.edges.end()) it->second.rejected = c.rejected;
+	rep_.optimisation = job.report.optimisation;
+	if (!next_ && EmSlam::movedEnough(liveAt_, keyPose_)) next_ = std::make_unique<ClassifiedMap>(cfg_), nextAt_.clear();
+}
+
+void OnlineEmSlam::optimise()
+{
+	Optimisation job = takeOptimisation();
+	runOptimisation(job);
+	applyOptimisation(job);
+}
+
+size_t OnlineEmSlam::reanchor(size_t n)
+{
+	if (!next_) return 0;
+	size_t k = 0;
+	for (; k < n && nextAt_.size() < keyPose_.size(); ++k)
+	{
+		const size_t i = nextAt_.size();
+		next_->insert(keyPose_[i], keyScans_[i]);
+		nextAt_.push_back(keyPose_[i]);
+	}
+	if (nextAt_.size() < keyPose_.size()) return k;
+	live_ = std::move(next_);
+	liveAt_ = std::move(nextAt_);
+	nextAt_.clear();
+	if (EmSlam::movedEnough(liveAt_, keyPose_)) next_ = std::make_unique<ClassifiedMap>(cfg_);  // moved meanwhile
+	return k;
+}
+
+// The end of the run, once: Eq. 22, then the batch M-step's edge search over the whole trajectory at
+// its estimate (Sec. 4.3's overlap edges, the loop search, their consistency) and Eq. 22 again, for the
+// pairs that a keyframe's search did not reach as it came in (the estimate was off then).
+void OnlineEmSlam::finish()
+{
+	if (keyPose_.size() < 2) return;
+	optimise();
+	for (int round = 0; round < kClosingRounds; ++round)
+	{
+		book_.beginStep(segs_, nullptr);
+		auto fresh = overlaps_.add(segs_, keyPose_, rep_);
+		std::vector<EdgeKey> deferred;
+		const auto found = loopClosure_.search(segs_, keyPose_, fresh, rep_, &deferred);
+		fresh.insert(fresh.end(), found.begin(), found.end());
+		verifyOverlaps(book_, cfg_.mstep, keyPose_, fresh, rep_);
+		loopClosure_.searchDeferred(segs_, keyPose_, deferred, rep_);
+		if (fresh.empty() && deferred.empty()) break;
+		optimise();
+	}
+	while (next_) reanchor(std::numeric_limits<size_t>::max());
+}
+
+MStepReport OnlineEmSlam::report() const
+{
+	MStepReport r = rep_;
+	summarise(book_, 0, r);
+	return r;
+}
+
+TPose2D OnlineEmSlam::currentPose() const { return lastPose_; }
+
+std::vector<TPose2D> OnlineEmSlam::trajectory() const
+{
+	if (keyScan_.empty()) return {};
+	std::vector<TPose2D> out = EmSlam::expand(keyPose_, keyScan_, odometry_);
+	const size_t last = keyScan_.back();  // scans after the last keyframe follow its odometry
+	for (size_t t = last + 1; t < odometry_.size(); ++t) out[t] = keyPose_.back() + (odometry_[t] - odometry_[last]);
+	return out;
+}
+
+std::vector<GridVector> OnlineEmSlam::vectors() const
+{
+	std::vector<GridVector> all = live_->children();
+	std::stable_partition(all.begin(), all.end(), [](const GridVector& v) { return v.state == VectorState::Static; });
+	for (size_t k = 0; k < all.size(); ++k) all[k].id = k + 1;  // unique across both maps
+	return all;
+}
+
+// Sec. 4.1 and Eq. 4 as the batch's last E-step and final map, at the online trajectory.
+std::vector<GridVector> OnlineEmSlam::finalMap() const
+{
+	if (keyScans_.empty()) return {};
+	const EStep estep(cfg_.estep, cfg_.grid);
+	const EStepResult e = estep.run(GlobalMap::buildPerScan(keyPose_, keyScans_, cfg_));
+	std::vector<GridVector> out = SplitMap::of(e.children, estep, cfg_).vectors;
+	for (size_t k = 0; k < out.size(); ++k) out[k].id = k + 1;  // unique across both maps
+	return out;
+}
+
+std::vector<GridVector> OnlineEmSlam::staticMap() const
+{
+	std::vector<GridVector> out;
+	for (auto& v : live_->children())
+		if (v.state == VectorState::Static) out.push_back(std::move(v));
+	return out;
+}
+
+std::vector<GridVector> OnlineEmSlam::dynamicVectors() const
+{
+	std::vector<GridVector> out;
+	for (auto& v : live_->children())
+		if (v.state == VectorState::Dynamic) out.push_back(std::move(v));
+	return out;
+}
+
+mrpt::maps::COccupancyGridMap2D OnlineEmSlam::occupancyGrid() const
+{
+	return OccupancyConversion::toOccupancyGrid(vectors(), cfg_.occupancy, cfg_.grid);
+}
+
+}  // namespace gridvector

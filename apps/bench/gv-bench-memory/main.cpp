@@ -57,6 +57,30 @@ void analyse(const std::vector<GridVector>& vs, const GridVectorConfig& cfg)
 				rowsNoEvidence += !any;
 			}
 		}
+		// CompactMap's bytes by part: per cell kind (2 bits) and values (half floats: 2 B), points (n_acc varint, 2 B centre)
+		size_t kPrior = 0, kObserved = 0, kPoints = 0, pointBytes = 0;
+		for (const GridVector& v : vs)
+			for (const GridCell& g : v.cells())
+			{
+				if (g.n_acc > 0)
+				{
+					++kPoints;
+					pointBytes += 2 + (g.n_acc < 128 ? 1 : g.n_acc < 16384 ? 2 : 3);
+				}
+				else if (g.n_occupy == 0 && g.n_visit == 0)
+					continue;
+				else if (std::abs(g.n_occupy - prior * g.n_visit) <= 1e-6 * g.n_visit)
+					++kPrior;
+				else
+					++kObserved;
+			}
+		const size_t valueBytes = 2 * kPrior + 4 * (kObserved + kPoints) + pointBytes;
+		const size_t compactBytes = CompactMap::encode(vs).bytes().size();
+		std::printf("compact: %zu B = kinds %zu + counts %zu (prior %zu, observed %zu, with points %zu cells) + points %zu + "
+					"per-vector %zu (%.1f B/vector)\n",
+					compactBytes, (cells * 2 + 7) / 8, valueBytes - pointBytes, kPrior, kObserved, kPoints, pointBytes,
+					compactBytes - (cells * 2 + 7) / 8 - valueBytes,
+					double(compactBytes - (cells * 2 + 7) / 8 - valueBytes) / std::max<size_t>(vs.size(), 1));
 		std::printf("vectors %zu, length %.1f m (static %.1f), columns %zu, cells %zu\n", vs.size(), len, lenStatic,
 					cols, cells);
 		std::printf("bytes: overhead %zu (%zu B/vector), cells %zu (%zu B/cell)\n", vs.size() * sizeof(GridVector),

@@ -3,6 +3,9 @@
 //
 //   gv-bench-memory MAP.gvmap
 //
+// Also: Eq. 6 over the map and over its CompactMap round trip (the raster of [gridvector_occupancy]),
+// and the totals Algorithm 2 conserves, before and after.
+//
 // Bytes: per-vector overhead (sizeof(GridVector)), cells (sizeof(GridCell)), rows of a vector
 // without any evidence (every cell at the prior), cells without evidence.
 // Duplicate length: vectors taken longest first; a column of a vector is duplicate when its centre
@@ -13,8 +16,8 @@
 #include "common/ArgParser.h"
 #include "io/ObjectFile.h"
 #include "map/CompactMap.h"
-#include "map/Correspondence.h"
 #include "map/GlobalMap.h"
+#include "map/Correspondence.h"
 #include "map/MemoryAccounting.h"
 #include "map/OccupancyConversion.h"
 #include "map/VectorIndex.h"
@@ -187,8 +190,7 @@ void totals(const char* what, const std::vector<GridVector>& vs)
 
 int main(int argc, char** argv)
 {
-	io::ArgParser args("gv-bench-memory", "MAP.gvmap [--remerge]");
-	args.flag("remerge", "merge the map's static and dynamic vectors again (Eq. 4) and compare");
+	io::ArgParser args("gv-bench-memory", "MAP.gvmap");
 	return io::runTool(args, argc, argv, [&] {
 		args.requirePositional(1, 1);
 		mrpt::maps::CGridVectorMap map;
@@ -200,26 +202,6 @@ int main(int argc, char** argv)
 		std::printf("compact round trip: ");
 		compareOccupancy(map.vectors(), back, cfg);
 		totals("round trip", back);
-		if (args.has("remerge"))
-		{
-			std::vector<GridVector> st, dy;
-			for (const GridVector& v : map.vectors()) (v.state == VectorState::Dynamic ? dy : st).push_back(v);
-			for (int round = 1; round <= 4; ++round)
-			{
-				const size_t before = st.size() + dy.size();
-				std::vector<GridVector> ms = GlobalMap::mergeAll(st, cfg).vectors, md = GlobalMap::mergeAll(dy, cfg).vectors;
-				for (auto& v : ms) v.state = VectorState::Static;
-				for (auto& v : md) v.state = VectorState::Dynamic;
-				st = std::move(ms), dy = std::move(md);
-				std::vector<GridVector> all = st;
-				all.insert(all.end(), dy.begin(), dy.end());
-				std::printf("--- remerge round %d: %zu -> %zu vectors\n", round, before, all.size());
-				analyse(all, cfg);
-				totals("remerged", all);
-				compareOccupancy(map.vectors(), all, cfg);
-				if (all.size() == before) break;
-			}
-		}
 		return 0;
 	});
 }

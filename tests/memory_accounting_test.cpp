@@ -31,7 +31,11 @@ TEST(MemoryAccounting, ReproducesTable1Fig7)
 	EXPECT_GE(r.columns, r.n_v);
 	EXPECT_NEAR(r.ratioCells, double(r.n_g) / r.cells, 1e-12);
 	EXPECT_EQ(r.bytesGrid, r.n_g * r.bytesPerGridCell);
-	EXPECT_GE(r.bytesGridVector, r.cells * sizeof(GridCell));
+	EXPECT_GE(r.bytesWorkingForm, r.cells * sizeof(GridCell) + vs.size() * sizeof(GridVector));
+	// the map as held: the compact buffer, prior cells at 2 bytes, 2 bits of kind per cell
+	EXPECT_LT(r.bytesGridVector * 5, r.bytesWorkingForm);
+	EXPECT_GE(r.bytesGridVector, r.cells * 2);
+	EXPECT_NEAR(r.ratioBytesWorkingForm, double(r.bytesGrid) / r.bytesWorkingForm, 1e-12);
 }
 
 TEST(MemoryAccounting, JsonHasEveryFigure)
@@ -47,7 +51,8 @@ TEST(MemoryAccounting, JsonHasEveryFigure)
 	EXPECT_EQ(j["n_v"], 200);
 	EXPECT_DOUBLE_EQ(j["ratio_ng_nv"].get<double>(), 25);
 	EXPECT_EQ(j["grid_vector_cells"], 600);
-	for (const char* k : {"bytes_occupancy_grid", "bytes_grid_vector_map"}) EXPECT_TRUE(j.contains(k)) << k;
+	for (const char* k : {"bytes_occupancy_grid", "bytes_grid_vector_map", "bytes_working_form", "bytes_gvmap_file"})
+		EXPECT_TRUE(j.contains(k)) << k;
 	EXPECT_EQ(j.begin().key(), "resolution_m") << "the keys in the order of MemoryReport's fields";
 	const std::string path = ::testing::TempDir() + "/memory_accounting_test.json";
 	MemoryAccounting::writeJson(r, path);

@@ -31,6 +31,7 @@
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -255,6 +256,7 @@ int run(const io::ArgParser& args)
 	MapExport::writeRosMap(grid, dir + "occupancy.pgm", dir + "occupancy.yaml");
 	MapExport::write3DScene(res.finalVectors, grid, dir + "map.3Dscene");
 	fig.memory = MemoryAccounting::account(res.finalVectors, 0.1);
+	MemoryAccounting::setFileBytes(fig.memory, size_t(std::filesystem::file_size(dir + "map.gvmap")));
 	fig.outputSeconds = since(t1);
 	fig.totalSeconds = since(t0);
 	app::writeReport(outDir.markerPath(), fig, res);  // last: a directory with report.json is complete

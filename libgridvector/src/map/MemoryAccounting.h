@@ -17,7 +17,10 @@ namespace gridvector
  * 471 is within the rounding of the printed length): one cell per 10 cm of
  * vector, i.e. the width of the slender grid is not counted. `cells` counts
  * it (rows x columns of every vector), and the bytes compare what each
- * representation really holds in memory. */
+ * representation really holds in memory: the map as it is held once built
+ * (CompactMap: its buffer and the object) and, for comparison, the working
+ * form the EM loop edits (GridVector objects, their float cells' capacity and
+ * the vector of them's capacity). */
 struct MemoryReport
 {
 	double resolution = 0.1;  //!< of the reference occupancy grid and of n_v [m]
@@ -33,14 +36,21 @@ struct MemoryReport
 	double ratioCells = 0;  //!< n_g / cells
 	size_t bytesPerGridCell = 1;  //!< sizeof(COccupancyGridMap2D::cellType)
 	size_t bytesGrid = 0;  //!< n_g * bytesPerGridCell
-	size_t bytesGridVector = 0;  //!< sizeof(GridVector) + cells' capacity * sizeof(GridCell), summed
+	size_t bytesGridVector = 0;  //!< CompactMap::encode(vectors).memoryBytes(): the map as held
 	double ratioBytes = 0;  //!< bytesGrid / bytesGridVector
+	/** capacity * sizeof(GridVector) + cells' capacity * sizeof(GridCell), summed: the working form. */
+	size_t bytesWorkingForm = 0;
+	double ratioBytesWorkingForm = 0;  //!< bytesGrid / bytesWorkingForm
+	size_t bytesFile = 0;  //!< the saved .gvmap (gzip), when the caller sets it (0: not saved)
+	double ratioBytesFile = 0;  //!< bytesGrid / bytesFile
 };
 
 class MemoryAccounting
 {
    public:
 	static MemoryReport account(const std::vector<GridVector>& vectors, double resolution = 0.1);
+	/** Sets bytesFile (and its ratio) from a saved map's size on disk. */
+	static void setFileBytes(MemoryReport& r, size_t bytes);
 	/** One JSON object (keys as the fields, snake_case), in the order of the fields. */
 	static nlohmann::ordered_json toJson(const MemoryReport& r);
 	/** io::writeJsonFile(path, toJson(r)): atomically; throws std::runtime_error("path: cannot write (...)"). */

@@ -1,4 +1,5 @@
 // CGridVectorMap: serialization (versioned) and text/SVG representation.
+#include "map/CompactMap.h"
 #include "map/MapExport.h"
 #include "io/ArchiveFile.h"
 #include "io/AtomicFile.h"
@@ -215,6 +216,17 @@ void requireCells(const std::vector<GridCell>& cells, uint64_t vector)
 	}
 }
 
+/** A vector record's geometry: finite endpoints, a known state, a grid that covers its vector
+ * (cols is ceil(length / resolution), up to kMaxExtraColumns more after merges: Algorithm 2). */
+void requireRecord(const mrpt::math::TPoint2D& s, const mrpt::math::TPoint2D& e, int64_t cols, uint8_t state,
+				   const gridvector::GridVectorConfig& cfg, uint64_t i)
+{
+	const double lengthInCells = std::hypot(e.x - s.x, e.y - s.y) / cfg.grid.resolution;
+	const bool covers = cols + 1 >= lengthInCells && cols <= lengthInCells + kMaxExtraColumns;
+	if (cols < 1 || cols > 10'000'000 || state > 2 || !finite(s) || !finite(e) || !(lengthInCells < 1e6) || !covers)
+		throw std::runtime_error("CGridVectorMap: corrupt vector record " + std::to_string(i));
+}
+
 // The cells of one vector, read in chunks so that a corrupt column count fails at the end
 // of the data instead of allocating what it claims.
 std::vector<GridCell> readCells(mrpt::serialization::CArchive& in, size_t count)
@@ -233,34 +245,27 @@ std::vector<GridCell> readCells(mrpt::serialization::CArchive& in, size_t count)
 
 }  // namespace
 
-uint8_t CGridVectorMap::serializeGetVersion() const { return 1; }
+/** Version 2: the vectors as one CompactMap buffer (half-float counts, only the cells' evidence),
+ * instead of version 1's doubles and 20-byte cells. */
+uint8_t CGridVectorMap::serializeGetVersion() const { return 2; }
 
 void CGridVectorMap::serializeTo(mrpt::serialization::CArchive& out) const
 {
 	writeConfigV1(out, impl_->map.config());
 	out << likelihoodOptions.sigma << likelihoodOptions.maxCorrDistance << likelihoodOptions.zRandom
 		<< int32_t(likelihoodOptions.decimation);
-	out << uint64_t(insertedScans_) << uint64_t(impl_->map.size());
-	for (const auto& v : impl_->map.vectors())
-	{
-		out << v.start().x << v.start().y << v.end().x << v.end().y;
-		out << int32_t(v.cols()) << int64_t(v.scanIndex) << v.timestamp << v.id << uint8_t(v.state) << v.mergedCount;
-		out.WriteBuffer(v.cells().data(), v.cells().size() * sizeof(GridCell));
-	}
+	const gridvector::CompactMap compact = gridvector::CompactMap::encode(impl_->map.vectors());
+	out << uint64_t(insertedScans_) << uint64_t(compact.bytes().size());
+	out.WriteBuffer(compact.bytes().data(), compact.bytes().size());
 	out << genericMapParams;
 }
 
-// Versions 0 and 1 differ only in the config record; the rest is the same.
-void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version)
+namespace
 {
-	if (version > 1) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
-	const gridvector::GridVectorConfig cfg = version == 0 ? readConfigV0(in) : readConfigV1(in);
-	int32_t decimation = 1;
-	in >> likelihoodOptions.sigma >> likelihoodOptions.maxCorrDistance >> likelihoodOptions.zRandom >> decimation;
-	likelihoodOptions.decimation = decimation;
-	requireLikelihoodOptions(likelihoodOptions);
-	uint64_t scans = 0, n = 0;
-	in >> scans >> n;
+/** Version 0/1 vector records: geometry and bookkeeping as doubles and integers, then the cells as stored. */
+std::vector<GridVector> readVectorsV1(mrpt::serialization::CArchive& in, const gridvector::GridVectorConfig& cfg,
+									  uint64_t n)
+{
 	std::vector<GridVector> vectors;
 	vectors.reserve(size_t(std::min<uint64_t>(n, 1 << 16)));
 	for (uint64_t i = 0; i < n; ++i)
@@ -273,13 +278,7 @@ void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ve
 		uint64_t id = 0;
 		uint32_t merged = 1;
 		in >> s.x >> s.y >> e.x >> e.y >> cols >> scanIndex >> t >> id >> state >> merged;
-		// (the GridVector constructor sizes a grid from the length before fromParts replaces it)
-		const double lengthInCells = std::hypot(e.x - s.x, e.y - s.y) / cfg.grid.resolution;
-		// a grid covers its vector: cols is ceil(length / resolution), up to 2 more after a merge (Algorithm 2)
-		const bool covers = cols + 1 >= lengthInCells && cols <= lengthInCells + kMaxExtraColumns;
-		if (cols < 1 || cols > 10'000'000 || state > 2 || !finite(s) || !finite(e) || !(lengthInCells < 1e6) ||
-			!covers)
-			throw std::runtime_error("CGridVectorMap: corrupt vector record " + std::to_string(i));
+		requireRecord(s, e, cols, state, cfg, i);
 		std::vector<GridCell> cells = readCells(in, size_t(cfg.grid.halfWidth * 2 + 1) * size_t(cols));
 		requireCells(cells, i);
 		GridVector v = GridVector::fromParts(s, e, cfg.grid, cols, std::move(cells));
@@ -290,6 +289,66 @@ void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t ve
 		v.mergedCount = merged;
 		vectors.push_back(std::move(v));
 	}
+	return vectors;
+}
+
+/** Most bytes a version-2 vector buffer may claim: 2^32, far beyond any map (and read in chunks). */
+constexpr uint64_t kMaxCompactBytes = uint64_t(1) << 32;
+
+/** Version 2: the CompactMap buffer, decoded, each vector checked as a version-1 record. */
+std::vector<GridVector> readVectorsV2(mrpt::serialization::CArchive& in, const gridvector::GridVectorConfig& cfg)
+{
+	uint64_t size = 0;
+	in >> size;
+	if (size > kMaxCompactBytes) throw std::runtime_error("CGridVectorMap: corrupt vector buffer (" + std::to_string(size) + " bytes)");
+	std::vector<uint8_t> bytes;
+	constexpr size_t kChunk = 1 << 20;
+	for (size_t done = 0; done < size;)
+	{
+		const size_t n = std::min<size_t>(kChunk, size_t(size) - done);
+		bytes.resize(done + n);
+		in.ReadBuffer(bytes.data() + done, n);
+		done += n;
+	}
+	std::vector<GridVector> vectors;
+	try
+	{
+		vectors = gridvector::CompactMap::fromBytes(std::move(bytes)).decode(cfg.grid);
+	}
+	catch (const std::runtime_error& e)
+	{
+		throw std::runtime_error(std::string("CGridVectorMap: corrupt vector buffer (") + e.what() + ")");
+	}
+	for (size_t i = 0; i < vectors.size(); ++i)
+	{
+		const GridVector& v = vectors[i];
+		requireRecord(v.start(), v.end(), v.cols(), uint8_t(v.state), cfg, i);
+		requireCells(v.cells(), i);
+	}
+	return vectors;
+}
+}  // namespace
+
+// Versions 0 and 1 differ only in the config record; version 2 stores the vectors compactly.
+void CGridVectorMap::serializeFrom(mrpt::serialization::CArchive& in, uint8_t version)
+{
+	if (version > 2) MRPT_THROW_UNKNOWN_SERIALIZATION_VERSION(version);
+	const gridvector::GridVectorConfig cfg = version == 0 ? readConfigV0(in) : readConfigV1(in);
+	int32_t decimation = 1;
+	in >> likelihoodOptions.sigma >> likelihoodOptions.maxCorrDistance >> likelihoodOptions.zRandom >> decimation;
+	likelihoodOptions.decimation = decimation;
+	requireLikelihoodOptions(likelihoodOptions);
+	uint64_t scans = 0;
+	in >> scans;
+	std::vector<GridVector> vectors;
+	if (version < 2)
+	{
+		uint64_t n = 0;
+		in >> n;
+		vectors = readVectorsV1(in, cfg, n);
+	}
+	else
+		vectors = readVectorsV2(in, cfg);
 	in >> genericMapParams;
 	impl_->map.clear();
 	setConfig(cfg);

@@ -17,7 +17,7 @@ namespace gridvector
  * least since (the registration starts nearest its solution; the latest is usually the pose's own traverse).
  * A pass beyond them adds a registration into a pass that the kept ones already link to by their own edges;
  * without the bound the edges per pose, and the M-step's time per scan, grow with the passes through the place. */
-constexpr size_t kRecentPasses = 2;
+constexpr size_t kRecentPasses = 3;
 
 /** Earlier poses near the current one, grouped into passes (runs of poses at
  * most `runGap` apart in time), poses added one by one in time order. */

@@ -125,30 +125,3 @@ TEST(WipeProduct, RejectsRangesThatDoNotCoverTheMap)
 	p.first.back() -= 1;
 	EXPECT_THROW(WipeProduct(0.05, false, 2.0).apply(p.sensors, p.first, p.map), std::invalid_argument);
 }
-
-// kWipePasses: a vector takes the triangles of the passes nearest it in time; with few passes, all of them.
-TEST(WipeProduct, PassGapKeepsTheNearestPassesOnly)
-{
-	// Even scans in one room, odd ones 100 m away: with a pass gap of 1 every even scan is a pass of its own.
-	const PerScan p = roomTrajectory(22, 100.0);
-	std::vector<GridVector> all = p.map, bounded = p.map, onePass = p.map;
-	WipeProduct(0.05, false, 2.0).apply(p.sensors, p.first, all);
-	const ScanWipe::Stats st = WipeProduct(0.05, false, 2.0, 1).apply(p.sensors, p.first, bounded);
-	WipeProduct(0.05, false, 2.0, 2).apply(p.sensors, p.first, onePass);  // gap 2: the even scans are one pass
-	EXPECT_GT(st.beyondPasses, 0u);
-	for (size_t t = 0; t + 1 < p.first.size(); ++t)
-		for (size_t i = p.first[t]; i < p.first[t + 1]; ++i)
-		{
-			// per cell, n_visit counts the scans (here: passes) that reached the cell
-			const double added = bounded[i].totalVisit() - p.map[i].totalVisit();
-			const double cells = double(p.map[i].cells().size());
-			EXPECT_LE(added, 2 * kWipePasses * cells) << i;
-			EXPECT_LE(bounded[i].totalVisit(), all[i].totalVisit()) << i;
-			EXPECT_EQ(onePass[i].totalVisit(), all[i].totalVisit()) << i;
-			EXPECT_EQ(onePass[i].totalOccupy(), all[i].totalOccupy()) << i;
-		}
-	// the middle scan's vectors lose the far passes: less visited than with every scan
-	double kept = 0, full = 0;
-	for (size_t i = p.first[10]; i < p.first[11]; ++i) kept += bounded[i].totalVisit(), full += all[i].totalVisit();
-	EXPECT_LT(kept, full);
-}

@@ -168,8 +168,7 @@ EStepResult expectation(const EStep& estep, const std::vector<LocalScan>& scans,
 						const GridVectorConfig& cfg, const EStepResult* previous, EmIteration& it,
 						std::chrono::steady_clock::time_point t0, std::vector<std::vector<uint64_t>>& changedIds)
 {
-	// the passes of the M-step's overlap edges (mstep.overlap_run_gap) bound Eq. 8's product (kWipePasses)
-	const auto perScan = GlobalMap::buildPerScan(poses, scans, cfg, uint32_t(std::max(1, cfg.mstep.overlapRunGap)));
+	const auto perScan = GlobalMap::buildPerScan(poses, scans, cfg);
 	it.wipeSeconds = since(t0);
 	const auto tc = std::chrono::steady_clock::now();
 	EStepResult e = estep.run(perScan);

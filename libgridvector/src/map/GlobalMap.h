@@ -109,12 +109,9 @@ class GlobalMap
 	 * Throws std::invalid_argument if poses.size() != scans.size().
 	 * Eq. 8 through WipeProduct (vector by vector, the same sums as ScanWipe
 	 * scan by scan). Cost: O(sum over scans of the vectors near each pose),
-	 * which grows with the square of the passes through a place.
-	 * With `passGap` > 0 (scans further apart belong to different passes), each vector takes the
-	 * triangles of the kWipePasses passes nearest it in time only (WipeProduct): bounded per place. */
+	 * which grows with the square of the passes through a place. */
 	static std::vector<GridVector> buildPerScan(const std::vector<mrpt::math::TPose2D>& poses,
-												const std::vector<LocalScan>& scans, const GridVectorConfig& cfg,
-												uint32_t passGap = 0);
+												const std::vector<LocalScan>& scans, const GridVectorConfig& cfg);
 
 	/** Eq. 4 "merge": groups corresponding vectors (Sec. 3.2 criteria, grown
 	 * greedily from the longest vectors, each group's geometry re-estimated as

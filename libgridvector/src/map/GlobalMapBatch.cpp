@@ -15,8 +15,7 @@ using mrpt::math::TPoint2D;
 
 // Eq. 4 (unmerged) and Eq. 8: every scan's triangles over every other scan's vectors.
 std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TPose2D>& poses,
-												const std::vector<LocalScan>& scans, const GridVectorConfig& cfg,
-												uint32_t passGap)
+												const std::vector<LocalScan>& scans, const GridVectorConfig& cfg)
 {
 	if (poses.size() != scans.size())
 		throw std::invalid_argument("GlobalMap::buildPerScan: poses and scans differ in number");
@@ -38,7 +37,7 @@ std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TP
 
 	std::vector<TPoint2D> sensors(scans.size());
 	for (size_t t = 0; t < scans.size(); ++t) sensors[t] = sensorPosition(poses[t], scans[t]);
-	WipeProduct(cfg.map.hitBand, kBatchWipeCountsBeams, VectorIndex::kCellSize, passGap).apply(sensors, first, all);
+	WipeProduct(cfg.map.hitBand, kBatchWipeCountsBeams, VectorIndex::kCellSize).apply(sensors, first, all);
 	return all;
 }
 

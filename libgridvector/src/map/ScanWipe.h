@@ -42,7 +42,6 @@ class ScanWipe
 		size_t vectorsTouched = 0;  //!< map vectors with at least one cell updated
 		size_t cellsHit = 0;  //!< cells of part c
 		size_t cellsVisited = 0;  //!< cells of part b only
-		size_t beyondPasses = 0;  //!< (triangle, map vector) candidates left out by kWipePasses (WipeProduct)
 	};
 
 	/** A new vector in global coordinates and the beam endpoints it was built

@@ -3,7 +3,6 @@
 #include "map/WipeTriangle.h"
 
 #include <algorithm>
-#include <utility>
 #include <stdexcept>
 
 namespace gridvector
@@ -25,34 +24,6 @@ std::vector<WipeTriangle> trianglesOf(const std::vector<mrpt::math::TPoint2D>& s
 			tris.emplace_back(sensors[t], v.start, v.end, hitBand, density);
 		}
 	return tris;
-}
-
-// kWipePasses: of the candidates (sorted by scan), those of the pass through p's time and of the kWipePasses
-// passes before and after it; returns how many triangles it left out.
-size_t keepNearPasses(const std::vector<uint32_t>& scanOf, uint32_t p, uint32_t gap, std::vector<uint32_t>& cand)
-{
-	if (cand.empty()) return 0;
-	std::vector<std::pair<uint32_t, uint32_t>> passes;  // [first, last] scan of each pass, in time order
-	for (uint32_t j : cand)
-	{
-		const uint32_t q = scanOf[j];
-		if (passes.empty() || q > passes.back().second + gap)
-			passes.emplace_back(q, q);
-		else
-			passes.back().second = q;
-	}
-	if (passes.size() <= 2 * kWipePasses + 1) return 0;
-	// the first pass not wholly before p: p's own (if it contains p) or the first after it
-	size_t own = 0;
-	while (own < passes.size() && passes[own].second + gap < p) ++own;
-	const bool inside = own < passes.size() && passes[own].first <= p + gap;
-	const size_t lo = own > kWipePasses ? own - kWipePasses : 0;
-	const size_t hi = std::min(passes.size(), own + kWipePasses + (inside ? 1 : 0));  // exclusive
-	const uint32_t from = passes[lo].first, to = passes[hi - 1].second;
-	const size_t before = cand.size();
-	cand.erase(std::remove_if(cand.begin(), cand.end(), [&](uint32_t j) { return scanOf[j] < from || scanOf[j] > to; }),
-			   cand.end());
-	return before - cand.size();
 }
 }  // namespace
 
@@ -91,7 +62,6 @@ ScanWipe::Stats WipeProduct::apply(const std::vector<mrpt::math::TPoint2D>& sens
 								  }),
 				   cand.end());
 		std::sort(cand.begin(), cand.end());
-		if (passGap_ > 0) st.beyondPasses += keepNearPasses(scanOf, scanOf[i], passGap_, cand);
 		for (size_t a = 0, b = 0; a < cand.size(); a = b)
 		{
 			while (b < cand.size() && scanOf[cand[b]] == scanOf[cand[a]]) ++b;

@@ -7,7 +7,6 @@
 #include <mrpt/math/TPoint2D.h>
 
 #include <cstddef>
-#include <cstdint>
 #include <vector>
 
 namespace gridvector
@@ -25,21 +24,12 @@ namespace gridvector
  * Cost: O(pairs (triangle, vector) whose boxes meet) + O(cells reached):
  * for a fixed world this grows with the square of the passes through each
  * place (every pass's vectors are wiped by every other pass's scans). */
-/** Beyond the paper (Eq. 8 takes every scan q != p): with a pass gap, a map vector m_{i,p} takes the
- * triangles of its own pass through the place and of the kWipePasses passes before and after it only
- * (a pass: the scans whose triangles reach m, at most the gap apart in time). Eq. 6 is a ratio of hits to
- * passes through a cell, which those passes already estimate; the others would add evidence on the same
- * cells at a cost that grows with the square of the passes through the place. Logs whose vectors are
- * reached by at most 2 x kWipePasses + 1 passes keep the full product bit for bit. */
-constexpr size_t kWipePasses = 2;
-
 class WipeProduct
 {
    public:
-	/** hitBand, countBeams: as ScanWipe; indexCellSize: bucket side of the triangles' spatial index [m];
-	 * passGap: scans further apart than this belong to different passes (kWipePasses; 0: every scan). */
-	WipeProduct(double hitBand, bool countBeams, double indexCellSize, uint32_t passGap = 0)
-		: hitBand_(hitBand), beams_(countBeams), cell_(indexCellSize), passGap_(passGap)
+	/** hitBand, countBeams: as ScanWipe; indexCellSize: bucket side of the triangles' spatial index [m]. */
+	WipeProduct(double hitBand, bool countBeams, double indexCellSize)
+		: hitBand_(hitBand), beams_(countBeams), cell_(indexCellSize)
 	{}
 
 	/** map: the per-scan vectors in global coordinates, those of scan t at
@@ -52,7 +42,6 @@ class WipeProduct
 	double hitBand_;
 	bool beams_;
 	double cell_;
-	uint32_t passGap_;
 };
 
 }  // namespace gridvector

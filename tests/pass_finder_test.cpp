@@ -69,3 +69,18 @@ TEST(PassFinder, LeavesOutTheRecentPoses)
 	const auto poses = twoPasses();
 	for (const auto& p : passesOf(poses, 6, 1.0)) EXPECT_LT(p.hi + 3, 6u);  // j + gap < i
 }
+
+// kRecentPasses: the first pass through the place and the most recent ones, however many passes there are.
+TEST(PassFinder, RegistersTheFirstAndTheMostRecentPassesOnly)
+{
+	for (size_t n = 1; n <= 1 + kRecentPasses; ++n)
+		for (size_t k = 0; k < n; ++k) EXPECT_TRUE(PassFinder::registeredPass(k, n)) << k << " of " << n;
+	const size_t n = 40;
+	size_t kept = 0;
+	for (size_t k = 0; k < n; ++k) kept += PassFinder::registeredPass(k, n);
+	EXPECT_EQ(kept, 1 + kRecentPasses);
+	EXPECT_TRUE(PassFinder::registeredPass(0, n));
+	EXPECT_TRUE(PassFinder::registeredPass(n - 1, n));
+	EXPECT_FALSE(PassFinder::registeredPass(1, n));
+	EXPECT_FALSE(PassFinder::registeredPass(n - 1 - kRecentPasses, n));
+}

@@ -287,11 +287,11 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		else
 			segs = staticSegments(e.children, res.poses);
 		it.eSeconds = since(t0);
-		res.perScan = e.children;
-		prevE = std::move(e);
+		prevE = std::move(e);  // its children become res.perScan after the loop (one copy of the map, not two)
 		res.iterations.push_back(it);
 		if (onIteration) onIteration(it, res.poses);
 	}
+	res.perScan = std::move(prevE.children);  // the last E-step's children
 	res.finalGraph = poseGraphFit(mstep.graph());
 	const auto t0 = std::chrono::steady_clock::now();
 	finalMap(res, estep, ePoses, cfg_);

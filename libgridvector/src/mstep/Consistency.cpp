@@ -46,12 +46,9 @@ Support supportOf(const Constraint& c, const std::map<EdgeKey, Constraint>& edge
 	const Matrix3d& reg = regulariser();
 	const Matrix3d covC = (graphInformation(c, opts) + reg).inverse();
 	Support s;
-	auto it = edges.lower_bound({c.from > K ? c.from - K : 0, 0});
-	for (; it != edges.end() && it->first.first <= c.from + K; ++it)
-	{
-		const Constraint& o = it->second;
-		if (&o == &c || o.kind == EdgeKind::Sequential || o.rejected) continue;
-		if (o.to + K < c.to || o.to > c.to + K) continue;
+	anyEdgeIn(edges, c.from > K ? c.from - K : 0, c.from + K, c.to > K ? c.to - K : 0, c.to + K,
+			  [&](const EdgeKey&, const Constraint& o) {
+		if (&o == &c || o.kind == EdgeKind::Sequential || o.rejected) return false;
 		// z' predicted from z through the local chains of the current trajectory
 		const TPose2D pred = ((poses[c.from] - poses[o.from]) + c.z) + (poses[o.to] - poses[c.to]);
 		const Vector3d d = PoseGraph::error(TPose2D(0, 0, 0), pred, o.z);
@@ -59,7 +56,8 @@ Support supportOf(const Constraint& c, const std::map<EdgeKey, Constraint>& edge
 		const Matrix3d chain = Vector3d(kChainVarXY, kChainVarXY, kChainVarPhi).asDiagonal() * (1.0 + steps);
 		const Matrix3d cov = covC + (graphInformation(o, opts) + reg).inverse() + chain;
 		(d.dot(cov.ldlt().solve(d)) < opts.consistencyChi2 ? s.support : s.against)++;
-	}
+		return false;
+	});
 	return s;
 }
 

@@ -40,9 +40,11 @@ struct MStepReport
 	size_t registrations = 0, failedRegistrations = 0;
 	size_t unverified = 0;  //!< overlap and loop edges dropped by the pairwise consistency check
 	size_t loopSearches = 0;  //!< pairs given to the loop search
+	size_t passesBeyondBound = 0;  //!< (pose, earlier pass) pairs left out by kRecentPasses (overlap and loop search)
 	double changedShare = 0;  //!< (added + removed + recomputed) / constraints
 	OptimizeStats optimisation;
 	double registrationSeconds = 0, seconds = 0;
+	double updateSeconds = 0, overlapSeconds = 0, loopSeconds = 0;  //!< parts of registrationSeconds
 };
 
 /** Static vectors of each scan in its own frame (MatchSegment ids stable across iterations). */

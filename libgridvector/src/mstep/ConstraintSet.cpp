@@ -109,10 +109,7 @@ bool ConstraintSet::movedSince(const TPose2D& before, const TPose2D& now) const
 
 bool ConstraintSet::hasEdgeNear(uint32_t i, uint32_t jlo, uint32_t jhi) const
 {
-	auto it = edges.lower_bound({jlo, 0});
-	for (; it != edges.end() && it->first.first <= jhi; ++it)
-		if (it->first.second == i) return true;
-	return false;
+	return anyEdgeIn(edges, jlo, jhi, i, i, [](const EdgeKey&, const Constraint&) { return true; });
 }
 
 }  // namespace gridvector

@@ -14,6 +14,28 @@ namespace gridvector
  * repeats the same registration). */
 constexpr double kMovedGateShare = 0.5;
 
+/** Calls f(key, value) for the entries (j, i) of `m` (keyed (from, to)) with j in [jlo, jhi] and i in [ilo, ihi],
+ * from by from, until f returns true; true if it did. One ordered lookup per `from`: the cost does not grow with
+ * the edges of a `from` into other places (an early pass's poses are the `from` of every later pass's edges). */
+template <class Map, class F>
+bool anyEdgeIn(const Map& m, uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi, F&& f)
+{
+	for (uint32_t j = jlo; j <= jhi && j >= jlo; ++j)
+	{
+		auto it = m.lower_bound({j, ilo});
+		if (it == m.end()) break;
+		if (it->first.first != j)
+		{
+			if (it->first.first > jhi) break;
+			j = it->first.first - 1;  // the next `from` that has entries
+			continue;
+		}
+		for (; it != m.end() && it->first.first == j && it->first.second <= ihi; ++it)
+			if (f(it->first, it->second)) return true;
+	}
+	return false;
+}
+
 /** The edges of the pose graph besides odometry, keyed (from, to), and their Eq. 24-25 bookkeeping. */
 class ConstraintSet
 {

@@ -24,15 +24,11 @@ void LoopClosure::setOdometry(const Poses& odometry)
 // Was pose i searched against a pose j of [jlo, jhi] from (nearly) the same relative pose?
 bool LoopClosure::searchedNear(uint32_t i, uint32_t jlo, uint32_t jhi, const Poses& poses) const
 {
-	for (auto it = searched_.lower_bound({jlo, 0}); it != searched_.end() && it->first.first <= jhi; ++it)
-	{
-		if (it->first.second != i) continue;
-		const TPose2D rel = poses[i] - poses[it->first.first];
-		if (std::hypot(it->second.x - rel.x, it->second.y - rel.y) < kSearchedNearDistance &&
-			std::abs(mrpt::math::wrapToPi(it->second.phi - rel.phi)) < kSearchedNearDeg * M_PI / 180)
-			return true;
-	}
-	return false;
+	return anyEdgeIn(searched_, jlo, jhi, i, i, [&](const EdgeKey& key, const TPose2D& at) {
+		const TPose2D rel = poses[i] - poses[key.first];
+		return std::hypot(at.x - rel.x, at.y - rel.y) < kSearchedNearDistance &&
+			   std::abs(mrpt::math::wrapToPi(at.phi - rel.phi)) < kSearchedNearDeg * M_PI / 180;
+	});
 }
 
 // Beyond the paper (Sec. 5.1: no loop detection): the loop-search window from the odometry model along the path.
@@ -55,14 +51,13 @@ LoopClosure::Link LoopClosure::linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, 
 									  const std::vector<EdgeKey>& unverified) const
 {
 	Link link = Link::None;
-	auto it = book_.edges.lower_bound({jlo, 0});
-	for (; it != book_.edges.end() && it->first.first <= jhi; ++it)
-	{
-		if (it->first.second < ilo || it->first.second > ihi || !fixesPlace(it->second)) continue;
-		if (std::find(unverified.begin(), unverified.end(), it->first) == unverified.end()) return Link::Verified;
+	const bool verified = anyEdgeIn(book_.edges, jlo, jhi, ilo, ihi, [&](const EdgeKey& key, const Constraint& c) {
+		if (!fixesPlace(c)) return false;
+		if (std::find(unverified.begin(), unverified.end(), key) == unverified.end()) return true;
 		link = Link::Unverified;
-	}
-	return link;
+		return false;
+	});
+	return verified ? Link::Verified : link;
 }
 
 // A corridor-degenerate edge leaves the position along the corridor open, a rejected one
@@ -91,7 +86,8 @@ bool LoopClosure::relabelled(uint32_t t, const Scans& scans) const
 	return length(scans[t]) < length(all_[t]) - 1e-6;
 }
 
-// Loop search: for each pose, every earlier pass within the window (its pose nearest in view)
+// Loop search: for each pose, each earlier pass within the window (its pose nearest in view) that it is
+// registered into (PassFinder::registeredPass)
 // that no edge links to the pose's neighbourhood yet.
 std::vector<EdgeKey> LoopClosure::search(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& added,
 										 MStepReport& rep, std::vector<EdgeKey>* deferred,
@@ -111,8 +107,14 @@ std::vector<EdgeKey> LoopClosure::search(const Scans& scans, const Poses& poses,
 			return std::hypot(poses[i].x - poses[j].x, poses[i].y - poses[j].y) < windowOf(j, i).translation;
 		});
 		if (scans[i].empty()) continue;
-		for (const auto& p : passes)
+		for (size_t k = 0; k < passes.size(); ++k)
 		{
+			const auto& p = passes[k];
+			if (!PassFinder::registeredPass(k, passes.size()))
+			{
+				if (!only) ++rep.passesBeyondBound;
+				continue;
+			}
 			if (only && std::find(only->begin(), only->end(), EdgeKey{p.nearest, i}) == only->end()) continue;
 			const Link link = linked(p.lo > K ? p.lo - K : 0, p.hi + K, i > K ? i - K : 0, i, added);
 			if (link == Link::Verified || (link == Link::Unverified && !deferred)) continue;

@@ -69,13 +69,18 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 		updateConstraints(book_, reg_, cfg_.mstep, scans, poses, rep);  // Eq. 24-25
 		chain_.addMissing(scans, poses, rep);
 	}
+	rep.updateSeconds = secondsSince(t0);
+	const auto tOverlap = std::chrono::steady_clock::now();
 	std::vector<MovedPair> moved;
 	auto fresh = overlaps_.add(scans, poses, rep, cfg_.mstep.overlapReregisterMoved ? &moved : nullptr);
+	rep.overlapSeconds = secondsSince(tOverlap);
+	const auto tLoop = std::chrono::steady_clock::now();
 	std::vector<EdgeKey> deferred;
 	const auto found = loops_.search(scans, poses, fresh, rep, &deferred);
 	fresh.insert(fresh.end(), found.begin(), found.end());
 	verifyOverlaps(book_, cfg_.mstep, poses, fresh, rep);
 	loops_.searchDeferred(scans, poses, deferred, rep);
+	rep.loopSeconds = secondsSince(tLoop);
 	rep.registrationSeconds = secondsSince(t0);
 	optimise(scans, poses, moved, rep);
 	summarise(book_, before, rep);

@@ -41,7 +41,8 @@ bool OverlapEdges::registerOverlap(const EdgeKey& key, bool nearest, const Scans
 }
 
 // Sec. 4.3, the topology change: scans whose ranges cover each other get an edge.
-// Overlap edges: for each pose, one edge into every earlier pass through its place.
+// Overlap edges: for each pose, one edge into each earlier pass through its place that it is registered into
+// (PassFinder::registeredPass).
 std::vector<EdgeKey> OverlapEdges::add(const Scans& scans, const Poses& poses, MStepReport& rep,
 									   std::vector<MovedPair>* moved) const
 {
@@ -57,8 +58,14 @@ std::vector<EdgeKey> OverlapEdges::add(const Scans& scans, const Poses& poses, M
 			return std::hypot(poses[i].x - poses[j].x, poses[i].y - poses[j].y) < d;
 		});
 		if (scans[i].empty()) continue;
-		for (const auto& p : passes)
+		for (size_t k = 0; k < passes.size(); ++k)
 		{
+			const auto& p = passes[k];
+			if (!PassFinder::registeredPass(k, passes.size()))
+			{
+				++rep.passesBeyondBound;
+				continue;
+			}
 			if (book_.hasEdgeNear(i, p.lo, p.hi)) continue;
 			for (uint32_t from : partners(i, p.nearest, p.members, scans, poses))
 			{

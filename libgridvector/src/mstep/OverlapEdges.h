@@ -1,5 +1,6 @@
 // Sec. 4.3, the topology change: "if two nodes are far apart, but their scan ranges cover each other at this
-// time, a new edge will be built between them" — one overlap edge per earlier pass through a pose's place.
+// time, a new edge will be built between them" — one overlap edge per earlier pass through a pose's place, into
+// the first pass and the kRecentPasses most recent (PassFinder::registeredPass).
 #pragma once
 
 #include "mstep/PairRegistration.h"
@@ -21,7 +22,8 @@ class OverlapEdges
 		: cfg_(cfg), book_(book), reg_(reg), progress_(progress)
 	{}
 
-	/** For each pose, an edge into every earlier pass near it that has none; returns the keys of the edges it
+	/** For each pose, an edge into each earlier pass near it that it is registered into (PassFinder::registeredPass)
+	 * and that has none; returns the keys of the edges it
 	 * added. With `moved`, pairs whose registration moved beyond the matcher's initial gates go there instead. */
 	std::vector<EdgeKey> add(const Scans& scans, const Poses& poses, MStepReport& rep,
 							 std::vector<MovedPair>* moved = nullptr) const;

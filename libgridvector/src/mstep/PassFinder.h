@@ -11,6 +11,14 @@
 
 namespace gridvector
 {
+/** Beyond the paper (Sec. 4.3 adds an edge into every earlier pass): a pose is registered into the first pass
+ * through its place and the kRecentPasses most recent ones only. The first anchors the place (every later pass
+ * registers into it, so registration errors do not chain from pass to pass); the most recent have drifted
+ * least since (the registration starts nearest its solution; the latest is usually the pose's own traverse).
+ * A pass beyond them adds a registration into a pass that the kept ones already link to by their own edges;
+ * without the bound the edges per pose, and the M-step's time per scan, grow with the passes through the place. */
+constexpr size_t kRecentPasses = 3;
+
 /** Earlier poses near the current one, grouped into passes (runs of poses at
  * most `runGap` apart in time), poses added one by one in time order. */
 class PassFinder
@@ -24,6 +32,9 @@ class PassFinder
 	/** `cell`: the grid the poses are binned in (the search reaches the 3 x 3 cells around a pose);
 	 * `headingWeight` [m/rad]: a pass's candidate is the pose nearest in position + weight x heading. */
 	PassFinder(double cell, double headingWeight) : cell_(cell), headingWeight_(headingWeight) {}
+
+	/** Is the k-th of `count` passes (time order) one a pose is registered into (kRecentPasses)? */
+	static bool registeredPass(size_t k, size_t count) { return k == 0 || k + kRecentPasses >= count; }
 
 	/** Passes of poses j + gap < i with within(j) true; then adds pose i. */
 	template <class Within>

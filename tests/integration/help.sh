@@ -12,8 +12,10 @@ set -euo pipefail
 python3 - "$GV_BIN" <<'PY'
 import re, subprocess, sys
 bin = sys.argv[1]
-tools = ["gv-em-slam", "gv-map", "gv-sim", "gv-eval", "gv-carmen2rawlog", "gv-bench-log", "gv-graphslam",
-         "gv-map-info", "gv-config", "gv-bench-extract", "gv-bench-wipe", "gv-bench-map", "gv-bench-icp"]
+import os
+# every tool the build made: a new one cannot be left out of the check
+tools = sorted(t for t in os.listdir(bin) if t.startswith("gv-") and os.access(f"{bin}/{t}", os.X_OK))
+if len(tools) < 14: sys.exit(f"FAIL: only {len(tools)} tools in {bin}")
 def run(tool, *args):
     p = subprocess.run([f"{bin}/{tool}", *args], capture_output=True, text=True, timeout=60, stdin=subprocess.DEVNULL)
     return p.returncode, p.stdout, p.stderr

@@ -9,8 +9,9 @@ version=$(sed -n 's/^project(gridvector VERSION \([0-9.]*\).*/\1/p' "$GV_SOURCE_
 [ -n "$version" ] || fail "no project version in CMakeLists.txt"
 W=$(mktemp -d); trap 'rm -rf "$W"' EXIT
 first=""
-for tool in gv-em-slam gv-map gv-sim gv-eval gv-carmen2rawlog gv-bench-log gv-graphslam gv-map-info gv-config \
-            gv-bench-extract gv-bench-wipe gv-bench-map gv-bench-icp; do
+tools=$(cd "$B" && ls gv-*)  # every tool the build made
+[ "$(echo "$tools" | wc -w)" -ge 14 ] || fail "only $(echo "$tools" | wc -w) tools in $B"
+for tool in $tools; do
   out=$("$B/$tool" --version 2> "$W/err") || fail "$tool --version: exit $?"
   [ ! -s "$W/err" ] || fail "$tool --version wrote to stderr: $(cat "$W/err")"
   [ "$(printf '%s\n' "$out" | wc -l)" -eq 1 ] || fail "$tool --version: not one line: $out"
@@ -30,4 +31,4 @@ if command -v git > /dev/null && [ -e "$GV_SOURCE_DIR/.git" ]; then
   d=$(cmake -DGV_DESCRIBE_DIR="$W/clone" -P "$GV_SOURCE_DIR/cmake/GitDescribe.cmake" 2>&1)
   [ "$d" = "$(git -C "$W/clone" describe --tags --always --dirty)" ] && [ "$d" != unknown ] || fail "in a clone: '$d'"
 fi
-echo "version: 13 tools OK"
+echo "version: $(echo "$tools" | wc -w) tools OK"

@@ -68,7 +68,6 @@ bool EmSlam::movedEnough(const std::vector<TPose2D>& a, const std::vector<TPose2
 	return a.size() != b.size();
 }
 
-
 // Eq. 19-20: the M-step registers the static vectors only; dynamic ones are outliers.
 std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<GridVector>& children,
 															  const std::vector<TPose2D>& poses)

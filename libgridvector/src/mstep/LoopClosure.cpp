@@ -165,6 +165,16 @@ std::vector<EdgeKey> LoopClosure::keep(std::vector<Constraint>& found, const std
 	return fresh;
 }
 
+bool LoopClosure::closeLoops(const Scans& scans, const Poses& poses, std::vector<EdgeKey>& fresh, MStepReport& rep)
+{
+	std::vector<EdgeKey> deferred;
+	const auto found = search(scans, poses, fresh, rep, &deferred);
+	fresh.insert(fresh.end(), found.begin(), found.end());
+	verifyOverlaps(book_, cfg_.mstep, poses, fresh, rep);
+	searchDeferred(scans, poses, deferred, rep);
+	return !deferred.empty();
+}
+
 // The order of the M-step: overlap edges, loop search, verifyOverlaps; a loop search that an overlap edge of
 // this step deferred runs now, where verifyOverlaps dropped the edge, and its edges are verified in turn.
 void LoopClosure::searchDeferred(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& deferred,

@@ -39,6 +39,9 @@ class LoopClosure
 	/** The loop searches an unverified overlap edge deferred, for the pairs verifyOverlaps left unlinked
 	 * (it dropped the edge), their edges verified in turn. */
 	void searchDeferred(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& deferred, MStepReport& rep);
+	/** The step after the overlap edges `fresh`: search(), verifyOverlaps on `fresh` and the loop edges (which
+	 * join `fresh`), then searchDeferred(); true if a search was deferred. */
+	bool closeLoops(const Scans& scans, const Poses& poses, std::vector<EdgeKey>& fresh, MStepReport& rep);
 
 	/** Loop-search window of the pair from the odometry model along the path between them. */
 	LoopWindow windowOf(uint32_t from, uint32_t to) const;

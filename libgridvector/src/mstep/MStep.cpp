@@ -75,11 +75,7 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 	auto fresh = overlaps_.add(scans, poses, rep, cfg_.mstep.overlapReregisterMoved ? &moved : nullptr);
 	rep.overlapSeconds = secondsSince(tOverlap);
 	const auto tLoop = std::chrono::steady_clock::now();
-	std::vector<EdgeKey> deferred;
-	const auto found = loops_.search(scans, poses, fresh, rep, &deferred);
-	fresh.insert(fresh.end(), found.begin(), found.end());
-	verifyOverlaps(book_, cfg_.mstep, poses, fresh, rep);
-	loops_.searchDeferred(scans, poses, deferred, rep);
+	loops_.closeLoops(scans, poses, fresh, rep);
 	rep.loopSeconds = secondsSince(tLoop);
 	rep.registrationSeconds = secondsSince(t0);
 	optimise(scans, poses, moved, rep);

@@ -197,12 +197,8 @@ void OnlineEmSlam::finish()
 	{
 		book_.beginStep(segs_, nullptr);
 		auto fresh = overlaps_.add(segs_, keyPose_, rep_);
-		std::vector<EdgeKey> deferred;
-		const auto found = loopClosure_.search(segs_, keyPose_, fresh, rep_, &deferred);
-		fresh.insert(fresh.end(), found.begin(), found.end());
-		verifyOverlaps(book_, cfg_.mstep, keyPose_, fresh, rep_);
-		loopClosure_.searchDeferred(segs_, keyPose_, deferred, rep_);
-		if (fresh.empty() && deferred.empty()) break;
+		const bool deferred = loopClosure_.closeLoops(segs_, keyPose_, fresh, rep_);
+		if (fresh.empty() && !deferred) break;
 		optimise();
 	}
 	while (next_) reanchor(std::numeric_limits<size_t>::max());

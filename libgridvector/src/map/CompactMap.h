@@ -9,8 +9,9 @@
 
 namespace gridvector
 {
-/** A map's vectors in one contiguous byte buffer: what the map is stored and held as once it is
- * built (gv-em-slam's final map, the .gvmap from version 2 on).
+/** A map's vectors in one contiguous byte buffer: how the .gvmap stores a map from version 2 on, and
+ * what report.json's "memory" counts as the map's bytes. EM and CGridVectorMap still work on the float
+ * GridVectors ("bytes_working_form" beside it).
  *
  * Per vector (Eq. 1): endpoints on a 1 mm lattice (the start as a difference from the previous
  * vector's, the end from the start), cols, t, id (a difference), mergedCount and the timestamp

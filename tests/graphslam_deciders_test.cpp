@@ -3,7 +3,6 @@
 #include "graphslam/CGridVectorNRD.h"
 #include <gridvector/graphslam/DeciderRegistry.h>
 #include "posegraph/PoseGraph.h"
-#include "graphslam/PoseFusion.h"
 #include "graphslam/RunRecorder.h"
 
 #include <gtest/gtest.h>
@@ -16,11 +15,13 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <set>
 
 #include "graphslam_ini_files.h"
 #include "test_scans.h"
 
 using namespace gridvector::graphslam;
+using gridvector::OnlineEmSlam;
 using mrpt::math::TPose2D;
 using mrpt::poses::CPose2D;
 
@@ -79,43 +80,19 @@ double positionError(const CPose2D& estimateRelToFirst, const TPose2D& truth, co
 
 TEST(graphslam_options, defaults_match_the_documented_values)
 {
-	NodeDeciderOptions n;
-	EXPECT_DOUBLE_EQ(n.registrationMaxDistance, 0.5);
-	EXPECT_DOUBLE_EQ(n.registrationMaxAngleDeg, 10.0);
-	EXPECT_TRUE(n.useOdometry);
+	EXPECT_EQ(NodeDeciderOptions().classVerbosity, 1);
 	EdgeDeciderOptions e;
 	EXPECT_EQ(e.lcMinNodeIdDiff, 30);
-	EXPECT_DOUBLE_EQ(e.maxDistance, 3.0);
-	EXPECT_EQ(e.sequentialWindow, 3);
-	EXPECT_DOUBLE_EQ(e.searchOffset, 0.75);
-}
-
-TEST(graphslam_options, reads_shared_and_own_sections)
-{
-	NodeDeciderOptions n;
-	n.load(ini("[NodeRegistrationDeciderParameters]\nregistration_max_distance = 0.2 // m\n"
-			   "registration_max_angle = 30\nclass_verbosity = 0\n"
-			   "[GridVectorNRD]\nmax_correction_distance = 0.8\nuse_odometry = false\n"),
-		   "t.ini");
-	EXPECT_DOUBLE_EQ(n.registrationMaxDistance, 0.2);
-	EXPECT_DOUBLE_EQ(n.registrationMaxAngleDeg, 30);
-	EXPECT_EQ(n.classVerbosity, 0);
-	EXPECT_DOUBLE_EQ(n.maxCorrectionDistance, 0.8);
-	EXPECT_FALSE(n.useOdometry);
-	EdgeDeciderOptions e;
-	e.load(ini("[GeneralConfiguration]\nLC_min_nodeid_diff = 12\n"
-			   "[GridVectorERD]\nmax_distance = 4.5\nsequential_window = 5\npass_gap = 7\n"
-			   "search_offset = 0\n"),
-		   "t.ini");
-	EXPECT_EQ(e.lcMinNodeIdDiff, 12);
-	EXPECT_DOUBLE_EQ(e.maxDistance, 4.5);
-	EXPECT_EQ(e.sequentialWindow, 5);
-	EXPECT_EQ(e.passGap, 7);
-	EXPECT_DOUBLE_EQ(e.searchOffset, 0);
+	EXPECT_EQ(e.classVerbosity, 1);
 }
 
 TEST(graphslam_options, shared_sections_tolerate_other_deciders_keys)
 {
+	NodeDeciderOptions n;  // MRPT's node deciders' keys: not CGridVectorNRD's (its nodes are the keyframes)
+	EXPECT_NO_THROW(n.load(ini("[NodeRegistrationDeciderParameters]\nregistration_max_distance = 0.2 // m\n"
+							   "registration_max_angle = 30\nclass_verbosity = 0\n"),
+						   "t.ini"));
+	EXPECT_EQ(n.classVerbosity, 0);
 	EdgeDeciderOptions e;
 	EXPECT_NO_THROW(e.load(ini("[EdgeRegistrationDeciderParameters]\nICP_goodness_thresh = 0.7\n"
 							   "ICP_max_distance = 2\nclass_verbosity = 2\n"),
@@ -149,32 +126,6 @@ TEST(graphslam_options, lc_min_nodeid_diff_is_read_where_mrpts_deciders_read_it)
 	EXPECT_EQ(same.ignoredKeyNote, "");
 }
 
-TEST(graphslam_options, unknown_own_key_names_file_section_and_key)
-{
-	EdgeDeciderOptions e;
-	try
-	{
-		e.load(ini("[GridVectorERD]\nmax_distanse = 4\n"), "my.ini");
-		FAIL() << "no exception";
-	}
-	catch (const std::runtime_error& ex)
-	{
-		EXPECT_STREQ(ex.what(), "my.ini: unknown key 'max_distanse' in section [GridVectorERD]");
-	}
-	NodeDeciderOptions n;
-	EXPECT_THROW(n.load(ini("[GridVectorNRD]\nregistration_max_distance = 1\n"), "my.ini"), std::runtime_error);
-}
-
-TEST(graphslam_options, out_of_range_values_are_rejected)
-{
-	NodeDeciderOptions n;
-	EXPECT_THROW(n.load(ini("[NodeRegistrationDeciderParameters]\nregistration_max_distance = -1\n"), "a.ini"),
-				 std::runtime_error);
-	EdgeDeciderOptions e;
-	EXPECT_THROW(e.load(ini("[GridVectorERD]\nmin_matched_share = 1.5\n"), "a.ini"), std::runtime_error);
-	EXPECT_THROW(e.load(ini("[GridVectorERD]\npass_gap = 0\n"), "a.ini"), std::runtime_error);
-}
-
 namespace
 {
 /** The message load() throws for `text`, "" if none. */
@@ -193,59 +144,40 @@ std::string loadError(const std::string& text)
 }
 }  // namespace
 
-TEST(graphslam_options, out_of_range_values_are_errors_naming_file_section_key_value_and_why)
+// The deciders' own sections take no key: a file written for the old deciders (session 15 and before)
+// says so instead of having its keys silently ignored.
+TEST(graphslam_options, own_sections_take_no_key)
 {
-	const std::vector<std::pair<std::string, std::string>> nodeBad = {
-		{"[NodeRegistrationDeciderParameters]\nregistration_max_distance = -1\n",
-		 "a.ini: [NodeRegistrationDeciderParameters] registration_max_distance = '-1' must be > 0"},
-		{"[NodeRegistrationDeciderParameters]\nclass_verbosity = 7\n",
-		 "a.ini: [NodeRegistrationDeciderParameters] class_verbosity = '7' must be in 0..3"},
-		{"[GridVectorNRD]\nmax_correction_angle_deg = 400\n",
-		 "a.ini: [GridVectorNRD] max_correction_angle_deg = '400' must be in (0, 180]"}};
-	for (const auto& [text, expected] : nodeBad) EXPECT_EQ(loadError<NodeDeciderOptions>(text), expected);
-	const std::vector<std::pair<std::string, std::string>> edgeBad = {
-		{"[GeneralConfiguration]\nLC_min_nodeid_diff = 0\n",
-		 "a.ini: [GeneralConfiguration] LC_min_nodeid_diff = '0' must be >= 1"},
-		{"[GridVectorERD]\nmin_matched_share = 1.5\n",
-		 "a.ini: [GridVectorERD] min_matched_share = '1.5' must be in (0, 1]"},
-		{"[GridVectorERD]\npass_gap = 0\n", "a.ini: [GridVectorERD] pass_gap = '0' must be >= 1"},
-		{"[GridVectorERD]\nsequential_window = -2\n", "a.ini: [GridVectorERD] sequential_window = '-2' must be >= 0"},
-		{"[GridVectorERD]\nsearch_angle_deg = 90\n",
-		 "a.ini: [GridVectorERD] search_angle_deg = '90' must be in [0, 90)"}};
-	for (const auto& [text, expected] : edgeBad) EXPECT_EQ(loadError<EdgeDeciderOptions>(text), expected);
+	EXPECT_EQ(loadError<EdgeDeciderOptions>("[GridVectorERD]\nmax_distance = 4\n"),
+			  "a.ini: unknown key 'max_distance' in section [GridVectorERD]");
+	EXPECT_EQ(loadError<NodeDeciderOptions>("[GridVectorNRD]\nuse_odometry = true\n"),
+			  "a.ini: unknown key 'use_odometry' in section [GridVectorNRD]");
+	EXPECT_EQ(loadError<NodeDeciderOptions>("[GridVectorNRD]\n"), "");
 }
 
-TEST(graphslam_options, values_are_read_whole_not_by_their_first_digits)
+TEST(graphslam_options, bad_values_are_errors_naming_file_section_key_value_and_why)
 {
-	// MRPT's read_double / read_int / read_bool made these 0, 1 and false without a word
-	EXPECT_EQ(loadError<EdgeDeciderOptions>("[GridVectorERD]\nmin_matched_share = 0.o5\n"),
-			  "a.ini: [GridVectorERD] min_matched_share = '0.o5' is not a finite number");
-	EXPECT_EQ(loadError<EdgeDeciderOptions>("[GridVectorERD]\npass_gap = 1.5\n"),
-			  "a.ini: [GridVectorERD] pass_gap = '1.5' is not an integer");
-	EXPECT_EQ(loadError<NodeDeciderOptions>("[GridVectorNRD]\nuse_odometry = ture\n"),
-			  "a.ini: [GridVectorNRD] use_odometry = 'ture' is not true or false");
-	EXPECT_EQ(loadError<NodeDeciderOptions>("[NodeRegistrationDeciderParameters]\nregistration_max_angle = nan\n"),
-			  "a.ini: [NodeRegistrationDeciderParameters] registration_max_angle = 'nan' is not a finite number");
+	EXPECT_EQ(loadError<NodeDeciderOptions>("[NodeRegistrationDeciderParameters]\nclass_verbosity = 7\n"),
+			  "a.ini: [NodeRegistrationDeciderParameters] class_verbosity = '7' must be in 0..3");
+	EXPECT_EQ(loadError<EdgeDeciderOptions>("[GeneralConfiguration]\nLC_min_nodeid_diff = 0\n"),
+			  "a.ini: [GeneralConfiguration] LC_min_nodeid_diff = '0' must be >= 1");
+	// MRPT's read_int made this 3 without a word
 	EXPECT_EQ(loadError<EdgeDeciderOptions>("[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 3O\n"),
 			  "a.ini: [EdgeRegistrationDeciderParameters] LC_min_nodeid_diff = '3O' is not an integer");
 	// other deciders' keys in the shared sections stay theirs to read
 	EXPECT_EQ(loadError<EdgeDeciderOptions>("[EdgeRegistrationDeciderParameters]\nICP_goodness_thresh = 0.o5\n"), "");
+	EXPECT_EQ(loadError<NodeDeciderOptions>("[NodeRegistrationDeciderParameters]\nregistration_max_angle = nan\n"),
+			  "");
 }
 
 TEST(graphslam_options, values_end_as_in_mrpts_graphslam_files)
 {
 	EdgeDeciderOptions e;
 	e.load(ini("[GeneralConfiguration]\nLC_min_nodeid_diff = 12;\n[EdgeRegistrationDeciderParameters]\nclass_verbosity "
-			   "= 0 // debug\n"
-			   "[GridVectorERD]\nmax_distance = 4.5;\nsearch_offset = 0.25 ; m\nmatch_previous_node = true # x\n"
-			   "pass_gap = 7; once a pass\n"),
+			   "= 0 // debug\n"),
 		   "t.ini");
 	EXPECT_EQ(e.lcMinNodeIdDiff, 12);
 	EXPECT_EQ(e.classVerbosity, 0);
-	EXPECT_DOUBLE_EQ(e.maxDistance, 4.5);
-	EXPECT_DOUBLE_EQ(e.searchOffset, 0.25);
-	EXPECT_TRUE(e.matchPreviousNode);
-	EXPECT_EQ(e.passGap, 7);
 }
 
 TEST(graphslam_options, every_graphslam_ini_mrpt_and_we_ship_loads_with_mrpts_values)
@@ -259,36 +191,23 @@ TEST(graphslam_options, every_graphslam_ini_mrpt_and_we_ship_loads_with_mrpts_va
 		EdgeDeciderOptions e, eDefault;
 		ASSERT_NO_THROW(n.load(c, path)) << path;
 		ASSERT_NO_THROW(e.load(c, path)) << path;
-		const char* ns = NodeDeciderOptions::sharedSection;
-		const char* es = EdgeDeciderOptions::sharedSection;
-		EXPECT_EQ(n.registrationMaxDistance,
-				  c.read_double(ns, "registration_max_distance", nDefault.registrationMaxDistance))
-			<< path;
-		EXPECT_EQ(n.registrationMaxAngleDeg,
-				  c.read_double(ns, "registration_max_angle", nDefault.registrationMaxAngleDeg))
-			<< path;
-		EXPECT_EQ(n.classVerbosity, c.read_int(ns, "class_verbosity", nDefault.classVerbosity)) << path;
+		EXPECT_EQ(n.classVerbosity, c.read_int(NodeDeciderOptions::sharedSection, "class_verbosity", 1)) << path;
 		EXPECT_EQ(e.lcMinNodeIdDiff, c.read_int("GeneralConfiguration", "LC_min_nodeid_diff", eDefault.lcMinNodeIdDiff))
 			<< path;
-		EXPECT_EQ(e.classVerbosity, c.read_int(es, "class_verbosity", eDefault.classVerbosity)) << path;
+		EXPECT_EQ(e.classVerbosity, c.read_int(EdgeDeciderOptions::sharedSection, "class_verbosity", 1)) << path;
 	}
 }
 
 TEST(graphslam_options, deciders_load_from_the_engine_ini_file)
 {
 	const std::string path = ::testing::TempDir() + "gv_deciders_test.ini";
-	{
-		std::ofstream f(path);
-		f << "[NodeRegistrationDeciderParameters]\nregistration_max_distance = 0.3\n"
-			 "[gridvector_matcher]\nmax_rms = 0.09\n[GridVectorERD]\nmax_loop_candidates = 2\n";
-	}
+	std::ofstream(path) << "[gridvector_matcher]\nmax_rms = 0.09\n[gridvector_mstep]\nkeyframe_distance = 0.3\n";
 	CGridVectorNRD nrd;
 	nrd.loadParams(path);
-	EXPECT_DOUBLE_EQ(nrd.options().registrationMaxDistance, 0.3);
 	EXPECT_DOUBLE_EQ(nrd.config().matcher.maxRms, 0.09);
+	EXPECT_DOUBLE_EQ(nrd.config().mstep.keyframeDistance, 0.3);
 	CGridVectorERD erd;
-	erd.loadParams(path);
-	EXPECT_EQ(erd.options().maxLoopCandidates, 2);
+	EXPECT_NO_THROW(erd.loadParams(path));
 	std::ofstream(path) << "[gridvector_matcher]\nmax_rsm = 0.09\n";
 	EXPECT_THROW(nrd.loadParams(path), std::runtime_error);
 	std::remove(path.c_str());
@@ -309,104 +228,145 @@ TEST(graphslam_registry, lists_and_creates_grid_vector_and_mrpt_deciders)
 	std::unique_ptr<mrpt::graphslam::deciders::CEdgeRegistrationDecider<DeciderRegistry::graph_t>> erd(
 		reg.edge_regs_map.at("CGridVectorERD")());
 	EXPECT_NE(dynamic_cast<CGridVectorERD*>(erd.get()), nullptr);
+	EXPECT_NO_THROW(linkDeciders(*nrd, *erd));
 }
 
-TEST(pose_fusion, information_weighted_and_singular_directions_kept)
+// CGridVectorERD's edges are CGridVectorNRD's online EM-SLAM's: with another node decider, or none
+// linked, it says so instead of running without edges.
+TEST(graphslam_registry, the_grid_vector_edge_decider_needs_the_grid_vector_node_decider)
 {
-	PoseEstimate a{TPose2D(1, 0, 0), Eigen::Matrix3d::Identity()};
-	PoseEstimate b{TPose2D(2, 1, 0.2), Eigen::Matrix3d::Zero()};
-	b.information(0, 0) = 3;  // b constrains x only
-	const auto f = fuse(a, b);
-	EXPECT_NEAR(f.mean.x, 1.75, 1e-9);
-	EXPECT_NEAR(f.mean.y, 0, 1e-9);
-	EXPECT_NEAR(f.mean.phi, 0, 1e-9);
-	EXPECT_NEAR(f.information(0, 0), 4, 1e-12);
-	EXPECT_TRUE(validInformation(f.information));
-	Eigen::Matrix3d bad = Eigen::Matrix3d::Identity();
-	bad(2, 2) = -1;
-	EXPECT_FALSE(validInformation(bad));
+	DeciderRegistry reg;
+	std::unique_ptr<mrpt::graphslam::deciders::CNodeRegistrationDecider<DeciderRegistry::graph_t>> icp(
+		reg.node_regs_map.at("CICPCriteriaNRD")());
+	std::unique_ptr<mrpt::graphslam::deciders::CEdgeRegistrationDecider<DeciderRegistry::graph_t>> icpEdges(
+		reg.edge_regs_map.at("CICPCriteriaERD")());
+	CGridVectorERD erd;
+	EXPECT_THROW(linkDeciders(*icp, erd), std::invalid_argument);
+	EXPECT_NO_THROW(linkDeciders(*icp, *icpEdges));  // MRPT's own pair: nothing to link
+	mrpt::graphs::CNetworkOfPoses2DInf graph;
+	erd.setGraphPtr(&graph);
+	EXPECT_THROW(erd.updateState({}, {}, scanAt(TPose2D(0, 0, 0))), std::logic_error);
+	CGridVectorNRD nrd;
+	EXPECT_FALSE(finishDeciders(*icp, erd));
 }
 
 namespace
 {
-// Node 1 after MRPT's levmarq on two edges 0 -> 1 (node 0 fixed at the origin).
-TPose2D optimisedOverTwoEdges(const PoseEstimate& a, const PoseEstimate& b, bool errorFrame)
+/** The Drive (or any truth/odometry pair) through NRD then ERD, as the engine calls them, observation-only
+ * format (odometry, then scan). Returns the scan index of every node. */
+std::vector<size_t> runDeciders(const std::vector<TPose2D>& truth, const std::vector<TPose2D>& odometry,
+								CGridVectorNRD& nrd, CGridVectorERD& erd, mrpt::graphs::CNetworkOfPoses2DInf& graph)
 {
-	mrpt::graphs::CNetworkOfPoses2DInf g;
-	g.root = 0;
-	g.nodes[0] = CPose2D();
-	g.nodes[1] = CPose2D(a.mean);
-	g.insertEdge(0, 1, toConstraint(a, errorFrame));
-	g.insertEdge(0, 1, toConstraint(b, errorFrame));
-	mrpt::graphslam::TResultInfoSpaLevMarq info;
-	mrpt::containers::yaml params;
-	params["max_iterations"] = 100;
-	mrpt::graphslam::optimize_graph_spa_levmarq(g, info, nullptr, params);
-	return g.nodes.at(1).asTPose();
+	const auto cfg = ini("[GeneralConfiguration]\nLC_min_nodeid_diff = 30\n");
+	nrd.loadOptions(cfg, "mem");
+	erd.loadOptions(cfg, "mem");
+	nrd.setGraphPtr(&graph);
+	erd.setGraphPtr(&graph);
+	linkDeciders(nrd, erd);
+	std::vector<size_t> nodeScan(1, 0);  // the root has the first scan
+	for (size_t i = 0; i < truth.size(); ++i)
+		for (const auto& obs : {odometryAt(odometry[i]), scanAt(truth[i])})
+		{
+			const bool reg = nrd.updateState({}, {}, obs);
+			erd.updateState({}, {}, obs);
+			if (reg) nodeScan.push_back(i);
+		}
+	return nodeScan;
+}
+
+/** The registration edges of `graph` (all edges less one odometry edge per consecutive pair), by key. */
+std::multiset<std::pair<uint32_t, uint32_t>> registrationEdges(const mrpt::graphs::CNetworkOfPoses2DInf& graph)
+{
+	std::multiset<std::pair<uint32_t, uint32_t>> out;
+	for (const auto& e : graph.edges) out.insert({uint32_t(e.first.first), uint32_t(e.first.second)});
+	for (uint32_t k = 1; k < graph.nodeCount(); ++k)
+	{
+		const auto it = out.find({k - 1, k});
+		EXPECT_NE(it, out.end()) << "no odometry edge " << k - 1 << " -> " << k;
+		if (it != out.end()) out.erase(it);
+	}
+	return out;
 }
 }  // namespace
 
-// MRPT's edge error is inv(EDGE) (+) inv(P1) (+) P2 (Eq. 21's): an NRD edge fused over the
-// relative pose's parameters must, once in the engine, optimise to that fusion, also when
-// the two poses face opposite ways (a registration's translation/heading coupling kept).
-TEST(pose_fusion, engine_edges_between_opposite_facing_poses_optimise_to_the_fusion)
-{
-	const PoseEstimate odometry{TPose2D(0.3, -0.1, M_PI - 0.2), Eigen::Vector3d(100, 100, 400).asDiagonal()};
-	PoseEstimate match{TPose2D(0.32, -0.2, M_PI - 0.19), Eigen::Matrix3d::Zero()};
-	match.information << 2e4, 0, 8e3, 0, 20, 0, 8e3, 0, 2e4;  // a corridor along y: strong x and phi, coupled
-	const PoseEstimate fused = fuse(odometry, match);
-	const TPose2D rotated = optimisedOverTwoEdges(odometry, match, true);
-	EXPECT_NEAR(rotated.x, fused.mean.x, 1e-3);
-	EXPECT_NEAR(rotated.y, fused.mean.y, 1e-3);
-	EXPECT_NEAR(rotated.phi, fused.mean.phi, 1e-4);
-	// the unrotated information weighs the wrong directions: far from the fusion
-	const TPose2D unrotated = optimisedOverTwoEdges(odometry, match, false);
-	EXPECT_GT(std::hypot(unrotated.x - fused.mean.x, unrotated.y - fused.mean.y), 1e-2);
-	// the engine's constraint is the fused one in the error's frame
-	const auto c = toConstraint(fused, true);
-	const Eigen::Matrix3d expected = gridvector::PoseGraph::errorFrameInformation(fused.information, fused.mean);
-	EXPECT_TRUE(c.cov_inv.asEigen().isApprox(expected, 1e-12));
-	EXPECT_NEAR(c.mean.x(), fused.mean.x, 1e-12);
-}
-
-// Observation-only stream (odometry, then scan) through NRD then ERD, as the engine calls them.
-TEST(graphslam_deciders, nodes_follow_the_truth_better_than_odometry_and_edges_are_added)
+// Sec. 6 through the engine's interfaces: every keyframe of the online EM-SLAM a node at its estimate,
+// the odometry edges and the registration edges of Eq. 22 in the graph.
+TEST(graphslam_deciders, nodes_are_the_online_keyframes_and_the_graph_is_eq22s)
 {
 	const Drive d;
 	mrpt::graphs::CNetworkOfPoses2DInf graph;
 	CGridVectorNRD nrd;
 	CGridVectorERD erd;
-	const auto cfg =
-		ini("[NodeRegistrationDeciderParameters]\nregistration_max_distance = 0.5\n"
-			"[EdgeRegistrationDeciderParameters]\nLC_min_nodeid_diff = 30\n"
-			"[GridVectorERD]\nmatch_previous_node = true\n");
-	nrd.loadOptions(cfg, "mem");
-	erd.loadOptions(cfg, "mem");
-	nrd.setGraphPtr(&graph);
-	erd.setGraphPtr(&graph);
-	std::vector<size_t> nodeStep(1, 0);  // the root has the first scan
-	for (size_t i = 0; i < d.truth.size(); ++i)
-		for (const auto& obs : {odometryAt(d.odometry[i]), scanAt(d.truth[i])})
-		{
-			const bool reg = nrd.updateState({}, {}, obs);
-			erd.updateState({}, {}, obs);
-			if (reg) nodeStep.push_back(i);
-		}
-	graph.dijkstra_nodes_estimate();
-	ASSERT_GE(graph.nodeCount(), 8u);
-	ASSERT_EQ(graph.nodeCount(), nodeStep.size());
-	EXPECT_GT(nrd.stats().matched, nrd.stats().scans / 2);
-	EXPECT_GT(graph.edgeCount(), graph.nodeCount());  // ERD edges on top of the chain
-	EXPECT_GT(erd.stats().sequentialEdges, 0u);
+	const auto nodeScan = runDeciders(d.truth, d.odometry, nrd, erd, graph);
+	const OnlineEmSlam& slam = nrd.online();
+	ASSERT_GE(graph.nodeCount(), 20u);  // 0.2 m keyframes along 6.5 m and a turn
+	ASSERT_EQ(graph.nodeCount(), slam.keyframes().size());
+	EXPECT_EQ(nodeScan, slam.keyframes());
+	EXPECT_GT(nrd.stats().registered, nrd.stats().scans / 2);
+	const CPose2D origin(slam.keyframePoses()[0]);
+	for (size_t k = 0; k < graph.nodeCount(); ++k)
+		EXPECT_LT(graph.nodes.at(k).distanceTo(CPose2D(slam.keyframePoses()[k]) - origin), 1e-9) << k;
+	std::multiset<std::pair<uint32_t, uint32_t>> active;
+	for (const auto& [key, c] : slam.constraints())
+		if (!c.rejected) active.insert(key);
+	EXPECT_EQ(registrationEdges(graph), active);
+	EXPECT_GT(erd.stats().sequentialEdges, graph.nodeCount());  // a window of predecessors per keyframe
 	const size_t last = graph.nodeCount() - 1;
-	const TPose2D t0 = d.truth[0], o0 = d.odometry[0];
-	const double gvError = positionError(graph.nodes.at(last), d.truth[nodeStep[last]], t0);
-	const double odoError =
-		(CPose2D(d.odometry[nodeStep[last]]) - CPose2D(o0)).distanceTo(CPose2D(d.truth[nodeStep[last]]) - CPose2D(t0));
-	EXPECT_LT(gvError, 0.1);
-	EXPECT_LT(gvError, 0.5 * odoError);
-	for (const auto& e : graph.edges)  // information from the matcher: positive definite
-		EXPECT_GT(e.second.cov_inv.asEigen().determinant(), 0);
+	const double gvError = positionError(graph.nodes.at(last), d.truth[nodeScan[last]], d.truth[0]);
+	const double odoError = positionError(CPose2D(d.odometry[nodeScan[last]]) - CPose2D(d.odometry[0]),
+										  d.truth[nodeScan[last]], d.truth[0]);
+	EXPECT_LT(gvError, 0.05);
+	EXPECT_LT(gvError, 0.25 * odoError);
+	for (const auto& e : graph.edges)  // odometry: positive definite; a registration: semi-definite
+		EXPECT_GE(e.second.cov_inv.asEigen().determinant(), 0);
+}
+
+// A loop: the loop edges come into the graph, the nodes move to Eq. 22's optimum after it, and at the end
+// (finishDeciders) the graph holds the final edges, whose optimum under MRPT's own Levenberg-Marquardt
+// (what gv-graphslam and CLevMarqGSO run) is the online EM-SLAM's trajectory.
+TEST(graphslam_deciders, a_loop_closes_and_mrpts_optimiser_keeps_the_online_optimum)
+{
+	std::vector<TPose2D> truth, odometry;
+	TPose2D t(-1.5, -1, 0), o = t;  // clear of the clutter
+	for (int lap = 0; lap < 2; ++lap)
+		for (int side = 0; side < 4; ++side)
+		{
+			const int steps = side % 2 == 0 ? 15 : 10;  // 3 m by 2 m
+			for (int i = 0; i < steps + 8; ++i)
+			{
+				const TPose2D step = i < steps ? TPose2D(0.2, 0, 0) : TPose2D(0, 0, M_PI / 16);
+				t = (CPose2D(t) + CPose2D(step)).asTPose();
+				o = (CPose2D(o) + CPose2D(step.x * 1.02, 0, step.phi * 1.03 + 0.002)).asTPose();
+				truth.push_back(t);
+				odometry.push_back(o);
+			}
+		}
+	mrpt::graphs::CNetworkOfPoses2DInf graph;
+	CGridVectorNRD nrd;
+	CGridVectorERD erd;
+	const auto nodeScan = runDeciders(truth, odometry, nrd, erd, graph);
+	EXPECT_GT(erd.stats().loopClosures, 0u);  // edges between the laps
+	ASSERT_TRUE(finishDeciders(nrd, erd));
+	const OnlineEmSlam& slam = nrd.online();
+	std::multiset<std::pair<uint32_t, uint32_t>> active;
+	for (const auto& [key, c] : slam.constraints())
+		if (!c.rejected) active.insert(key);
+	EXPECT_EQ(registrationEdges(graph), active);
+	auto g = graph;
+	mrpt::graphslam::TResultInfoSpaLevMarq info;
+	mrpt::containers::yaml params;
+	params["max_iterations"] = 100;
+	mrpt::graphslam::optimize_graph_spa_levmarq(g, info, nullptr, params);
+	double worst = 0, worstOdo = 0;
+	for (size_t k = 0; k < g.nodeCount(); ++k)
+	{
+		worst = std::max(worst, g.nodes.at(k).distanceTo(graph.nodes.at(k)));
+		worstOdo = std::max(worstOdo, positionError(CPose2D(odometry[nodeScan[k]]) - CPose2D(odometry[0]),
+													truth[nodeScan[k]], truth[0]));
+		EXPECT_LT(positionError(g.nodes.at(k), truth[nodeScan[k]], truth[0]), 0.05) << k;
+	}
+	EXPECT_LT(worst, 0.01);  // MRPT's optimiser on the mirrored graph stays at the online optimum
+	EXPECT_GT(worstOdo, 0.5);  // and the odometry was off: the loop mattered
 }
 
 TEST(graphslam_recorder, scans_between_nodes_follow_odometry_from_their_node)

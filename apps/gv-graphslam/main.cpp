@@ -319,6 +319,14 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 	std::unique_ptr<mrpt::graphslam::deciders::CNodeRegistrationDecider<graph_t>> nrd(reg.node_regs_map[s.nodeReg]());
 	std::unique_ptr<mrpt::graphslam::deciders::CEdgeRegistrationDecider<graph_t>> erd(reg.edge_regs_map[s.edgeReg]());
 	std::unique_ptr<mrpt::graphslam::optimizers::CGraphSlamOptimizer<graph_t>> gso(reg.optimizers_map[s.optimizer]());
+	try
+	{
+		linkDeciders(*nrd, *erd);
+	}
+	catch (const std::invalid_argument& e)
+	{
+		throw std::runtime_error(std::string("-e ") + s.edgeReg + " -n " + s.nodeReg + ": " + e.what());
+	}
 	std::optional<StdinFromDevNull> noPause(std::in_place);
 	// optional: destroyed before the marker is written, since its destructor writes timings.log
 	std::optional<mrpt::graphslam::CGraphSlamEngine<graph_t>> engineHolder;
@@ -335,6 +343,7 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 	RunRecorder rec;
 	const auto t0 = std::chrono::steady_clock::now();
 	const size_t steps = feed(s.rawlog, engine, rec, gt, s.quiet);
+	finishDeciders(*nrd, *erd);  // the grid-vector deciders' closing edge search and optimisation
 	const double slamSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	writeEngineOutputs(engine, gc, outDir.create());
 

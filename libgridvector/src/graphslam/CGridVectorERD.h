@@ -1,37 +1,28 @@
-// Sec. 4.2: edge registration for MRPT's graphslam-engine by vector matching.
+// Sec. 4.2-4.3 as graphslam-engine edge registration: the online EM-SLAM's registration edges in the graph.
 #pragma once
 
-#include <gridvector/GridVectorConfig.h>
-#include "extraction/VectorExtractor.h"
-#include "mstep/VectorMatcher.h"
+#include "graphslam/CGridVectorNRD.h"
 #include "graphslam/DeciderOptions.h"
-#include "graphslam/PoseFusion.h"
 
 #include <mrpt/graphs/CNetworkOfPoses.h>
 #include <mrpt/graphslam/interfaces/CEdgeRegistrationDecider.h>
 
 #include <map>
-#include <optional>
-#include <vector>
 
 namespace gridvector::graphslam
 {
-/** Edge registration decider for CGraphSlamEngine<CNetworkOfPoses2DInf>.
+/** Edge registration decider for CGraphSlamEngine<CNetworkOfPoses2DInf>, with CGridVectorNRD.
  *
- * Keeps the grid vectors (Sec. 3.1) of every node's scan. When a node n is
- * registered, its vectors are matched against (a) its predecessors
- * n-2 .. n-1-sequential_window (and n-1 with match_previous_node) and (b)
- * earlier passes through the place: older nodes within max_distance of n's
- * current estimate, grouped into passes by pass_gap, the nearest node of each
- * of the max_loop_candidates nearest passes. A registration becomes an edge
- * (relative pose + the matcher's information matrix) when the matcher accepts
- * it, it lies within max_correction_* of the graph's current relative estimate
- * and, for (b), it matches min_matched_share of the shorter scan. Edges between
- * nodes more than LC_min_nodeid_diff apart are loop closures.
+ * The edges are those of the node decider's OnlineEmSlam: when a node (keyframe i) comes, its sequential
+ * edges to the mstep.sequential_window nodes before it, its overlap edges to earlier passes through the
+ * place (Sec. 4.3) and its loop edges (the loop search in the window of the odometry model), as each was
+ * kept by the consistency check, with the registration's information (Sec. 4.2). After each optimisation
+ * of the online EM-SLAM (Eq. 22), the graph's registration edges are made equal to its active ones: the
+ * chi2-rejected edges leave the graph, reconsidered ones come back. So the engine's optimizer (CLevMarqGSO)
+ * works on Eq. 22's graph. Edges between nodes more than LC_min_nodeid_diff apart count as loop closures.
  *
- * Cost per new node: at most sequential_window + max_loop_candidates
- * registrations, plus a linear scan of the node estimates (as MRPT's ICP
- * deciders do). */
+ * It needs the CGridVectorNRD of the same engine: linkDeciders() (gv-graphslam does it). Cost per node:
+ * its new edges; per optimisation, one pass over the edges. */
 class CGridVectorERD : public mrpt::graphslam::deciders::CEdgeRegistrationDecider<mrpt::graphs::CNetworkOfPoses2DInf>
 {
    public:
@@ -41,6 +32,7 @@ class CGridVectorERD : public mrpt::graphslam::deciders::CEdgeRegistrationDecide
 
 	CGridVectorERD();
 
+	/** Throws std::logic_error if no CGridVectorNRD was linked (linkDeciders). */
 	bool updateState(mrpt::obs::CActionCollection::Ptr action, mrpt::obs::CSensoryFrame::Ptr observations,
 					 mrpt::obs::CObservation::Ptr observation) override;
 	void loadParams(const std::string& source_fname) override;
@@ -51,40 +43,40 @@ class CGridVectorERD : public mrpt::graphslam::deciders::CEdgeRegistrationDecide
 
 	void loadOptions(const mrpt::config::CConfigFileBase& cfg, const std::string& sourceName);
 
+	/** The node decider whose online EM-SLAM's edges go into the graph; it must outlive this. */
+	void follow(const CGridVectorNRD& nrd) { nrd_ = &nrd; }
+	/** The graph's registration edges made equal to the online EM-SLAM's active ones (after an optimisation,
+	 * and at the end after CGridVectorNRD::finish). */
+	void synchronise();
+
 	struct Stats
 	{
-		size_t registrations = 0;  //!< matcher runs
-		size_t sequentialEdges = 0, passEdges = 0;  //!< edges added, by candidate kind
-		size_t loopClosures = 0;  //!< edges spanning more than LC_min_nodeid_diff
-		size_t rejected = 0;  //!< registrations not turned into edges
+		size_t sequentialEdges = 0, overlapEdges = 0, loopEdges = 0;  //!< in the graph now, by kind
+		size_t loopClosures = 0;  //!< ... spanning more than LC_min_nodeid_diff
+		size_t inserted = 0, removed = 0;  //!< edges put into / taken out of the graph over the run
+		size_t synchronisations = 0;
 	};
 	const Stats& stats() const { return stats_; }
 	const EdgeDeciderOptions& options() const { return params_; }
 
-	/** Candidate nodes for new node n under the current estimates: first the
-	 * sequential ones (newest first), then one per older pass (nearest pass
-	 * first). `sequentialCount` receives how many of the first are sequential. */
-	std::vector<TNodeID> candidates(TNodeID n, size_t* sequentialCount = nullptr) const;
-
    private:
-	void attachScans();
-	void registerEdges(TNodeID n);
-	bool tryEdge(TNodeID from, TNodeID to, bool sequential);
-	/** Registration of `to`'s vectors against `from`'s: from the guess, then
-	 * (earlier passes, search_* > 0) from shifted guesses, best matched length. */
-	std::optional<MatchResult> registerPair(TNodeID from, TNodeID to, const mrpt::math::TPose2D& guess,
-											bool sequential);
-	bool acceptable(const MatchResult& r, const mrpt::math::TPose2D& guess, bool sequential, double widenDistance,
-					double widenAngle) const;
-	std::vector<TNodeID> passCandidates(TNodeID n, TNodeID below) const;
+	/** The node decider's OnlineEmSlam; throws if none is linked. */
+	const OnlineEmSlam& online() const;
+	struct Mirrored
+	{
+		graph_t::edges_map_t::iterator edge;  //!< in the graph's multimap (odometry edges share keys)
+		EdgeKind kind;
+	};
+	/** `key`'s constraint into the graph, or its value updated if there. */
+	void mirror(const EdgeKey& key, const Constraint& c);
+	std::map<EdgeKey, Mirrored>::iterator unmirror(std::map<EdgeKey, Mirrored>::iterator it);
+	/** Adds `sign` to the stats of an edge of that key and kind. */
+	void count(const EdgeKey& key, EdgeKind kind, int sign);
 
 	EdgeDeciderOptions params_;
-	GridVectorConfig cfg_;
-	VectorExtractor extractor_;
-	VectorMatcher matcher_;
-	std::map<TNodeID, std::vector<MatchSegment>> nodeVectors_;
-	mrpt::obs::CObservation2DRangeScan::Ptr firstScan_, lastScan_;
-	size_t knownNodes_ = 0;
+	const CGridVectorNRD* nrd_ = nullptr;
+	std::map<EdgeKey, Mirrored> mirrored_;  //!< the registration edges in the graph
+	size_t knownNodes_ = 0, seenOptimisations_ = 0;
 	Stats stats_;
 };
 

@@ -1,13 +1,12 @@
-#include "posegraph/PoseGraph.h"
 #include "graphslam/CGridVectorNRD.h"
+#include "graphslam/EngineEdge.h"
 #include "graphslam/RegistrationConfig.h"
+#include "posegraph/PoseGraph.h"
 
 #include <mrpt/config/CConfigFile.h>
 #include <mrpt/core/format.h>
 #include <mrpt/poses/CPose2D.h>
-#include <mrpt/system/filesystem.h>
 
-#include <cmath>
 #include <sstream>
 
 namespace gridvector::graphslam
@@ -15,14 +14,7 @@ namespace gridvector::graphslam
 using mrpt::math::TPose2D;
 using mrpt::poses::CPose2D;
 
-namespace
-{
-TPose2D relative(const TPose2D& from, const TPose2D& to) { return (CPose2D(to) - CPose2D(from)).asTPose(); }
-TPose2D compose(const TPose2D& a, const TPose2D& b) { return (CPose2D(a) + CPose2D(b)).asTPose(); }
-constexpr double kWeak = 1e-6;  // information scale of a prior that must not bias the match
-}  // namespace
-
-CGridVectorNRD::CGridVectorNRD() : extractor_(cfg_.extraction, cfg_.grid), matcher_(cfg_.matcher)
+CGridVectorNRD::CGridVectorNRD() : extractor_(cfg_.extraction, cfg_.grid), slam_(std::make_unique<OnlineEmSlam>(cfg_))
 {
 	this->initializeLoggers("CGridVectorNRD");
 	this->setMinLoggingLevel(mrpt::system::VerbosityLevel(params_.classVerbosity));
@@ -41,7 +33,10 @@ void CGridVectorNRD::loadOptions(const mrpt::config::CConfigFileBase& cfg, const
 	params_.load(cfg, sourceName);
 	cfg_ = loadRegistrationConfig(cfg, sourceName);
 	extractor_ = VectorExtractor(cfg_.extraction, cfg_.grid);
-	matcher_ = VectorMatcher(cfg_.matcher);
+	slam_ = std::make_unique<OnlineEmSlam>(cfg_);
+	odometryOrigin_.reset();
+	last_ = {};
+	stats_ = {};
 	this->setMinLoggingLevel(mrpt::system::VerbosityLevel(params_.classVerbosity));
 }
 
@@ -60,79 +55,83 @@ bool CGridVectorNRD::updateState(mrpt::obs::CActionCollection::Ptr action, mrpt:
 	return scan && processScan(*scan);
 }
 
-PoseEstimate CGridVectorNRD::odometryPrior(const TPose2D& prediction) const
-{
-	Eigen::Matrix3d info = PoseGraph::odometryInformation(relative(odomAtNode_, odometry_.pose()), cfg_.posegraph);
-	if (!odometry_.seen() || !params_.useOdometry) info *= kWeak;
-	return {prediction, info};
-}
-
-// Sec. 4.2: register the scan's vectors against the last node's, fuse with odometry.
+// Sec. 6: the scan into the online EM-SLAM; a new keyframe becomes a node.
 bool CGridVectorNRD::processScan(const mrpt::obs::CObservation2DRangeScan& scan)
 {
-	++stats_.scans;
-	std::vector<MatchSegment> segs = MatchSegment::fromVectors(extractor_.extract(scan).vectors);
-	const TPose2D odom = odometry_.pose();
-	if (!haveKeyframe_)
+	LocalScan s = extractor_.extract(scan);
+	s.scanIndex = int64_t(stats_.scans++);
+	s.timestamp = scan.timestamp == INVALID_TIMESTAMP ? 0.0 : mrpt::Clock::toDouble(scan.timestamp);
+	if (!odometryOrigin_) odometryOrigin_ = odometry_.pose();
+	last_ = slam_->addScan(s, (CPose2D(odometry_.pose()) - CPose2D(*odometryOrigin_)).asTPose());
+	const OnlineStep& st = last_;
+	stats_.registered += st.registered;
+	const bool moved = optimiseIfDue();
+	newKeyframe_ = st.keyframe && slam_->keyframes().size() > 1;
+	MRPT_LOG_DEBUG_FMT("scan %zu: %s%s%s, pose %s", stats_.scans, st.registered ? "registered" : "odometry",
+					   st.keyframe ? ", keyframe" : "", moved ? ", optimised" : "", st.pose.asString().c_str());
+	if (!checkRegistrationCondition())
 	{
-		keyframe_ = std::move(segs);
-		haveKeyframe_ = true;
-		odomAtNode_ = odomAtScan_ = odom;
-		since_ = {};
+		if (moved) placeNodes(0);
 		return false;
 	}
-	const TPose2D prediction = compose(since_.mean, relative(odomAtScan_, odom));
-	odomAtScan_ = odom;
-	const PoseEstimate prior = odometryPrior(prediction);
-	since_ = prior;
-	const MatchResult r = matcher_.match(keyframe_, segs, prediction);
-	if (!r.ok())
-		++stats_.failed;
-	else if (!closeTo(prediction, r.pose, params_.maxCorrectionDistance, params_.maxCorrectionAngleDeg * M_PI / 180) ||
-			 !validInformation(r.information))
-		++stats_.implausible;
-	else
-	{
-		++stats_.matched;
-		since_ = fuse(prior, PoseEstimate{r.pose, r.information});
-	}
-	MRPT_LOG_DEBUG_FMT("scan %zu: %s, since node %s", stats_.scans, toString(r.status), since_.mean.asString().c_str());
-	// fused over the relative pose's parameters, both terms; the edge in the error's frame
-	this->m_since_prev_node_PDF = toConstraint(since_, cfg_.mstep.informationInEdgeFrame);
-	if (!checkRegistrationCondition()) return false;
-	registerNode(std::move(segs));
-	odomAtNode_ = odom;
+	registerKeyframe();
+	placeNodes(moved ? 0 : this->m_graph->nodeCount() - 1);
 	return true;
 }
 
-bool CGridVectorNRD::checkRegistrationCondition()
+bool CGridVectorNRD::optimiseIfDue()
 {
-	const TPose2D& d = since_.mean;
-	return std::hypot(d.x, d.y) > params_.registrationMaxDistance ||
-		   std::abs(d.phi) > params_.registrationMaxAngleDeg * M_PI / 180;
+	if (!slam_->optimisationDue()) return false;
+	auto job = slam_->takeOptimisation();
+	slam_->runOptimisation(job);
+	slam_->applyOptimisation(job);
+	++stats_.optimisations;
+	return true;
 }
 
-void CGridVectorNRD::registerNode(std::vector<MatchSegment>&& keyframe)
+// Eq. 20's odometry edge u between the previous keyframe and this one, in the error's frame as PoseGraph has it.
+void CGridVectorNRD::registerKeyframe()
 {
 	if (this->m_prev_registered_nodeID == mrpt::graphs::INVALID_NODEID)
-	{  // the root: origin of the map, with the first scan
+	{  // the root: the first scan, at the origin
 		this->m_graph->nodes[this->m_graph->root] = graph_t::global_pose_t();
 		this->m_prev_registered_nodeID = this->m_graph->root;
 		++stats_.nodes;
 	}
-	this->registerNewNodeAtEnd();  // edge = m_since_prev_node_PDF, then reset
+	const Poses& odo = slam_->keyframeOdometry();
+	const size_t i = odo.size() - 1;
+	const TPose2D z = (CPose2D(odo[i]) - CPose2D(odo[i - 1])).asTPose();
+	this->registerNewNodeAtEnd(engineEdge(z, PoseGraph::odometryInformation(z, cfg_.posegraph)));
 	++stats_.nodes;
-	keyframe_ = std::move(keyframe);
-	since_ = {};
+}
+
+void CGridVectorNRD::placeNodes(size_t from)
+{
+	const Poses& poses = slam_->keyframePoses();
+	for (size_t k = from; k < poses.size() && k < this->m_graph->nodeCount(); ++k)
+		this->m_graph->nodes[mrpt::graphs::TNodeID(k)] = CPose2D(poses[k]);
+}
+
+void CGridVectorNRD::finish()
+{
+	slam_->finish();
+	++stats_.optimisations;
+	placeNodes(0);
+}
+
+CGridVectorNRD::global_pose_t CGridVectorNRD::getCurrentRobotPosEstimation() const
+{
+	return slam_->scans() ? CPose2D(slam_->currentPose()) : global_pose_t();
 }
 
 void CGridVectorNRD::getDescriptiveReport(std::string* report_str) const
 {
 	std::ostringstream ss;
-	ss << "Grid-vector node registration (vector matching + odometry) summary:\n" << std::string(80, '#') << "\n";
+	ss << "Grid-vector node registration (online EM-SLAM) summary:\n" << std::string(80, '#') << "\n";
 	params_.dumpToTextStream(ss);
-	ss << mrpt::format("scans %zu: matched %zu, match rejected %zu, implausible %zu; nodes %zu\n\n", stats_.scans,
-					   stats_.matched, stats_.failed, stats_.implausible, stats_.nodes);
+	ss << mrpt::format("scans %zu: registered %zu, from odometry %zu; nodes %zu; optimisations %zu\n\n",
+					   stats_.scans, stats_.registered, stats_.scans - stats_.registered, stats_.nodes,
+					   stats_.optimisations);
 	report_str->clear();
 	parent_t::getDescriptiveReport(report_str);
 	*report_str += ss.str();

@@ -1,35 +1,34 @@
-// Sec. 4.2: node registration for MRPT's graphslam-engine by vector matching.
+// Sec. 6's sequential mode as graphslam-engine node registration: the nodes are OnlineEmSlam's keyframes.
 #pragma once
 
 #include <gridvector/GridVectorConfig.h>
 #include "extraction/VectorExtractor.h"
-#include "mstep/VectorMatcher.h"
 #include "graphslam/DeciderOptions.h"
 #include "graphslam/OdometryTracker.h"
-#include "graphslam/PoseFusion.h"
+#include "online/OnlineEmSlam.h"
 
 #include <mrpt/graphs/CNetworkOfPoses.h>
 #include <mrpt/graphslam/interfaces/CNodeRegistrationDecider.h>
 
+#include <memory>
+#include <optional>
+
 namespace gridvector::graphslam
 {
-/** Node registration decider for CGraphSlamEngine<CNetworkOfPoses2DInf>
- * (both rawlog formats).
+/** Node registration decider for CGraphSlamEngine<CNetworkOfPoses2DInf> (both rawlog formats), driven by
+ * the online EM-SLAM (OnlineEmSlam, the same implementation as `gv-em-slam --online`).
  *
- * Each laser scan's grid vectors (Sec. 3.1) are registered by vector
- * matching against the scan of the last node (a keyframe), starting from the
- * previous estimate moved by the odometry increment. An accepted match is
- * fused with the odometry increment in information form; a failed or
- * implausible match (further than max_correction_* from the prediction) falls
- * back to odometry. A node is registered, with that estimate and information
- * as its edge from the previous node, once the robot has moved
- * registration_max_distance or turned registration_max_angle since the last
- * node. The root node sits at the origin with the first scan.
+ * Every laser scan's grid vectors (Sec. 3.1) and its odometry go to OnlineEmSlam::addScan: the scan is
+ * registered against the last keyframe, and each keyframe (mstep.keyframe_distance /
+ * keyframe_rotation_deg, as the batch EM's) gets its sequential, overlap and loop edges and goes into the
+ * classified map. A keyframe becomes a node, at the online estimate, with the odometry edge of Eq. 22 from
+ * the previous node; the registration edges are CGridVectorERD's (linkDeciders). When a loop edge makes
+ * Eq. 22 due, it runs here, in the engine's step, and every node moves to its result. The root is the
+ * first scan, at the origin.
  *
- * Options: see NodeDeciderOptions, plus the [gridvector_extraction],
- * [gridvector_grid], [gridvector_matcher] and [gridvector_posegraph]
- * (odometry model) sections of GridVectorConfig. Cost per scan: one
- * extraction and one registration. */
+ * Options: [NodeRegistrationDeciderParameters] class_verbosity, and the [gridvector_*] sections of
+ * GridVectorConfig (doc/parameters.md). Cost per scan: one extraction and OnlineEmSlam::addScan (that of
+ * the robot's surroundings); per loop closure, one optimisation of the whole graph. */
 class CGridVectorNRD : public mrpt::graphslam::deciders::CNodeRegistrationDecider<mrpt::graphs::CNetworkOfPoses2DInf>
 {
    public:
@@ -40,46 +39,57 @@ class CGridVectorNRD : public mrpt::graphslam::deciders::CNodeRegistrationDecide
 
 	bool updateState(mrpt::obs::CActionCollection::Ptr action, mrpt::obs::CSensoryFrame::Ptr observations,
 					 mrpt::obs::CObservation::Ptr observation) override;
-	/** Reads the options; throws std::runtime_error("FILE: ...") on an unknown
-	 * key in the decider's own sections or a value out of range. */
+	/** Reads the options; throws std::runtime_error("FILE: ...") on an unknown key in the decider's own
+	 * sections or a value out of range. Starts a new OnlineEmSlam. */
 	void loadParams(const std::string& source_fname) override;
 	void printParams() const override;
 	void getDescriptiveReport(std::string* report_str) const override;
+	/** The online estimate of the last scan, in the graph's frame. */
+	global_pose_t getCurrentRobotPosEstimation() const override;
 
 	/** Loads the options from an already open config (loadParams' work). */
 	void loadOptions(const mrpt::config::CConfigFileBase& cfg, const std::string& sourceName);
 
+	/** End of the data: OnlineEmSlam::finish() (its closing edge search and Eq. 22) and every node at its
+	 * result. The engine has no end-of-data call: the program driving it calls this (finishDeciders). */
+	void finish();
+
 	struct Stats
 	{
 		size_t scans = 0;  //!< laser scans processed
-		size_t matched = 0;  //!< ... registered by vector matching
-		size_t failed = 0;  //!< ... whose match the matcher rejected
-		size_t implausible = 0;  //!< ... whose match was too far from the odometry prediction
+		size_t registered = 0;  //!< ... whose pose came from a registration (else from the odometry)
 		size_t nodes = 0;  //!< nodes registered (the root included)
+		size_t optimisations = 0;  //!< Eq. 22 runs applied to the nodes
 	};
 	const Stats& stats() const { return stats_; }
 	const NodeDeciderOptions& options() const { return params_; }
 	const GridVectorConfig& config() const { return cfg_; }
-	/** Current estimate of the motion since the last node. */
-	const PoseEstimate& sinceLastNode() const { return since_; }
+	/** The online EM-SLAM behind the nodes (keyframe k is node k). */
+	const OnlineEmSlam& online() const { return *slam_; }
+	/** What OnlineEmSlam::addScan did with the last scan (its keyframe's edges: CGridVectorERD's). */
+	const OnlineStep& lastStep() const { return last_; }
 
    protected:
-	bool checkRegistrationCondition() override;
+	/** Did the last scan become a keyframe (beyond the first)? */
+	bool checkRegistrationCondition() override { return newKeyframe_; }
 
    private:
 	bool processScan(const mrpt::obs::CObservation2DRangeScan& scan);
-	PoseEstimate odometryPrior(const mrpt::math::TPose2D& prediction) const;
-	void registerNode(std::vector<MatchSegment>&& keyframe);
+	/** Eq. 22 (take, run, apply) when a loop edge made it due. */
+	bool optimiseIfDue();
+	/** The newest keyframe as a node: the root first if there is none, the odometry edge from the previous. */
+	void registerKeyframe();
+	/** Nodes `from`.. at the online estimate. */
+	void placeNodes(size_t from);
 
 	NodeDeciderOptions params_;
 	GridVectorConfig cfg_;
 	VectorExtractor extractor_;
-	VectorMatcher matcher_;
+	std::unique_ptr<OnlineEmSlam> slam_;
 	OdometryTracker odometry_;
-	std::vector<MatchSegment> keyframe_;  //!< the last node's vectors
-	bool haveKeyframe_ = false;
-	mrpt::math::TPose2D odomAtNode_, odomAtScan_;  //!< odometry at the last node / scan
-	PoseEstimate since_;  //!< motion since the last node
+	std::optional<mrpt::math::TPose2D> odometryOrigin_;  //!< odometry of the first scan: the graph's origin
+	bool newKeyframe_ = false;
+	OnlineStep last_;
 	Stats stats_;
 };
 

@@ -12,7 +12,7 @@ template <class Opts>
 void loadBoth(Opts& o, const mrpt::config::CConfigFileBase& cfg, const std::string& source)
 {
 	readSection(cfg, Opts::sharedSection, false, source, [&](auto&& v) { o.visitShared(v); });
-	readSection(cfg, Opts::ownSection, true, source, [&](auto&& v) { o.visitOwn(v); });
+	readSection(cfg, Opts::ownSection, true, source, [&](auto&& v) { o.visitOwn(v); });  // no key: any is an error
 }
 
 template <class Opts>
@@ -21,8 +21,7 @@ void dumpBoth(const Opts& opts, std::ostream& out)
 	Opts o = opts;
 	if constexpr (std::is_same_v<Opts, EdgeDeciderOptions>)
 		dumpSection(out, Opts::engineSection, [&](auto&& v) { o.visitEngine(v); });
-	dumpSection(out, Opts::sharedSection, [&](auto&& v) { o.visitShared(v); });
-	dumpSection(out, Opts::ownSection, [&](auto&& v) { o.visitOwn(v); });
+	dumpSection(out, Opts::sharedSection, [&](auto&& v) { o.visitShared(v); });  // the own section has no key
 }
 
 template <class Opts>
@@ -34,7 +33,6 @@ std::string tableOf()
 	if constexpr (std::is_same_v<Opts, EdgeDeciderOptions>)
 		markdownRows(out, Opts::engineSection, [&](auto&& v) { o.visitEngine(v); });
 	markdownRows(out, Opts::sharedSection, [&](auto&& v) { o.visitShared(v); });
-	markdownRows(out, Opts::ownSection, [&](auto&& v) { o.visitOwn(v); });
 	return out.str();
 }
 
@@ -56,16 +54,8 @@ std::string ignoredLcNote(const mrpt::config::CConfigFileBase& cfg, const std::s
 void NodeDeciderOptions::load(const mrpt::config::CConfigFileBase& cfg, const std::string& source)
 {
 	loadBoth(*this, cfg, source);
-	const std::string s = sharedSection, own = ownSection;
-	require(registrationMaxDistance > 0, source, s, "registration_max_distance", registrationMaxDistance,
-			"must be > 0");
-	require(registrationMaxAngleDeg > 0 && registrationMaxAngleDeg <= 180, source, s, "registration_max_angle",
-			registrationMaxAngleDeg, "must be in (0, 180]");
-	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity", classVerbosity,
+	require(classVerbosity >= 0 && classVerbosity <= 3, source, sharedSection, "class_verbosity", classVerbosity,
 			"must be in 0..3");
-	require(maxCorrectionDistance > 0, source, own, "max_correction_distance", maxCorrectionDistance, "must be > 0");
-	require(maxCorrectionAngleDeg > 0 && maxCorrectionAngleDeg <= 180, source, own, "max_correction_angle_deg",
-			maxCorrectionAngleDeg, "must be in (0, 180]");
 }
 
 void NodeDeciderOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string&)
@@ -81,22 +71,9 @@ void EdgeDeciderOptions::load(const mrpt::config::CConfigFileBase& cfg, const st
 	readSection(cfg, engineSection, false, source, [&](auto&& v) { visitEngine(v); });
 	loadBoth(*this, cfg, source);
 	ignoredKeyNote = ignoredLcNote(cfg, source, lcMinNodeIdDiff);
-	const std::string s = sharedSection, own = ownSection;
 	require(lcMinNodeIdDiff >= 1, source, engineSection, "LC_min_nodeid_diff", lcMinNodeIdDiff, "must be >= 1");
-	require(classVerbosity >= 0 && classVerbosity <= 3, source, s, "class_verbosity", classVerbosity,
+	require(classVerbosity >= 0 && classVerbosity <= 3, source, sharedSection, "class_verbosity", classVerbosity,
 			"must be in 0..3");
-	require(maxDistance > 0, source, own, "max_distance", maxDistance, "must be > 0");
-	require(sequentialWindow >= 0, source, own, "sequential_window", sequentialWindow, "must be >= 0");
-	require(passGap >= 1, source, own, "pass_gap", passGap, "must be >= 1");
-	require(maxLoopCandidates >= 0, source, own, "max_loop_candidates", maxLoopCandidates, "must be >= 0");
-	require(minMatchedShare > 0 && minMatchedShare <= 1, source, own, "min_matched_share", minMatchedShare,
-			"must be in (0, 1]");
-	require(maxCorrectionDistance > 0, source, own, "max_correction_distance", maxCorrectionDistance, "must be > 0");
-	require(maxCorrectionAngleDeg > 0 && maxCorrectionAngleDeg <= 180, source, own, "max_correction_angle_deg",
-			maxCorrectionAngleDeg, "must be in (0, 180]");
-	require(searchOffset >= 0, source, own, "search_offset", searchOffset, "must be >= 0");
-	require(searchAngleDeg >= 0 && searchAngleDeg < 90, source, own, "search_angle_deg", searchAngleDeg,
-			"must be in [0, 90)");
 }
 
 void EdgeDeciderOptions::loadFromConfigFile(const mrpt::config::CConfigFileBase& cfg, const std::string&)

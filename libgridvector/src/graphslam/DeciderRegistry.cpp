@@ -3,6 +3,8 @@
 
 #include <gridvector/graphslam/DeciderRegistry.h>
 
+#include <stdexcept>
+
 namespace gridvector::graphslam
 {
 DeciderRegistry::DeciderRegistry()
@@ -36,12 +38,34 @@ void DeciderRegistry::populateDeciderOptimizerProperties()
 		regs_descriptions.push_back(p);
 	};
 	add("CGridVectorNRD", "Node",
-		"Register a new node when the robot has moved/turned enough since the last node; the "
-		"motion is estimated by matching the grid vectors of each scan against the last node's "
-		"(Wang, Xiong, Chu, Sec. 4.2), fused with odometry");
+		"Online EM-SLAM (Wang, Xiong, Chu, Sec. 4 in sequential mode): every scan registered by grid-vector "
+		"matching against the last keyframe; each keyframe a node with its odometry edge, the nodes moved to "
+		"the pose graph's optimum after every loop closure. Use with CGridVectorERD");
 	add("CGridVectorERD", "Edge",
-		"Register edges between the new node and its predecessors and earlier passes through "
-		"the place by grid-vector matching; information matrix from the matcher");
+		"The online EM-SLAM's registration edges (sequential, overlap with earlier passes, loop closures "
+		"verified for consistency, chi2-rejected ones removed); needs CGridVectorNRD");
+}
+
+void linkDeciders(mrpt::graphslam::deciders::CNodeRegistrationDecider<DeciderRegistry::graph_t>& nrd,
+				  mrpt::graphslam::deciders::CEdgeRegistrationDecider<DeciderRegistry::graph_t>& erd)
+{
+	auto* edges = dynamic_cast<CGridVectorERD*>(&erd);
+	if (!edges) return;
+	const auto* nodes = dynamic_cast<const CGridVectorNRD*>(&nrd);
+	if (!nodes)
+		throw std::invalid_argument(
+			"CGridVectorERD needs the node decider CGridVectorNRD: its edges are that decider's online EM-SLAM's");
+	edges->follow(*nodes);
+}
+
+bool finishDeciders(mrpt::graphslam::deciders::CNodeRegistrationDecider<DeciderRegistry::graph_t>& nrd,
+					mrpt::graphslam::deciders::CEdgeRegistrationDecider<DeciderRegistry::graph_t>& erd)
+{
+	auto* nodes = dynamic_cast<CGridVectorNRD*>(&nrd);
+	if (!nodes) return false;
+	nodes->finish();
+	if (auto* edges = dynamic_cast<CGridVectorERD*>(&erd)) edges->synchronise();
+	return true;
 }
 
 }  // namespace gridvector::graphslam

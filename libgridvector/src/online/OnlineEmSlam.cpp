@@ -60,7 +60,7 @@ OnlineStep OnlineEmSlam::addScan(const LocalScan& scan, const TPose2D& odometry)
 		keyScan_.push_back(t);
 		book_.beginStep(segs_, nullptr);  // the new keyframe's signature (its vectors never change)
 		loopClosure_.setOdometry(keyOdo_);  // the loop-search windows grow along the path
-		st.loops = addEdges(i);
+		addEdges(i, st);
 		st.optimised = st.loops > 0;
 		due_ = due_ || st.optimised;
 		st.classified = live_->insert(pose, keyScans_.back());
@@ -73,7 +73,7 @@ OnlineStep OnlineEmSlam::addScan(const LocalScan& scan, const TPose2D& odometry)
 
 // Sec. 4.2-4.3 for one new keyframe: its sequential edges, then per earlier pass near it an overlap edge
 // where the estimate links the passes already, else a loop search; the new edges' consistency checked.
-size_t OnlineEmSlam::addEdges(uint32_t i)
+void OnlineEmSlam::addEdges(uint32_t i, OnlineStep& st)
 {
 	const auto& m = cfg_.mstep;
 	const uint32_t w = uint32_t(std::max(1, m.sequentialWindow));
@@ -130,7 +130,11 @@ size_t OnlineEmSlam::addEdges(uint32_t i)
 		loops.push_back({j, i});
 	}
 	verifyOverlaps(book_, m, keyPose_, fresh, rep_);
-	return size_t(std::count_if(loops.begin(), loops.end(), [&](const EdgeKey& k) { return book_.edges.count(k); }));
+	st.loops = size_t(std::count_if(loops.begin(), loops.end(), [&](const EdgeKey& k) { return book_.edges.count(k); }));
+	for (auto it = book_.edges.lower_bound({i > w ? i - w : 0, 0}); it != book_.edges.end(); ++it)
+		if (it->first.second == i) st.edges.push_back(it->first);  // the sequential ones
+	for (const EdgeKey& k : fresh)
+		if (k.first + w < i && book_.edges.count(k)) st.edges.push_back(k);
 }
 
 OnlineEmSlam::Optimisation OnlineEmSlam::takeOptimisation()

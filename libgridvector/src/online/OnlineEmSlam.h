@@ -29,6 +29,7 @@ struct OnlineStep
 	bool registered = false;  //!< the pose came from a registration (else from the odometry alone)
 	bool keyframe = false;  //!< the scan became a node of the pose graph and went into the map
 	size_t loops = 0;  //!< loop edges this scan added (after the consistency check)
+	std::vector<EdgeKey> edges;  //!< the registration edges (j, i) the keyframe i added, after the check
 	bool optimised = false;  //!< a loop edge made an optimisation of the pose graph due (Eq. 22, see takeOptimisation)
 	size_t classified = 0;  //!< map vectors the E-step re-classified (Eq. 14-15)
 	size_t reanchored = 0;  //!< keyframes re-inserted into the map being re-anchored
@@ -99,6 +100,10 @@ class OnlineEmSlam
 	std::vector<mrpt::math::TPose2D> trajectory() const;
 	/** Scan index of every keyframe. */
 	const std::vector<size_t>& keyframes() const { return keyScan_; }
+	/** Every keyframe's pose (the graph's nodes) as estimated now. */
+	const Poses& keyframePoses() const { return keyPose_; }
+	/** Every keyframe's odometry (Eq. 22's odometry edges join consecutive ones). */
+	const Poses& keyframeOdometry() const { return keyOdo_; }
 
 	/** The map with every vector's state (Eq. 14) as of the last scan that touched it. */
 	const ClassifiedMap& map() const { return *live_; }
@@ -123,8 +128,8 @@ class OnlineEmSlam
 	/** The pose of a scan from the last keyframe: its registration from the odometry guess, else the guess. */
 	mrpt::math::TPose2D poseNow(const std::vector<MatchSegment>& segs, const mrpt::math::TPose2D& odometry,
 								bool& registered) const;
-	/** A new keyframe's edges (sequential, overlap, loop); returns the loop edges kept. */
-	size_t addEdges(uint32_t i);
+	/** A new keyframe's edges (sequential, overlap, loop), those kept into `st` (edges, loops). */
+	void addEdges(uint32_t i, OnlineStep& st);
 	/** takeOptimisation, runOptimisation, applyOptimisation in turn. */
 	void optimise();
 	/** Up to `n` keyframes into the map being re-anchored; swaps it in when it has caught up. */

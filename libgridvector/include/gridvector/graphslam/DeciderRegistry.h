@@ -25,4 +25,16 @@ struct DeciderRegistry : public mrpt::graphslam::apps::TUserOptionsChecker<mrpt:
 	void populateDeciderOptimizerProperties() override;
 };
 
+/** Before the engine runs: gives a CGridVectorERD the CGridVectorNRD whose online EM-SLAM's edges it puts
+ * into the graph. Throws std::invalid_argument if `erd` is a CGridVectorERD and `nrd` is not a
+ * CGridVectorNRD; any other pair needs nothing. */
+void linkDeciders(mrpt::graphslam::deciders::CNodeRegistrationDecider<DeciderRegistry::graph_t>& nrd,
+				  mrpt::graphslam::deciders::CEdgeRegistrationDecider<DeciderRegistry::graph_t>& erd);
+
+/** After the last rawlog entry (the engine has no end-of-data call): a CGridVectorNRD finishes its online
+ * EM-SLAM (the closing edge search and Eq. 22) and moves the nodes to the result, a CGridVectorERD puts the
+ * final edges into the graph. Any other decider: nothing. Returns true if the graph changed. */
+bool finishDeciders(mrpt::graphslam::deciders::CNodeRegistrationDecider<DeciderRegistry::graph_t>& nrd,
+					mrpt::graphslam::deciders::CEdgeRegistrationDecider<DeciderRegistry::graph_t>& erd);
+
 }  // namespace gridvector::graphslam

@@ -59,6 +59,9 @@ struct Settings
 
 const char* const kNodeReg = "CGridVectorNRD";
 const char* const kEdgeReg = "CGridVectorERD";
+// The grid-vector deciders optimise Eq. 22 themselves (and MRPT's engine re-derives the nodes by Dijkstra
+// after every step anyway): CLevMarqGSO's work is overwritten and only costs time. Other deciders need it.
+const char* const kGridVectorOptimizer = "CEmptyGSO";
 const char* const kOptimizer = "CLevMarqGSO";
 
 // MRPT's graphslam-engine spells its value options with one dash.
@@ -83,7 +86,8 @@ void declare(io::ArgParser& a)
 	a.option("ground-truth", "GT.txt", "ground truth for the engine's SLAM metric (-g)", "none");
 	a.option("node-reg", "NRD", "node registration decider (-n)", kNodeReg);
 	a.option("edge-reg", "ERD", "edge registration decider (-e)", kEdgeReg);
-	a.option("optimizer", "GSO", "graph optimizer (-o)", kOptimizer);
+	a.option("optimizer", "GSO", "graph optimizer (-o); CLevMarqGSO gives the grid-vector deciders the same result, slower",
+			 "CEmptyGSO with CGridVectorNRD, else CLevMarqGSO");
 	a.option("output-dir", "DIR", "results directory", "output_dir_fname of the .ini");
 	a.flag("2d", "2D graph of CPosePDFGaussianInf constraints (the only kind supported)");
 	a.flag("3d", "not supported: rejected");
@@ -121,7 +125,7 @@ Settings settingsFrom(const io::ArgParser& a, const DeciderRegistry& reg)
 	s.groundTruth = a.get("ground-truth");
 	s.nodeReg = a.get("node-reg", kNodeReg);
 	s.edgeReg = a.get("edge-reg", kEdgeReg);
-	s.optimizer = a.get("optimizer", kOptimizer);
+	s.optimizer = a.get("optimizer", s.nodeReg == kNodeReg ? kGridVectorOptimizer : kOptimizer);
 	if (!reg.checkRegistrationDeciderExists(s.nodeReg, "node") || !reg.node_regs_map.count(s.nodeReg))
 		a.fail("unknown node registration decider '" + s.nodeReg + "'; --list-node-regs lists them");
 	if (!reg.checkRegistrationDeciderExists(s.edgeReg, "edge") || !reg.edge_regs_map.count(s.edgeReg))

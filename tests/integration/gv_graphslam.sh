@@ -31,6 +31,13 @@ done
 grep -q "^gv-graphslam: CGridVectorNRD + CGridVectorERD + CLevMarqGSO: 500 entries, 250 scans" "$W/run.txt" \
 	|| fail "unexpected summary: $(grep '^gv-graphslam' "$W/run.txt")"
 # (--quiet prints nothing at all: tests/integration/quiet.sh)
+# the default optimizer with the grid-vector deciders is an empty one (they optimise Eq. 22 themselves;
+# MRPT 2.5's own "CEmptyGSO" entry made a CLevMarqGSO): the same trajectory
+"$GV_BIN/gv-graphslam" --2d -i "$INI" -r "$W/short.rawlog" --output-dir "$W/default" > "$W/default.txt"
+grep -q "^gv-graphslam: CGridVectorNRD + CGridVectorERD + CEmptyGSO: 500 entries" "$W/default.txt" \
+	|| fail "default optimizer: $(grep '^gv-graphslam' "$W/default.txt")"
+grep -q "CLevMarqGSO::_optimizeGraph" "$W/default/optimizer.log" && fail "CEmptyGSO ran CLevMarqGSO"
+cmp -s "$W/out/trajectory.txt" "$W/default/trajectory.txt" || fail "CEmptyGSO and CLevMarqGSO trajectories differ"
 for f in trajectory.txt nodes.txt map.gvmap vectors.txt vectors.svg map.3Dscene output_graph.graph CGraphSlamEngine.log \
 	node_registrar.log edge_registrar.log timings.log; do
 	[ -s "$W/out/$f" ] || fail "missing or empty output $f"

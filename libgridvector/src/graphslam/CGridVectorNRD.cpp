@@ -65,10 +65,12 @@ bool CGridVectorNRD::processScan(const mrpt::obs::CObservation2DRangeScan& scan)
 	last_ = slam_->addScan(s, (CPose2D(odometry_.pose()) - CPose2D(*odometryOrigin_)).asTPose());
 	const OnlineStep& st = last_;
 	stats_.registered += st.registered;
-	const bool moved = optimiseIfDue();
+	// the engine re-derives every node by Dijkstra after a step that registered one: back to the estimate
+	const bool optimised = optimiseIfDue();
+	const bool moved = optimised || newKeyframe_;
 	newKeyframe_ = st.keyframe && slam_->keyframes().size() > 1;
 	MRPT_LOG_DEBUG_FMT("scan %zu: %s%s%s, pose %s", stats_.scans, st.registered ? "registered" : "odometry",
-					   st.keyframe ? ", keyframe" : "", moved ? ", optimised" : "", st.pose.asString().c_str());
+					   st.keyframe ? ", keyframe" : "", optimised ? ", optimised" : "", st.pose.asString().c_str());
 	if (!checkRegistrationCondition())
 	{
 		if (moved) placeNodes(0);

@@ -23,8 +23,10 @@ namespace gridvector::graphslam
  * keyframe_rotation_deg, as the batch EM's) gets its sequential, overlap and loop edges and goes into the
  * classified map. A keyframe becomes a node, at the online estimate, with the odometry edge of Eq. 22 from
  * the previous node; the registration edges are CGridVectorERD's (linkDeciders). When a loop edge makes
- * Eq. 22 due, it runs here, in the engine's step, and every node moves to its result. The root is the
- * first scan, at the origin.
+ * Eq. 22 due, it runs here, in the engine's step, and every node moves to its result. MRPT 2.5's engine
+ * re-derives every node's pose by Dijkstra from the root after a step that registered a node; the next
+ * scan puts them back at the online estimate (and finish() at the end). The root is the first scan, at
+ * the origin.
  *
  * Options: [NodeRegistrationDeciderParameters] class_verbosity, and the [gridvector_*] sections of
  * GridVectorConfig (doc/parameters.md). Cost per scan: one extraction and OnlineEmSlam::addScan (that of

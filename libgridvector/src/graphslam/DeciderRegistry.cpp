@@ -3,10 +3,23 @@
 
 #include <gridvector/graphslam/DeciderRegistry.h>
 
+#include <mrpt/graphslam/GSO/CEmptyGSO.h>
+
 #include <stdexcept>
 
 namespace gridvector::graphslam
 {
+namespace
+{
+/** MRPT 2.5's CEmptyGSO leaves optimizeGraph() pure, which is why its registry creates a CLevMarqGSO
+ * under that name; this is the empty optimizer the name promises. */
+class EmptyGSO : public mrpt::graphslam::optimizers::CEmptyGSO<DeciderRegistry::graph_t>
+{
+   public:
+	void optimizeGraph() override {}
+};
+}  // namespace
+
 DeciderRegistry::DeciderRegistry()
 {
 	createDeciderOptimizerMappings();
@@ -16,6 +29,7 @@ DeciderRegistry::DeciderRegistry()
 void DeciderRegistry::createDeciderOptimizerMappings()
 {
 	base_t::createDeciderOptimizerMappings();
+	optimizers_map["CEmptyGSO"] = &createGraphSlamOptimizer<EmptyGSO>;  // MRPT 2.5's entry made a CLevMarqGSO
 	node_regs_map["CGridVectorNRD"] = &createNodeRegistrationDecider<CGridVectorNRD>;
 	edge_regs_map["CGridVectorERD"] = &createEdgeRegistrationDecider<CGridVectorERD>;
 }

@@ -21,7 +21,7 @@
 #include "test_scans.h"
 
 using namespace gridvector::graphslam;
-using gridvector::OnlineEmSlam;
+using gridvector::online::OnlineEmSlam;
 using mrpt::math::TPose2D;
 using mrpt::poses::CPose2D;
 

@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 using namespace gridvector;
+using gridvector::online::OnlineEmSlam;
+using gridvector::online::OnlineStep;
 using emtest::TPose2D;
 
 namespace

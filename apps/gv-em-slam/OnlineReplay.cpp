@@ -40,7 +40,7 @@ OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::
 						  const VectorExtractor& ex, const GridVectorConfig& cfg, io::Progress& progress)
 {
 	OnlineReplay out;
-	OnlineEmSlam slam(cfg);
+	online::OnlineEmSlam slam(cfg);
 	const size_t n = log.scans.size();
 	out.scans.reserve(n), out.causal.reserve(n), out.latency.reserve(n), out.synchronous.reserve(n);
 	for (size_t t = 0; t < n; ++t)
@@ -51,7 +51,7 @@ OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::
 		LocalScan s = ex.extract(*log.scans[t].scan);
 		s.scanIndex = int64_t(t);
 		s.timestamp = log.scans[t].timestamp;
-		const OnlineStep st = slam.addScan(s, odometry[t]);
+		const online::OnlineStep st = slam.addScan(s, odometry[t]);
 		double bg = 0, bgCpu = 0;
 		if (slam.optimisationDue())
 		{

@@ -1,7 +1,8 @@
-// Sec. 5.4, Fig. 10: a corner (a wall and a door candidate meeting at a vertex) and a door (a
-// hinge and the leaf states seen).
+// Sec. 5.4, Fig. 10: a corner (a wall and a door candidate meeting at a vertex); the door is public
+// (gridvector/Door.h).
 #pragma once
 
+#include <gridvector/Door.h>
 #include <gridvector/GridVector.h>
 
 #include <mrpt/math/TPoint2D.h>
@@ -25,21 +26,5 @@ struct Corner
 	bool alongWall = false;  //!< the leaf continues or lies along the wall's line (a closed state)
 };
 
-/** A door: a hinge and the leaf states seen (Fig. 10). */
-struct Door
-{
-	mrpt::math::TPoint2D hinge;
-	double length = 0;  //!< mean leaf length [m]
-	std::vector<double> angles;  //!< leaf directions of the states, ascending [rad]
-	size_t wall = 0;  //!< index of the shared static vector
-	/** The wall's ends as detected (EmSlam cuts a wall where a state runs along it afterwards, and
-	 * Door::wall then indexes the first piece only). */
-	mrpt::math::TPoint2D wallStart, wallEnd;
-	std::vector<size_t> leaves;  //!< indices of the dynamic vectors
-	/** The closed leaf lies inside the door's wall, merged across the doorway (ClosedInWall):
-	 * direction closedAngle. Not a state seen (not in angles). */
-	bool closedInWall = false;
-	double closedAngle = 0;
-};
 
 }  // namespace gridvector

@@ -38,7 +38,7 @@ void CGridVectorERD::printParams() const
 	params_.dumpToConsole();
 }
 
-const OnlineEmSlam& CGridVectorERD::online() const
+const online::OnlineEmSlam& CGridVectorERD::online() const
 {
 	if (!nrd_)
 		throw std::logic_error(
@@ -51,7 +51,7 @@ bool CGridVectorERD::updateState(mrpt::obs::CActionCollection::Ptr, mrpt::obs::C
 								 mrpt::obs::CObservation::Ptr)
 {
 	mrpt::system::CTimeLoggerEntry timer(this->m_time_logger, "updateState");
-	const OnlineEmSlam& slam = online();
+	const online::OnlineEmSlam& slam = online();
 	const size_t count = this->m_graph->nodeCount();
 	this->m_just_inserted_lc = false;
 	if (nrd_->stats().optimisations != seenOptimisations_)
@@ -67,7 +67,7 @@ bool CGridVectorERD::updateState(mrpt::obs::CActionCollection::Ptr, mrpt::obs::C
 // Eq. 22's registration edges: the graph gets the active ones, loses the rejected and the dropped ones.
 void CGridVectorERD::synchronise()
 {
-	const OnlineEmSlam& slam = online();
+	const online::OnlineEmSlam& slam = online();
 	const auto& cs = slam.constraints();
 	const size_t nodes = this->m_graph->nodeCount();
 	auto wanted = [&](const EdgeKey& key, const Constraint& c) { return !c.rejected && key.second < nodes; };

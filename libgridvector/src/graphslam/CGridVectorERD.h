@@ -61,7 +61,7 @@ class CGridVectorERD : public mrpt::graphslam::deciders::CEdgeRegistrationDecide
 
    private:
 	/** The node decider's OnlineEmSlam; throws if none is linked. */
-	const OnlineEmSlam& online() const;
+	const online::OnlineEmSlam& online() const;
 	struct Mirrored
 	{
 		graph_t::edges_map_t::iterator edge;  //!< in the graph's multimap (odometry edges share keys)

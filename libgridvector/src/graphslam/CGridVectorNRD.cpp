@@ -14,7 +14,7 @@ namespace gridvector::graphslam
 using mrpt::math::TPose2D;
 using mrpt::poses::CPose2D;
 
-CGridVectorNRD::CGridVectorNRD() : extractor_(cfg_.extraction, cfg_.grid), slam_(std::make_unique<OnlineEmSlam>(cfg_))
+CGridVectorNRD::CGridVectorNRD() : extractor_(cfg_.extraction, cfg_.grid), slam_(std::make_unique<online::OnlineEmSlam>(cfg_))
 {
 	this->initializeLoggers("CGridVectorNRD");
 	this->setMinLoggingLevel(mrpt::system::VerbosityLevel(params_.classVerbosity));
@@ -33,7 +33,7 @@ void CGridVectorNRD::loadOptions(const mrpt::config::CConfigFileBase& cfg, const
 	params_.load(cfg, sourceName);
 	cfg_ = loadRegistrationConfig(cfg, sourceName);
 	extractor_ = VectorExtractor(cfg_.extraction, cfg_.grid);
-	slam_ = std::make_unique<OnlineEmSlam>(cfg_);
+	slam_ = std::make_unique<online::OnlineEmSlam>(cfg_);
 	odometryOrigin_.reset();
 	last_ = {};
 	stats_ = {};
@@ -63,7 +63,7 @@ bool CGridVectorNRD::processScan(const mrpt::obs::CObservation2DRangeScan& scan)
 	s.timestamp = scan.timestamp == INVALID_TIMESTAMP ? 0.0 : mrpt::Clock::toDouble(scan.timestamp);
 	if (!odometryOrigin_) odometryOrigin_ = odometry_.pose();
 	last_ = slam_->addScan(s, (CPose2D(odometry_.pose()) - CPose2D(*odometryOrigin_)).asTPose());
-	const OnlineStep& st = last_;
+	const online::OnlineStep& st = last_;
 	stats_.registered += st.registered;
 	// the engine re-derives every node by Dijkstra after a step that registered one: back to the estimate
 	const bool optimised = optimiseIfDue();

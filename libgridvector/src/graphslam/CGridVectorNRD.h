@@ -67,9 +67,9 @@ class CGridVectorNRD : public mrpt::graphslam::deciders::CNodeRegistrationDecide
 	const NodeDeciderOptions& options() const { return params_; }
 	const GridVectorConfig& config() const { return cfg_; }
 	/** The online EM-SLAM behind the nodes (keyframe k is node k). */
-	const OnlineEmSlam& online() const { return *slam_; }
+	const online::OnlineEmSlam& online() const { return *slam_; }
 	/** What OnlineEmSlam::addScan did with the last scan (its keyframe's edges: CGridVectorERD's). */
-	const OnlineStep& lastStep() const { return last_; }
+	const online::OnlineStep& lastStep() const { return last_; }
 
    protected:
 	/** Did the last scan become a keyframe (beyond the first)? */
@@ -87,11 +87,11 @@ class CGridVectorNRD : public mrpt::graphslam::deciders::CNodeRegistrationDecide
 	NodeDeciderOptions params_;
 	GridVectorConfig cfg_;
 	VectorExtractor extractor_;
-	std::unique_ptr<OnlineEmSlam> slam_;
+	std::unique_ptr<online::OnlineEmSlam> slam_;
 	OdometryTracker odometry_;
 	std::optional<mrpt::math::TPose2D> odometryOrigin_;  //!< odometry of the first scan: the graph's origin
 	bool newKeyframe_ = false;
-	OnlineStep last_;
+	online::OnlineStep last_;
 	Stats stats_;
 };
 

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <limits>
 
-namespace gridvector
+namespace gridvector::online
 {
 using mrpt::math::TPose2D;
 
@@ -266,4 +266,4 @@ mrpt::maps::COccupancyGridMap2D OnlineEmSlam::occupancyGrid() const
 	return OccupancyConversion::toOccupancyGrid(vectors(), cfg_.occupancy, cfg_.grid);
 }
 
-}  // namespace gridvector
+}  // namespace gridvector::online

@@ -20,7 +20,7 @@
 #include <memory>
 #include <vector>
 
-namespace gridvector
+namespace gridvector::online
 {
 /** What one OnlineEmSlam::addScan did. */
 struct OnlineStep
@@ -159,4 +159,4 @@ class OnlineEmSlam
 	Poses liveAt_, nextAt_;  //!< the keyframe poses each was built at
 };
 
-}  // namespace gridvector
+}  // namespace gridvector::online

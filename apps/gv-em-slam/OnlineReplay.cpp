@@ -37,7 +37,8 @@ double quantileMs(std::vector<double> v, double q)
 }  // namespace
 
 OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::TPose2D>& odometry,
-						  const VectorExtractor& ex, const GridVectorConfig& cfg, io::Progress& progress)
+						  const VectorExtractor& ex, const GridVectorConfig& cfg, io::Progress& progress,
+						  bool keepVectors)
 {
 	OnlineReplay out;
 	online::OnlineEmSlam slam(cfg);
@@ -69,6 +70,8 @@ OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::
 		out.causal.push_back(st.pose);
 		out.loopScans += st.loops > 0;
 		out.registeredScans += st.registered;
+		out.localVectors += s.vectors.size();
+		if (!keepVectors) std::vector<GridVector>().swap(s.vectors);  // OnlineEmSlam copied a keyframe's; the self-check needs sensorOrigin only
 		out.scans.push_back(std::move(s));
 	}
 	progress.done();

@@ -16,7 +16,11 @@ namespace gridvector::app
 {
 struct OnlineReplay
 {
-	std::vector<LocalScan> scans;  //!< V_t of every scan (for the self-check and --refine)
+	/** Every scan's LocalScan for the self-check (sensorOrigin) and, with `keepVectors`, --refine (V_t);
+	 * without, no vectors: OnlineEmSlam keeps the keyframes' own, and a copy of every scan's would be the
+	 * run's largest allocation growing with scans (doc/benchmarks.md, "session 16 measurements"). */
+	std::vector<LocalScan> scans;
+	size_t localVectors = 0;  //!< sum of |V_t| over the scans
 	std::vector<mrpt::math::TPose2D> causal;  //!< x_t as known when scan t came in (trajectory_online.txt)
 	/** Per scan [s]: vector extraction, OnlineEmSlam::addScan and, where an optimisation was due, its
 	 * take and apply (the robot's thread). */
@@ -34,9 +38,11 @@ struct OnlineReplay
 
 /** Every scan extracted (Sec. 3.1) and given to OnlineEmSlam with its odometry, timed; then finish(),
  * the final map (OnlineEmSlam::finalMap: the batch's, at the online trajectory), doors (Sec. 5.4:
- * leaves dynamic) and the final trajectory in `result`. */
+ * leaves dynamic) and the final trajectory in `result`. `keepVectors`: `scans` keeps every V_t (for
+ * --refine's batch EM). */
 OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::TPose2D>& odometry,
-						  const VectorExtractor& ex, const GridVectorConfig& cfg, io::Progress& progress);
+						  const VectorExtractor& ex, const GridVectorConfig& cfg, io::Progress& progress,
+						  bool keepVectors);
 
 /** report.json's "online" object: latency (median, p99, max in ms, wall clock and thread CPU time),
  * the background optimisations (count, median, max in ms) and both summed per scan, keyframes, edges,

@@ -193,7 +193,7 @@ int run(const io::ArgParser& args)
 	app::OnlineReplay replay;
 	if (online)
 	{
-		replay = app::replayOnline(log, odo, ex, cfg, progress);
+		replay = app::replayOnline(log, odo, ex, cfg, progress, args.has("refine"));
 		scans = std::move(replay.scans);
 		if (!quiet)
 		{
@@ -201,7 +201,9 @@ int run(const io::ArgParser& args)
 			std::fprintf(stderr, "online: %s\n", j.c_str());
 		}
 	}
-	for (const auto& s : scans) fig.localVectors += s.vectors.size();
+	if (online) fig.localVectors = replay.localVectors;
+	else
+		for (const auto& s : scans) fig.localVectors += s.vectors.size();
 	const bool batch = !online || args.has("refine");
 	EmResult res = online ? std::move(replay.result) : EmResult{};
 	if (batch)

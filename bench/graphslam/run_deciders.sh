@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# gv-graphslam (MRPT's graphslam-engine, CLevMarqGSO) with the grid-vector deciders and with MRPT's
-# ICP deciders, same .ini, same rawlog, same run, one core; scored with evaltraj.py.
+# gv-graphslam (MRPT's graphslam-engine) with the grid-vector deciders (CEmptyGSO, the default) and with
+# MRPT's ICP deciders (CLevMarqGSO), same .ini, same rawlog, same run, one core; scored with evaltraj.py.
 #
 #   bench/graphslam/run_deciders.sh OUTDIR [LOGS] [SEEDS]
 #   LOGS: names of ../shared/data/NAME-corrected.log.gz (default: all eight); SEEDS default "1"
@@ -23,11 +23,12 @@ for L in $LOGS; do
 		[ -s "$B.log" ] || python3 "$SHARED/bench/mkbench.py" "$SHARED/data/$L-corrected.log.gz" "$B" --seed "$S" > /dev/null
 		[ -s "$B.rawlog" ] || "$BIN/gv-carmen2rawlog" --quiet "$B.log" "$B.rawlog"
 		for sys in gv icp; do
-			if [ $sys = gv ]; then n=CGridVectorNRD e=CGridVectorERD; else n=CICPCriteriaNRD e=CICPCriteriaERD; fi
+			# gv-graphslam's default optimizer: CEmptyGSO with the grid-vector deciders, CLevMarqGSO with MRPT's
+			if [ $sys = gv ]; then n=CGridVectorNRD e=CGridVectorERD o=CEmptyGSO; else n=CICPCriteriaNRD e=CICPCriteriaERD o=CLevMarqGSO; fi
 			D=$B.$sys
 			if [ ! -s "$D/trajectory.txt" ]; then
 				/usr/bin/time -f "%U" -o "$D.time" taskset -c "$CORE" "$BIN/gv-graphslam" --2d -i "$INI" -r "$B.rawlog" \
-					--disable-visuals -n $n -e $e -o CLevMarqGSO --output-dir "$D" --quiet || echo "failed" > "$D.time"
+					--disable-visuals -n $n -e $e -o $o --output-dir "$D" --quiet || echo "failed" > "$D.time"
 			fi
 			r=$(python3 "$SHARED/bench/evaltraj.py" "$D/trajectory.txt" "$B.ref.txt" 2> /dev/null || true)
 			get() { sed -n "s/.*$1=\([^ ]*\).*/\1/p" <<< "$r"; }

@@ -53,4 +53,17 @@ awk '/^On a robot/ { on = 1 } on && /^```cpp$/ { code = 1; next } code && /^```$
 } > "$work/snippet.cpp"
 c++ -std=c++17 -fsyntax-only -I"$work/prefix/include" $(find /usr/include/mrpt -maxdepth 2 -name include -type d -printf '-isystem %p ') \
     -isystem /usr/include/eigen3 "$work/snippet.cpp" || { echo "the README's embedding snippet does not compile"; exit 1; }
-echo "install_consumer: OK (README snippet compiles)"
+# ... and so does its online EM-SLAM snippet (gridvector/OnlineEmSlam.h); `scan`, `odometryPose`, `use` the reader's
+awk '/gridvector\/OnlineEmSlam.h`, installed/ { on = 1 } on && /^```cpp$/ { code = 1; next } code && /^```$/ { exit } code { print }' \
+  "$GV_SOURCE_DIR/README.md" > "$work/online.txt"
+grep -q 'OnlineEmSlam' "$work/online.txt" || { echo "README: no OnlineEmSlam C++ block"; exit 1; }
+{
+  grep '^#include' "$work/online.txt"
+  echo 'template <class... T> void use(const T&...) {}'
+  echo 'void robot(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& odometryPose) {'
+  grep -v '^#include' "$work/online.txt"
+  echo 'use(step, grid); }'
+} > "$work/online.cpp"
+c++ -std=c++17 -fsyntax-only -I"$work/prefix/include" $(find /usr/include/mrpt -maxdepth 2 -name include -type d -printf '-isystem %p ') \
+    -isystem /usr/include/eigen3 "$work/online.cpp" || { echo "the README's OnlineEmSlam snippet does not compile"; exit 1; }
+echo "install_consumer: OK (README snippets compile)"

@@ -18,7 +18,7 @@
 #include <set>
 
 #include "graphslam_ini_files.h"
-#include "test_scans.h"
+#include "room_loop.h"
 
 using namespace gridvector::graphslam;
 using gridvector::online::OnlineEmSlam;
@@ -29,20 +29,9 @@ namespace
 {
 mrpt::config::CConfigFileMemory ini(const std::string& text) { return mrpt::config::CConfigFileMemory(text); }
 
-// A room with some clutter: enough wall directions for vector matching.
-std::vector<gvtest::Seg> world()
-{
-	auto w = gvtest::room(-6, -4, 6, 4);
-	w.push_back({-2, -4, -2, -1.5});
-	w.push_back({2, 4, 2, 1.0});
-	w.push_back({3.5, -2, 5, -2});
-	w.push_back({-5, 2, -3.5, 2});
-	return w;
-}
-
 mrpt::obs::CObservation::Ptr scanAt(const TPose2D& truth)
 {
-	auto s = mrpt::obs::CObservation2DRangeScan::Create(gvtest::castScan(truth, world(), {}, 361, M_PI, 20));
+	auto s = mrpt::obs::CObservation2DRangeScan::Create(gvtest::castScan(truth, gvtest::clutteredRoom(), {}, 361, M_PI, 20));
 	return s;
 }
 
@@ -326,21 +315,9 @@ TEST(graphslam_deciders, nodes_are_the_online_keyframes_and_the_graph_is_eq22s)
 // (what gv-graphslam and CLevMarqGSO run) is the online EM-SLAM's trajectory.
 TEST(graphslam_deciders, a_loop_closes_and_mrpts_optimiser_keeps_the_online_optimum)
 {
-	std::vector<TPose2D> truth, odometry;
-	TPose2D t(-1.5, -1, 0), o = t;  // clear of the clutter
-	for (int lap = 0; lap < 2; ++lap)
-		for (int side = 0; side < 4; ++side)
-		{
-			const int steps = side % 2 == 0 ? 15 : 10;  // 3 m by 2 m
-			for (int i = 0; i < steps + 8; ++i)
-			{
-				const TPose2D step = i < steps ? TPose2D(0.2, 0, 0) : TPose2D(0, 0, M_PI / 16);
-				t = (CPose2D(t) + CPose2D(step)).asTPose();
-				o = (CPose2D(o) + CPose2D(step.x * 1.02, 0, step.phi * 1.03 + 0.002)).asTPose();
-				truth.push_back(t);
-				odometry.push_back(o);
-			}
-		}
+	const gvtest::RoomLoop loop;
+	const auto& truth = loop.truth;
+	const auto& odometry = loop.odometry;
 	mrpt::graphs::CNetworkOfPoses2DInf graph;
 	CGridVectorNRD nrd;
 	CGridVectorERD erd;

@@ -4,7 +4,7 @@
 
 #include "online/OnlineEmSlam.h"
 #include "extraction/VectorExtractor.h"
-#include "test_scans.h"
+#include "room_loop.h"
 
 #include <gtest/gtest.h>
 #include <mrpt/poses/CPose2D.h>
@@ -19,39 +19,6 @@ using mrpt::poses::CPose2D;
 
 namespace
 {
-// A room with clutter, two laps of a 3 m by 2 m loop; odometry with scale and heading bias.
-std::vector<gvtest::Seg> world()
-{
-	auto w = gvtest::room(-6, -4, 6, 4);
-	w.push_back({-2, -4, -2, -1.5});
-	w.push_back({2, 4, 2, 1.0});
-	w.push_back({3.5, -2, 5, -2});
-	w.push_back({-5, 2, -3.5, 2});
-	return w;
-}
-
-struct Loop
-{
-	std::vector<TPose2D> truth, odometry;
-	Loop()
-	{
-		TPose2D t(-1.5, -1, 0), o = t;
-		for (int lap = 0; lap < 2; ++lap)
-			for (int side = 0; side < 4; ++side)
-			{
-				const int steps = side % 2 == 0 ? 15 : 10;
-				for (int i = 0; i < steps + 8; ++i)
-				{
-					const TPose2D step = i < steps ? TPose2D(0.2, 0, 0) : TPose2D(0, 0, M_PI / 16);
-					t = (CPose2D(t) + CPose2D(step)).asTPose();
-					o = (CPose2D(o) + CPose2D(step.x * 1.02, 0, step.phi * 1.03 + 0.002)).asTPose();
-					truth.push_back(t);
-					odometry.push_back(o);
-				}
-			}
-	}
-};
-
 double worstError(const std::vector<TPose2D>& est, const std::vector<TPose2D>& truth)
 {
 	double worst = 0;
@@ -68,7 +35,7 @@ double worstError(const std::vector<TPose2D>& est, const std::vector<TPose2D>& t
 // same extracted vectors, and the same final trajectory.
 TEST(OnlineEmSlamApi, SameResultsAsTheImplementation)
 {
-	const Loop d;
+	const gvtest::RoomLoop d;
 	gridvector::OnlineEmSlam api;
 	const GridVectorConfig cfg;
 	gridvector::online::OnlineEmSlam core(cfg);
@@ -76,7 +43,7 @@ TEST(OnlineEmSlamApi, SameResultsAsTheImplementation)
 	size_t keyframes = 0;
 	for (size_t t = 0; t < d.truth.size(); ++t)
 	{
-		const auto scan = gvtest::castScan(d.truth[t], world());
+		const auto scan = gvtest::castScan(d.truth[t], gvtest::clutteredRoom());
 		const auto a = api.addScan(scan, d.odometry[t]);
 		gridvector::LocalScan s = ex.extract(scan);
 		s.scanIndex = int64_t(t);
@@ -105,14 +72,14 @@ TEST(OnlineEmSlamApi, SameResultsAsTheImplementation)
 // answered, the room's walls static and no door in it.
 TEST(OnlineEmSlamApi, OptimisationOnABackgroundThread)
 {
-	const Loop d;
+	const gvtest::RoomLoop d;
 	gridvector::OnlineEmSlam slam;
 	std::future<void> running;
 	std::optional<gridvector::OnlineEmSlam::Optimisation> job;
 	size_t keyframes = 0;
 	for (size_t t = 0; t < d.truth.size(); ++t)
 	{
-		const auto st = slam.addScan(gvtest::castScan(d.truth[t], world()), d.odometry[t]);
+		const auto st = slam.addScan(gvtest::castScan(d.truth[t], gvtest::clutteredRoom()), d.odometry[t]);
 		keyframes += st.keyframe;
 		EXPECT_EQ(slam.currentPose(), st.pose);
 		if (running.valid() && running.wait_for(std::chrono::seconds(0)) == std::future_status::ready)

@@ -37,33 +37,26 @@ cmake -S "$GV_SOURCE_DIR/doc/examples/ini-consumer" -B "$work/ini-consumer" -DCM
 cmake --build "$work/ini-consumer" > "$work/ibuild.log" || { tail -30 "$work/ibuild.log"; exit 1; }
 LD_LIBRARY_PATH="$work/prefix/lib" "$work/ini-consumer/gv-ini-consumer" | tee "$work/iout.txt"
 grep -q "^1 map(s): mrpt::maps::CGridVectorMap" "$work/iout.txt"
-# The README's embedding snippet ("On a robot") compiles as shown against the install: its own
-# #include lines and nothing else of ours; `scan`, `robotPose3D` and `use` are the reader's.
-awk '/^On a robot/ { on = 1 } on && /^```cpp$/ { code = 1; next } code && /^```$/ { exit } code { print }' \
-  "$GV_SOURCE_DIR/README.md" > "$work/snippet.txt"
-[ -s "$work/snippet.txt" ] || { echo "README: no C++ block after 'On a robot'"; exit 1; }
-{
-  grep '^#include' "$work/snippet.txt"
-  echo '#include <mrpt/obs/CObservation2DRangeScan.h>'
-  echo '#include <mrpt/poses/CPose3D.h>'
-  echo 'template <class... T> void use(const T&...) {}'
-  echo 'void embed(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose3D& robotPose3D) {'
-  grep -v '^#include' "$work/snippet.txt"
-  echo '}'
-} > "$work/snippet.cpp"
-c++ -std=c++17 -fsyntax-only -I"$work/prefix/include" $(find /usr/include/mrpt -maxdepth 2 -name include -type d -printf '-isystem %p ') \
-    -isystem /usr/include/eigen3 "$work/snippet.cpp" || { echo "the README's embedding snippet does not compile"; exit 1; }
-# ... and so does its online EM-SLAM snippet (gridvector/OnlineEmSlam.h); `scan`, `odometryPose`, `use` the reader's
-awk '/gridvector\/OnlineEmSlam.h`, installed/ { on = 1 } on && /^```cpp$/ { code = 1; next } code && /^```$/ { exit } code { print }' \
-  "$GV_SOURCE_DIR/README.md" > "$work/online.txt"
-grep -q 'OnlineEmSlam' "$work/online.txt" || { echo "README: no OnlineEmSlam C++ block"; exit 1; }
-{
-  grep '^#include' "$work/online.txt"
-  echo 'template <class... T> void use(const T&...) {}'
-  echo 'void robot(const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& odometryPose) {'
-  grep -v '^#include' "$work/online.txt"
-  echo 'use(step, grid); }'
-} > "$work/online.cpp"
-c++ -std=c++17 -fsyntax-only -I"$work/prefix/include" $(find /usr/include/mrpt -maxdepth 2 -name include -type d -printf '-isystem %p ') \
-    -isystem /usr/include/eigen3 "$work/online.cpp" || { echo "the README's OnlineEmSlam snippet does not compile"; exit 1; }
+# The README's C++ snippets compile as shown against the install: their own #include lines and nothing
+# else of ours; the variables they use are the reader's, declared by the wrapper.
+# readme_snippet MARKER NAME 'SIGNATURE' [TAIL]: the first ```cpp block after the line matching MARKER
+readme_snippet() {
+  awk -v m="$1" '$0 ~ m { on = 1 } on && /^```cpp$/ { code = 1; next } code && /^```$/ { exit } code { print }' \
+    "$GV_SOURCE_DIR/README.md" > "$work/$2.txt"
+  [ -s "$work/$2.txt" ] || { echo "README: no C++ block after '$1'"; exit 1; }
+  {
+    grep '^#include' "$work/$2.txt"
+    echo '#include <mrpt/obs/CObservation2DRangeScan.h>'
+    echo '#include <mrpt/poses/CPose3D.h>'
+    echo 'template <class... T> void use(const T&...) {}'
+    echo "void $2($3) {"
+    grep -v '^#include' "$work/$2.txt"
+    echo "${4:-} }"
+  } > "$work/$2.cpp"
+  c++ -std=c++17 -fsyntax-only -I"$work/prefix/include" $(find /usr/include/mrpt -maxdepth 2 -name include -type d -printf '-isystem %p ') \
+      -isystem /usr/include/eigen3 "$work/$2.cpp" || { echo "the README's snippet after '$1' does not compile"; exit 1; }
+}
+readme_snippet '^On a robot' embed 'const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::poses::CPose3D& robotPose3D'
+readme_snippet 'gridvector/OnlineEmSlam.h`, installed' online \
+  'const mrpt::obs::CObservation2DRangeScan& scan, const mrpt::math::TPose2D& odometryPose' 'use(step, grid);'
 echo "install_consumer: OK (README snippets compile)"

@@ -10,10 +10,31 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <iomanip>
 
 namespace gridvector::app
 {
+bool writeEdgeDump(const std::string& path, const std::map<EdgeKey, Constraint>& edges, const std::vector<size_t>& key,
+				   const std::function<Eigen::Matrix3d(const Constraint&)>& information)
+{
+	std::FILE* f = std::fopen(path.c_str(), "w");
+	if (!f) return false;
+	std::fprintf(
+		f,
+		"# from to kind rejected dof degeneracy rms matched_length correspondences x y phi I00 I01 I02 I11 I12 I22\n");
+	for (const auto& [k, c] : edges)
+	{
+		const Eigen::Matrix3d I = information(c);
+		std::fprintf(f, "%zu %zu %s %d %d %.4g %.4g %.4g %zu %.6f %.6f %.6f %.6g %.6g %.6g %.6g %.6g %.6g\n",
+					 key[c.from], key[c.to], toString(c.kind), int(c.rejected), c.dof, c.degeneracy, c.rms,
+					 c.matchedLength, c.correspondences.size(), c.z.x, c.z.y, c.z.phi, I(0, 0), I(0, 1), I(0, 2),
+					 I(1, 1), I(1, 2), I(2, 2));
+	}
+	std::fclose(f);
+	return true;
+}
+
 void writeVectors(const std::string& path, const std::vector<GridVector>& vectors)
 {
 	io::writeFileAtomically(path, [&](std::ostream& o) {

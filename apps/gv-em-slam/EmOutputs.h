@@ -6,6 +6,8 @@
 #include "em/SelfCheck.h"
 #include "map/MemoryAccounting.h"
 
+#include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -22,6 +24,12 @@ void writeDoors(const std::string& path, const std::vector<Door>& doors);
  * diagnostics (bench/em-slam/door_evidence.py): `hinge_x hinge_y length angle_min angle_max states
  * | W x1 y1 x2 y2 | leaf indices into vectors.txt | A state directions in degrees`. */
 void writeDoorStates(const std::string& path, const std::vector<Door>& doors);
+/** Debugging aid (GV_EM_DEBUG_DIR, bench/em-slam/edge_errors.py): one registration edge a line in scan
+ * indices (`key`: each keyframe's scan): from to kind rejected dof degeneracy rms matched_length
+ * correspondences z.x z.y z.phi and the upper triangle of `information(c)`, the information the pose
+ * graph uses (I00 I01 I02 I11 I12 I22, in the frame of Eq. 21's error); false if it cannot be written. */
+bool writeEdgeDump(const std::string& path, const std::map<EdgeKey, Constraint>& edges, const std::vector<size_t>& key,
+				   const std::function<Eigen::Matrix3d(const Constraint&)>& information);
 /** mrpt::maps::CGridVectorMap holding `vectors`, gzip-serialised. */
 void writeGvmap(const std::string& path, const GridVectorConfig& cfg, const std::vector<GridVector>& vectors);
 

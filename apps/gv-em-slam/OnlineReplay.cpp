@@ -1,4 +1,5 @@
 #include "OnlineReplay.h"
+#include "EmOutputs.h"
 
 #include "doors/DoorDetector.h"
 #include "online/OnlineEmSlam.h"
@@ -8,6 +9,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <ctime>
 
 namespace gridvector::app
@@ -33,6 +35,16 @@ double quantileMs(std::vector<double> v, double q)
 	const size_t k = std::min(v.size() - 1, size_t(std::ceil(q * double(v.size()))) - (q > 0 ? 1 : 0));
 	std::nth_element(v.begin(), v.begin() + long(k), v.end());
 	return 1e3 * v[k];
+}
+
+// Debugging aid, as the batch's edges_<k>.txt (main.cpp): GV_EM_DEBUG_DIR=dir writes dir/online_edges_<stage>.txt,
+// the online graph's registration edges (writeEdgeDump, for bench/em-slam/edge_errors.py).
+void dumpEdges(const OnlineEmSlam& slam, const GridVectorConfig& cfg, const char* stage)
+{
+	const char* dir = std::getenv("GV_EM_DEBUG_DIR");
+	if (!dir) return;
+	writeEdgeDump(std::string(dir) + "/online_edges_" + stage + ".txt", slam.constraints(), slam.keyframes(),
+				  [&](const Constraint& c) { return graphInformation(c, cfg.mstep); });
 }
 }  // namespace
 
@@ -75,8 +87,10 @@ OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::
 		out.scans.push_back(std::move(s));
 	}
 	progress.done();
+	dumpEdges(slam, cfg, "before_finish");
 	const auto t0 = Clock::now();
 	slam.finish();
+	dumpEdges(slam, cfg, "final");
 	EmResult& res = out.result;
 	res.poses = slam.trajectory();
 	res.finalVectors = slam.finalMap();  // the live map's states: slam.vectors()

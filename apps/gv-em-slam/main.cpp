@@ -69,32 +69,19 @@ void dumpIteration(const io::LogData& log, const EmIteration& it, const std::vec
 	io::writeTrajectory(std::string(dir) + "/traj_" + std::to_string(it.index) + ".txt", tr);
 }
 
-// Debugging aid: GV_EM_DEBUG_DIR=dir also writes dir/edges_<iteration>.txt after each M-step, one
-// registration edge a line in scan indices: from to kind rejected dof degeneracy rms matched_length
-// correspondences z.x z.y z.phi and the upper triangle of the information the pose graph uses
-// (I00 I01 I02 I11 I12 I22, in the frame of Eq. 21's error); and dir/static_<iteration>.txt, per keyframe the
+// Debugging aid: GV_EM_DEBUG_DIR=dir also writes dir/edges_<iteration>.txt after each M-step, its
+// registration edges (writeEdgeDump; --online writes online_edges_before_finish.txt and
+// online_edges_final.txt, OnlineReplay.cpp); and dir/static_<iteration>.txt, per keyframe the
 // static vectors that M-step registered: scan count length.
 void dumpEdges(int iteration, const MStep& m, const std::vector<std::vector<MatchSegment>>& statics,
 			   const std::vector<size_t>& key)
 {
 	const char* dir = std::getenv("GV_EM_DEBUG_DIR");
 	if (!dir) return;
-	const std::string path = std::string(dir) + "/edges_" + std::to_string(iteration) + ".txt";
-	std::FILE* f = std::fopen(path.c_str(), "w");
-	if (!f) return;
-	std::fprintf(
-		f,
-		"# from to kind rejected dof degeneracy rms matched_length correspondences x y phi I00 I01 I02 I11 I12 I22\n");
-	for (const auto& [k, c] : m.constraints())
-	{
-		const Eigen::Matrix3d I = m.graphInformation(c);
-		std::fprintf(f, "%zu %zu %s %d %d %.4g %.4g %.4g %zu %.6f %.6f %.6f %.6g %.6g %.6g %.6g %.6g %.6g\n",
-					 key[c.from], key[c.to], toString(c.kind), int(c.rejected), c.dof, c.degeneracy, c.rms,
-					 c.matchedLength, c.correspondences.size(), c.z.x, c.z.y, c.z.phi, I(0, 0), I(0, 1), I(0, 2),
-					 I(1, 1), I(1, 2), I(2, 2));
-	}
-	std::fclose(f);
-	f = std::fopen((std::string(dir) + "/static_" + std::to_string(iteration) + ".txt").c_str(), "w");
+	if (!app::writeEdgeDump(std::string(dir) + "/edges_" + std::to_string(iteration) + ".txt", m.constraints(), key,
+					   [&](const Constraint& c) { return m.graphInformation(c); }))
+		return;
+	std::FILE* f = std::fopen((std::string(dir) + "/static_" + std::to_string(iteration) + ".txt").c_str(), "w");
 	if (!f) return;
 	for (size_t k = 0; k < statics.size() && k < key.size(); ++k)
 	{

@@ -4,7 +4,9 @@ registration edge of an M-step from the reference trajectory?
 
 usage: edge_errors.py EDGES.txt REF.txt [--chi2 C] [--scans A-B[,C-D]] [--all]
   EDGES.txt: gv-em-slam's GV_EM_DEBUG_DIR/edges_<iteration>.txt (scan indices, the information
-  the pose graph uses, in the frame of Eq. 21's error); REF.txt: mkbench's .ref.txt (t x y theta,
+  the pose graph uses, in the frame of Eq. 21's error), or with --online its
+  online_edges_before_finish.txt / online_edges_final.txt (OnlineEmSlam's graph before and after
+  finish(), same format); REF.txt: mkbench's .ref.txt (t x y theta,
   one line per scan). For each edge the error of its measurement z against the reference's
   relative pose, e = z^-1 (+) (ref_from^-1 (+) ref_to) (PoseGraph::error), its chi2 e^T I e (what
   the edge claims against what the reference says; 3 dof: 7.8 is the 95 % level, 11.3 the

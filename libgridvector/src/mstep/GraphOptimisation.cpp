@@ -14,7 +14,8 @@ Matrix3d graphInformation(const Constraint& c, const MStepOptions& opts)
 
 // Eq. 20-22: the odometry edges (u^t) and the active registrations of static vectors, Eq. 22 minimised.
 std::vector<EdgeKey> GraphOptimisation::optimise(Poses& poses, const Poses& odometry,
-												 std::map<EdgeKey, Constraint>& edges, MStepReport& rep, bool count)
+												 std::map<EdgeKey, Constraint>& edges, MStepReport& rep, bool count,
+												 bool graduate)
 {
 	graph_.setNodes(poses);
 	graph_.clearEdges();
@@ -45,7 +46,7 @@ std::vector<EdgeKey> GraphOptimisation::optimise(Poses& poses, const Poses& odom
 		graph_.addEdge(e);
 		byEdge.push_back(&c);
 	}
-	rep.optimisation = graph_.optimize();
+	rep.optimisation = graph_.optimize(graduate);
 	std::vector<EdgeKey> rejected;
 	for (size_t k = 0; k < byEdge.size(); ++k)
 		if (byEdge[k] && !graph_.edges()[k].active)

@@ -23,9 +23,10 @@ class GraphOptimisation
 	void beginStep() { ++steps_; }
 	/** Eq. 22 over the odometry edges and the active constraints; `poses` in: initial, out: optimised. Marks
 	 * and returns the edges the chi2 test rejected; `count`: they count towards mstep.reconsider_limit now
-	 * (else the caller counts them with countRejections if no optimisation follows in this M-step). */
+	 * (else the caller counts them with countRejections if no optimisation follows in this M-step);
+	 * `graduate`: PoseGraph::optimize's. */
 	std::vector<EdgeKey> optimise(Poses& poses, const Poses& odometry, std::map<EdgeKey, Constraint>& edges,
-								  MStepReport& rep, bool count = true);
+								  MStepReport& rep, bool count = true, bool graduate = false);
 	void countRejections(const std::vector<EdgeKey>& keys, const std::map<EdgeKey, Constraint>& edges);
 
 	const PoseGraph& graph() const { return graph_; }

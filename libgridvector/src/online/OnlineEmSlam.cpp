@@ -146,7 +146,7 @@ OnlineEmSlam::Optimisation OnlineEmSlam::takeOptimisation()
 void OnlineEmSlam::runOptimisation(Optimisation& job)
 {
 	optimiser_.beginStep();
-	optimiser_.optimise(job.poses, job.odometry, job.edges, job.report);
+	optimiser_.optimise(job.poses, job.odometry, job.edges, job.report, true, job.graduate);
 }
 
 // Eq. 22's trajectory for the keyframes it had; a keyframe added since follows the last of them
@@ -165,11 +165,25 @@ void OnlineEmSlam::applyOptimisation(const Optimisation& job)
 	if (!next_ && EmSlam::movedEnough(liveAt_, keyPose_)) next_ = std::make_unique<ClassifiedMap>(cfg_), nextAt_.clear();
 }
 
-void OnlineEmSlam::optimise()
+void OnlineEmSlam::optimise(bool graduate)
 {
 	Optimisation job = takeOptimisation();
+	job.graduate = graduate;
 	runOptimisation(job);
 	applyOptimisation(job);
+}
+
+// PoseGraph's rule for a loop-search edge (farLoop in optimizeGaussNewton), for the given edges still in the graph.
+bool OnlineEmSlam::farFromEstimate(const std::vector<EdgeKey>& keys) const
+{
+	const double trigger = cfg_.posegraph.graduationTrigger * cfg_.posegraph.robustKernelWidth;
+	return std::any_of(keys.begin(), keys.end(), [&](const EdgeKey& k) {
+		const auto it = book_.edges.find(k);
+		if (it == book_.edges.end() || it->second.rejected) return false;
+		const Constraint& c = it->second;
+		const Eigen::Vector3d e = PoseGraph::error(keyPose_[c.from], keyPose_[c.to], c.z);
+		return e.dot(graphInformation(c, cfg_.mstep) * e) > trigger;
+	});
 }
 
 size_t OnlineEmSlam::reanchor(size_t n)
@@ -203,7 +217,7 @@ void OnlineEmSlam::finish()
 		auto fresh = overlaps_.add(segs_, keyPose_, rep_);
 		const bool deferred = loopClosure_.closeLoops(segs_, keyPose_, fresh, rep_);
 		if (fresh.empty() && !deferred) break;
-		optimise();
+		optimise(farFromEstimate(fresh));
 	}
 	while (next_) reanchor(std::numeric_limits<size_t>::max());
 }

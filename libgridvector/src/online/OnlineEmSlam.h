@@ -72,7 +72,11 @@ class OnlineEmSlam
 	/** One scan: `scan` in the robot frame, `odometry` the dead-reckoning pose it was taken at. */
 	OnlineStep addScan(const LocalScan& scan, const mrpt::math::TPose2D& odometry);
 	/** End of the run: a last optimisation, the batch M-step's edge search over the whole trajectory
-	 * and Eq. 22 again (kClosingRounds), and the map re-anchored to the result at once. */
+	 * and Eq. 22 again (kClosingRounds), and the map re-anchored to the result at once. The search's
+	 * edges join passes the run left unlinked, so they are loop closures: where one is far from the
+	 * estimate (farFromEstimate), Eq. 22 graduates its kernel as for a far loop-search edge (else the
+	 * kernel at its final width down-weights and the chi2 test rejects every edge of the place, and
+	 * the drift the run left there stays). */
 	void finish();
 
 	/** Eq. 22 over a copy of the graph, made by takeOptimisation(), solved by runOptimisation(). */
@@ -81,6 +85,7 @@ class OnlineEmSlam
 		Poses poses, odometry;  //!< keyframes when taken; poses: out the optimised ones
 		std::map<EdgeKey, Constraint> edges;
 		MStepReport report;
+		bool graduate = false;  //!< the robust kernel starts wide (PoseGraph::optimize): finish()'s, see there
 	};
 	/** Is an optimisation due (a loop edge since the last one was taken)? */
 	bool optimisationDue() const { return due_; }
@@ -130,8 +135,11 @@ class OnlineEmSlam
 								bool& registered) const;
 	/** A new keyframe's edges (sequential, overlap, loop), those kept into `st` (edges, loops). */
 	void addEdges(uint32_t i, OnlineStep& st);
-	/** takeOptimisation, runOptimisation, applyOptimisation in turn. */
-	void optimise();
+	/** takeOptimisation, runOptimisation, applyOptimisation in turn (`graduate`: Optimisation's). */
+	void optimise(bool graduate = false);
+	/** Does one of these edges need a correction of the estimate that makes PoseGraph graduate its
+	 * kernel for a loop-search edge (chi2 at keyPose_ above posegraph.graduation_trigger x Phi)? */
+	bool farFromEstimate(const std::vector<EdgeKey>& keys) const;
 	/** Up to `n` keyframes into the map being re-anchored; swaps it in when it has caught up. */
 	size_t reanchor(size_t n);
 

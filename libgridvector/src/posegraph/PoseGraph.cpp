@@ -145,11 +145,11 @@ size_t PoseGraph::rejectOutliers()
 }
 
 // Eq. 22 (robust kernel and chi2 rejection beyond the paper) by Levenberg-Marquardt, in place of Eq. 23.
-OptimizeStats PoseGraph::optimize()
+OptimizeStats PoseGraph::optimize(bool graduate)
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	phi_ = opts_.robustKernelWidth;
-	OptimizeStats st = optimizeGaussNewton();
+	OptimizeStats st = optimizeGaussNewton(graduate);
 	// Iterative edge rejection by chi2, then re-optimisation from the robust solution.
 	for (int round = 0; round < opts_.rejectRounds; ++round)
 	{
@@ -170,7 +170,7 @@ OptimizeStats PoseGraph::optimize()
 // Sparse Levenberg-Marquardt on Eq. 22 with x_0 fixed; H assembled from 3x3 blocks.
 // Graduated robustness: the DCS width Phi shrinks from wide (almost least squares)
 // to robust_kernel_width, so a poor start does not switch off correct edges.
-OptimizeStats PoseGraph::optimizeGaussNewton()
+OptimizeStats PoseGraph::optimizeGaussNewton(bool graduate)
 {
 	OptimizeStats st;
 	bool first = true;
@@ -194,7 +194,7 @@ OptimizeStats PoseGraph::optimizeGaussNewton()
 		std::nth_element(chi.begin(), k, chi.end());
 		pct = *k;
 	}
-	const double phi0 = pct < trigger && !farLoop ? target : std::max(target, opts_.graduationStartPhi);
+	const double phi0 = pct < trigger && !farLoop && !graduate ? target : std::max(target, opts_.graduationStartPhi);
 	for (double phi = phi0;; phi = std::max(target, phi * opts_.graduationFactor))
 	{
 		phi_ = phi;

@@ -69,7 +69,9 @@ class PoseGraph
 	std::vector<PoseEdge>& edges() { return edges_; }
 	const std::vector<PoseEdge>& edges() const { return edges_; }
 
-	OptimizeStats optimize();
+	/** Eq. 22. `graduate`: the robust kernel starts wide (graduation_start_phi) whatever the start's fit,
+	 * as for a loop-search edge far from it (for a caller whose new edges join places the start misplaces). */
+	OptimizeStats optimize(bool graduate = false);
 
 	/** e = z^-1 (+) (x_from^-1 (+) x_to), angle wrapped (Eq. 21's f - delta). */
 	static Eigen::Vector3d error(const mrpt::math::TPose2D& xi, const mrpt::math::TPose2D& xj,
@@ -91,7 +93,7 @@ class PoseGraph
 	static std::array<double, 4> levelsByDof(double level3);
 
    private:
-	OptimizeStats optimizeGaussNewton();
+	OptimizeStats optimizeGaussNewton(bool graduate);
 	OptimizeStats levenbergMarquardt(int maxIterations, double minRelativeDecrease);
 	double updateResiduals(const std::vector<mrpt::math::TPose2D>& x, bool robust);
 	size_t rejectOutliers();

@@ -72,6 +72,7 @@ OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::
 		out.scans.push_back(std::move(s));
 	}
 	progress.done();
+	out.live = slam.vectors();
 	const auto t0 = Clock::now();
 	slam.finish();
 	EmResult& res = out.result;

@@ -222,18 +222,23 @@ std::vector<TPose2D> OnlineEmSlam::trajectory() const
 	return out;
 }
 
+// Sec. 4.1 and Eq. 4 as the batch's final map: the live E-step's children split at the final
+// threshold and merged per state (SplitMap::of); static then dynamic, ids 1..n.
 std::vector<GridVector> OnlineEmSlam::vectors() const
 {
-	std::vector<GridVector> all = live_->children();
-	std::stable_partition(all.begin(), all.end(), [](const GridVector& v) { return v.state == VectorState::Static; });
-	for (size_t k = 0; k < all.size(); ++k) all[k].id = k + 1;  // unique across both maps
-	return all;
+	const EStep estep(cfg_.estep, cfg_.grid);
+	std::vector<GridVector> out = SplitMap::of(live_->children(), estep, cfg_).vectors;
+	for (size_t k = 0; k < out.size(); ++k) out[k].id = k + 1;  // unique across both maps
+	return out;
 }
 
-// Sec. 4.1 and Eq. 4 as the batch's last E-step and final map, at the online trajectory.
+// The batch's last E-step at the online trajectory: the live map's own when it was built at those
+// poses (ClassifiedMap holds buildPerScan's vectors and the E-step on them), else Eq. 8 recomputed.
 std::vector<GridVector> OnlineEmSlam::finalMap() const
 {
 	if (keyScans_.empty()) return {};
+	const auto same = [](const TPose2D& a, const TPose2D& b) { return a.x == b.x && a.y == b.y && a.phi == b.phi; };
+	if (!next_ && std::equal(liveAt_.begin(), liveAt_.end(), keyPose_.begin(), keyPose_.end(), same)) return vectors();
 	const EStep estep(cfg_.estep, cfg_.grid);
 	const EStepResult e = estep.run(GlobalMap::buildPerScan(keyPose_, keyScans_, cfg_));
 	std::vector<GridVector> out = SplitMap::of(e.children, estep, cfg_).vectors;
@@ -243,17 +248,17 @@ std::vector<GridVector> OnlineEmSlam::finalMap() const
 
 std::vector<GridVector> OnlineEmSlam::staticMap() const
 {
-	std::vector<GridVector> out;
-	for (auto& v : live_->children())
-		if (v.state == VectorState::Static) out.push_back(std::move(v));
+	std::vector<GridVector> out = vectors();
+	out.erase(std::remove_if(out.begin(), out.end(), [](const GridVector& v) { return v.state != VectorState::Static; }),
+			  out.end());
 	return out;
 }
 
 std::vector<GridVector> OnlineEmSlam::dynamicVectors() const
 {
-	std::vector<GridVector> out;
-	for (auto& v : live_->children())
-		if (v.state == VectorState::Dynamic) out.push_back(std::move(v));
+	std::vector<GridVector> out = vectors();
+	out.erase(std::remove_if(out.begin(), out.end(), [](const GridVector& v) { return v.state != VectorState::Dynamic; }),
+			  out.end());
 	return out;
 }
 

@@ -1,6 +1,5 @@
 #include "OnlineReplay.h"
 
-#include "doors/DoorDetector.h"
 #include "online/OnlineEmSlam.h"
 
 #include <nlohmann/json.hpp>
@@ -77,15 +76,10 @@ OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::
 	slam.finish();
 	EmResult& res = out.result;
 	res.poses = slam.trajectory();
-	res.finalVectors = slam.finalMap();  // the live map's states: slam.vectors()
+	res.finalVectors = slam.finalMap(&res.doors);  // Sec. 5.4's doors in it (timed with the final map)
 	res.keyframes = slam.keyframes().size();
 	res.converged = true;  // no EM iterations to converge: the self-check judges the graph and the map
 	res.finalGraph = poseGraphFit(slam.graph());
-	const auto td = Clock::now();
-	res.doors = DoorDetector(cfg.doors).detect(res.finalVectors);  // Sec. 5.4: a leaf state is dynamic
-	for (const Door& d : res.doors)
-		for (size_t leaf : d.leaves) res.finalVectors[leaf].state = VectorState::Dynamic;
-	res.doorSeconds = since(td);
 	res.finalMapSeconds = out.finishSeconds = since(t0);
 	out.report = slam.report();
 	return out;

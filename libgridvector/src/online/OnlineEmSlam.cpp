@@ -1,4 +1,5 @@
 #include "online/OnlineEmSlam.h"
+#include "doors/DoorDetector.h"
 #include "doors/DoorExclusion.h"
 #include "em/EmSlam.h"
 #include "map/OccupancyConversion.h"
@@ -222,28 +223,36 @@ std::vector<TPose2D> OnlineEmSlam::trajectory() const
 	return out;
 }
 
-// Sec. 4.1 and Eq. 4 as the batch's final map: the live E-step's children split at the final
-// threshold and merged per state (SplitMap::of); static then dynamic, ids 1..n.
-std::vector<GridVector> OnlineEmSlam::vectors() const
+namespace
 {
-	const EStep estep(cfg_.estep, cfg_.grid);
-	std::vector<GridVector> out = SplitMap::of(live_->children(), estep, cfg_).vectors;
+// Sec. 4.1 and Eq. 4 as the batch's final map from E-step children, then Sec. 5.4 as the batch's
+// (EmSlam::doorStates: leaf states dynamic, walls cut across them).
+std::vector<GridVector> mapOf(const std::vector<GridVector>& children, const GridVectorConfig& cfg,
+							  std::vector<Door>* doorsOut)
+{
+	const EStep estep(cfg.estep, cfg.grid);
+	std::vector<GridVector> out = SplitMap::of(children, estep, cfg).vectors;
 	for (size_t k = 0; k < out.size(); ++k) out[k].id = k + 1;  // unique across both maps
+	std::vector<Door> doors = EmSlam::doorStates(out, estep, cfg.doors);
+	if (doorsOut) *doorsOut = std::move(doors);
 	return out;
 }
+}  // namespace
 
-// The batch's last E-step at the online trajectory: the live map's own when it was built at those
-// poses (ClassifiedMap holds buildPerScan's vectors and the E-step on them), else Eq. 8 recomputed.
-std::vector<GridVector> OnlineEmSlam::finalMap() const
+std::vector<GridVector> OnlineEmSlam::vectors(std::vector<Door>* doors) const { return mapOf(live_->children(), cfg_, doors); }
+
+std::vector<GridVector> OnlineEmSlam::finalMap(std::vector<Door>* doors) const
 {
-	if (keyScans_.empty()) return {};
+	if (keyScans_.empty())
+	{
+		if (doors) doors->clear();
+		return {};
+	}
 	const auto same = [](const TPose2D& a, const TPose2D& b) { return a.x == b.x && a.y == b.y && a.phi == b.phi; };
-	if (!next_ && std::equal(liveAt_.begin(), liveAt_.end(), keyPose_.begin(), keyPose_.end(), same)) return vectors();
+	if (!next_ && std::equal(liveAt_.begin(), liveAt_.end(), keyPose_.begin(), keyPose_.end(), same))
+		return vectors(doors);
 	const EStep estep(cfg_.estep, cfg_.grid);
-	const EStepResult e = estep.run(GlobalMap::buildPerScan(keyPose_, keyScans_, cfg_));
-	std::vector<GridVector> out = SplitMap::of(e.children, estep, cfg_).vectors;
-	for (size_t k = 0; k < out.size(); ++k) out[k].id = k + 1;  // unique across both maps
-	return out;
+	return mapOf(estep.run(GlobalMap::buildPerScan(keyPose_, keyScans_, cfg_)).children, cfg_, doors);
 }
 
 std::vector<GridVector> OnlineEmSlam::staticMap() const

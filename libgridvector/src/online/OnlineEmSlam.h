@@ -2,6 +2,7 @@
 // objects and the most likely map while walking through the environment": EM-SLAM scan by scan.
 #pragma once
 
+#include "doors/Door.h"
 #include "mstep/ConstraintSet.h"
 #include "mstep/GraphOptimisation.h"
 #include "mstep/LoopClosure.h"
@@ -100,17 +101,19 @@ class OnlineEmSlam
 	/** Scan index of every keyframe. */
 	const std::vector<size_t>& keyframes() const { return keyScan_; }
 
-	/** The map with every vector's state (Eq. 14) as of the last scan that touched it. */
+	/** The map with every keyframe's vectors and their state (Eq. 14) as the batch E-step has them
+	 * after the scans so far (ClassifiedMap: stateOf() per vector, at once). */
 	const ClassifiedMap& map() const { return *live_; }
-	/** The map's vectors split into their children, state set: static, then dynamic (Eq. 14). */
-	std::vector<GridVector> vectors() const;
+	/** The batch's final map from the live E-step, at any time (O(map): a query, not per scan): the
+	 * children split at the final threshold and merged per state (SplitMap::of), then Sec. 5.4's doors
+	 * (EmSlam::doorStates: leaf states dynamic, a wall cut across a state), as the batch; static then
+	 * dynamic. `doors`: the doors found. */
+	std::vector<GridVector> vectors(std::vector<Door>* doors = nullptr) const;
 	std::vector<GridVector> staticMap() const;
 	std::vector<GridVector> dynamicVectors() const;
-	/** The batch's final map at the current trajectory, for the end of a run (O(map), not per scan):
-	 * Eq. 8's full product over the keyframes (GlobalMap::buildPerScan), Eq. 14-15 on it
-	 * (EStep::run), the final split and the Eq. 4 merges per state (SplitMap::of); static then
-	 * dynamic, ids 1..n. */
-	std::vector<GridVector> finalMap() const;
+	/** vectors() at the current trajectory, for the end of a run: the live map's when it is built at the
+	 * current keyframe poses, else Eq. 8's full product recomputed there (GlobalMap::buildPerScan, EStep::run). */
+	std::vector<GridVector> finalMap(std::vector<Door>* doors = nullptr) const;
 	/** The static map as an occupancy grid (OccupancyConversion, occupancy.* keys). */
 	mrpt::maps::COccupancyGridMap2D occupancyGrid() const;
 

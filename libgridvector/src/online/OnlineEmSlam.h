@@ -42,15 +42,16 @@ struct OnlineStep
  * mstep.sequential_window predecessors (PairRegistration), for every earlier pass near it an
  * overlap edge where the estimate already links the passes (Sec. 4.3, OverlapEdges) or else a loop
  * search in the window of the odometry model (LoopSearch), the new edges checked for consistency
- * (verifyOverlaps); then the scan merged into the map (Eq. 4, 8) and the E-step (Eq. 14-15) on the
- * vectors it touched (ClassifiedMap). A loop edge kept makes Eq. 22 on the whole graph due
+ * (verifyOverlaps); then the scan's vectors added to the map with Eq. 8's full product updated both
+ * ways and the E-step (Eq. 14-15) on the vectors that changed (ClassifiedMap: the batch E-step's map
+ * and verdicts, scan by scan). A loop edge kept makes Eq. 22 on the whole graph due
  * (GraphOptimisation): the one step whose cost grows with the map. It runs outside addScan, in
  * three parts so that a robot can give the middle one to a background thread: takeOptimisation()
  * (a copy of the graph), runOptimisation() (the solve) and applyOptimisation() (the corrected
  * keyframes, those added meanwhile carried along). When that moved a pose by more than
  * EmSlam::movedEnough's threshold, the map is rebuilt at the corrected poses kReanchorPerScan
  * keyframes per scan, and replaces the live map when it has caught up. So addScan's cost is that
- * of the robot's surroundings.
+ * of the robot's surroundings: the keyframes of every pass through them (ClassifiedMap).
  *
  * Registrations use every vector of a keyframe as it was extracted: the batch's first M-step
  * (before any E-step); EmSlam from trajectory() refines them (gv-em-slam --online --refine). */

@@ -37,7 +37,7 @@ bool ClassifiedMap::applyTriangles(GridVector& m, const std::vector<uint32_t>& c
 	return changed;
 }
 
-// Eq. 4 (unmerged) and Eq. 8 both ways for scan t, then Eq. 14-15 on the vectors whose cells changed.
+// Eq. 4 (unmerged) and Eq. 8 both ways for scan t; the vectors whose cells changed are due for Eq. 14-15.
 size_t ClassifiedMap::insert(const TPose2D& pose, const LocalScan& scan)
 {
 	const uint32_t t = uint32_t(scans_++);
@@ -107,17 +107,24 @@ size_t ClassifiedMap::insert(const TPose2D& pose, const LocalScan& scan)
 		if (!tri.degenerate()) triIndex_.insert(triBase + uint32_t(k), {tri.minX(), tri.minY(), tri.maxX(), tri.maxY()});
 		vectors_.push_back(std::move(fresh[k]));
 		pieces_.emplace_back();
+		stale_.push_back(true);
 		byVector_.emplace_back();
 		changed.push_back(slot);
 	}
-	for (uint32_t slot : changed) estep_.split(vectors_[slot], &pieces_[slot]);
+	for (uint32_t slot : changed) stale_[slot] = true;  // Fig. 4 when asked (piecesOf, children)
 	return changed.size();
+}
+
+const std::vector<ProfilePiece>& ClassifiedMap::fresh(size_t slot) const
+{
+	if (stale_[slot]) estep_.split(vectors_[slot], &pieces_[slot]), stale_[slot] = false;
+	return pieces_[slot];
 }
 
 const std::vector<ProfilePiece>* ClassifiedMap::piecesOf(uint64_t id) const
 {
 	if (id == 0 || id > vectors_.size() || vectors_[id - 1].id != id) return nullptr;
-	return &pieces_[id - 1];
+	return &fresh(id - 1);
 }
 
 VectorState ClassifiedMap::stateOf(const GridVector& v) const
@@ -136,7 +143,7 @@ std::vector<GridVector> ClassifiedMap::children() const
 	std::vector<GridVector> out;
 	out.reserve(vectors_.size());
 	for (size_t k = 0; k < vectors_.size(); ++k)
-		for (auto& c : estep_.childrenFrom(vectors_[k], pieces_[k])) out.push_back(std::move(c));
+		for (auto& c : estep_.childrenFrom(vectors_[k], fresh(k))) out.push_back(std::move(c));
 	return out;
 }
 

@@ -25,8 +25,9 @@ namespace gridvector
  * new vectors (found through an index of every triangle so far). Every cell gets the increments of
  * WipeProduct in its order (scan by scan ascending, the per-cell unit kBatchWipeCountsBeams), so after
  * the same scans at the same poses perScan() equals buildPerScan's output bit for bit, and the E-step's
- * verdicts equal the batch's. Fig. 4's split-and-merge (EStep::split) is then run on the vectors whose
- * cells changed, its pieces cached. An earlier scan seeing through a place counts as a later one does:
+ * verdicts equal the batch's. Fig. 4's split-and-merge (EStep::split) runs on a vector whose cells
+ * changed when its state is next asked (stateOf, piecesOf, children: O(that vector)), its pieces cached;
+ * so a query may write the cache, and queries from several threads need a lock. An earlier scan seeing through a place counts as a later one does:
  * a person standing where the robot saw the wall before is dynamic at once, as in the batch.
  *
  * Cost of a scan: the per-scan vectors and triangles that meet its triangles and vectors, i.e. those of
@@ -37,7 +38,8 @@ class ClassifiedMap
    public:
 	explicit ClassifiedMap(const GridVectorConfig& cfg = {});
 
-	/** Inserts the scan observed from `pose` and classifies what it changed; returns how many vectors. */
+	/** Inserts the scan observed from `pose`; returns how many vectors it changed (their state is
+	 * Fig. 4's on their new cells from now on). */
 	size_t insert(const mrpt::math::TPose2D& pose, const LocalScan& scan);
 
 	/** The per-scan vectors so far, Eq. 8 over every scan inserted (ids: position + 1, as buildPerScan). */
@@ -63,7 +65,10 @@ class ClassifiedMap
 	std::vector<GridVector> vectors_;  //!< m_{i,t}, scan by scan
 	std::vector<WipeTriangle> tris_;  //!< per vector: its triangle from its scan's sensor
 	std::vector<uint32_t> scanOf_;  //!< per vector: its scan's insertion number
-	std::vector<std::vector<ProfilePiece>> pieces_;  //!< per vector: Fig. 4's pieces
+	/** Fig. 4's pieces of a vector, split again first if its cells changed since. */
+	const std::vector<ProfilePiece>& fresh(size_t slot) const;
+	mutable std::vector<std::vector<ProfilePiece>> pieces_;  //!< per vector: Fig. 4's pieces (fresh())
+	mutable std::vector<bool> stale_;  //!< per vector: cells changed since its pieces were made
 	VectorIndex index_, triIndex_;  //!< vectors by band box, non-degenerate triangles by box
 	size_t scans_ = 0;
 	std::vector<ScanWipe::Mark> marks_;  //!< workspace

@@ -31,7 +31,7 @@ struct OnlineStep
 	bool keyframe = false;  //!< the scan became a node of the pose graph and went into the map
 	size_t loops = 0;  //!< loop edges this scan added (after the consistency check)
 	bool optimised = false;  //!< a loop edge made an optimisation of the pose graph due (Eq. 22, see takeOptimisation)
-	size_t classified = 0;  //!< map vectors the E-step re-classified (Eq. 14-15)
+	size_t classified = 0;  //!< map vectors whose cells the scan changed (Eq. 8; Eq. 14-15 redone for them when asked)
 	size_t reanchored = 0;  //!< keyframes re-inserted into the map being re-anchored
 };
 

@@ -1,7 +1,6 @@
 #include "OnlineReplay.h"
 #include "EmOutputs.h"
 
-#include "doors/DoorDetector.h"
 #include "online/OnlineEmSlam.h"
 
 #include <nlohmann/json.hpp>
@@ -39,7 +38,7 @@ double quantileMs(std::vector<double> v, double q)
 
 // Debugging aid, as the batch's edges_<k>.txt (main.cpp): GV_EM_DEBUG_DIR=dir writes dir/online_edges_<stage>.txt,
 // the online graph's registration edges (writeEdgeDump, for bench/em-slam/edge_errors.py).
-void dumpEdges(const OnlineEmSlam& slam, const GridVectorConfig& cfg, const char* stage)
+void dumpEdges(const online::OnlineEmSlam& slam, const GridVectorConfig& cfg, const char* stage)
 {
 	const char* dir = std::getenv("GV_EM_DEBUG_DIR");
 	if (!dir) return;
@@ -88,20 +87,16 @@ OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::
 	}
 	progress.done();
 	dumpEdges(slam, cfg, "before_finish");
+	out.live = slam.vectors();
 	const auto t0 = Clock::now();
 	slam.finish();
 	dumpEdges(slam, cfg, "final");
 	EmResult& res = out.result;
 	res.poses = slam.trajectory();
-	res.finalVectors = slam.finalMap();  // the live map's states: slam.vectors()
+	res.finalVectors = slam.finalMap(&res.doors);  // Sec. 5.4's doors in it (timed with the final map)
 	res.keyframes = slam.keyframes().size();
 	res.converged = true;  // no EM iterations to converge: the self-check judges the graph and the map
 	res.finalGraph = poseGraphFit(slam.graph());
-	const auto td = Clock::now();
-	res.doors = DoorDetector(cfg.doors).detect(res.finalVectors);  // Sec. 5.4: a leaf state is dynamic
-	for (const Door& d : res.doors)
-		for (size_t leaf : d.leaves) res.finalVectors[leaf].state = VectorState::Dynamic;
-	res.doorSeconds = since(td);
 	res.finalMapSeconds = out.finishSeconds = since(t0);
 	out.report = slam.report();
 	return out;

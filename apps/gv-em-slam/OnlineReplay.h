@@ -30,6 +30,9 @@ struct OnlineReplay
 	 * right after its scan, on the same core, so the replay is deterministic). */
 	std::vector<double> background, backgroundCpu;
 	std::vector<double> synchronous;  //!< per scan [s]: latency and background together
+	/** The live map (OnlineEmSlam::vectors(): every vector's state as the E-step on the sequential map
+	 * had it) after the last scan, before finish(): what a robot reads mid-run (vectors_live.txt). */
+	std::vector<GridVector> live;
 	EmResult result;  //!< the final trajectory and map (after OnlineEmSlam::finish), as the batch's
 	MStepReport report;  //!< the online run's registrations and edges
 	size_t loopScans = 0, registeredScans = 0;

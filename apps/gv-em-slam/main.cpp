@@ -5,7 +5,8 @@
 //   gv-em-slam --input LOG --out DIR [--config FILE.ini] [--max-iterations N] [--online [--refine]] [--quiet]
 //
 // --online replays the log scan by scan through OnlineEmSlam (Sec. 6's sequential mode) and writes the same
-// files from its final map and trajectory, plus trajectory_online.txt (each scan's pose when it came in);
+// files from its final map and trajectory, plus trajectory_online.txt (each scan's pose when it came in) and
+// vectors_live.txt (the live map a robot reads: OnlineEmSlam::vectors() after the last scan, before finish());
 // --refine then runs the batch EM from the online trajectory.
 // Writes to DIR: trajectory.txt (t x y theta per scan, the input's timestamps),
 // map.gvmap (serialized mrpt::maps::CGridVectorMap), vectors.txt
@@ -233,6 +234,7 @@ int run(const io::ArgParser& args)
 		io::Trajectory causal;
 		for (size_t t = 0; t < replay.causal.size(); ++t) causal.emplace_back(log.scans[t].timestamp, replay.causal[t]);
 		io::writeTrajectory(dir + "trajectory_online.txt", causal);
+		app::writeVectors(dir + "vectors_live.txt", replay.live);
 	}
 	const auto& doors = res.doors;
 	fig.doors = doors.size();
@@ -263,7 +265,7 @@ int run(const io::ArgParser& args)
 		std::fprintf(stderr,
 					 "wrote %s{trajectory.txt, map.gvmap, vectors.txt, vectors.svg, occupancy.png, occupancy.pgm, "
 					 "occupancy.yaml, map.3Dscene, doors.txt, door_states.txt, report.json%s}\n",
-					 dir.c_str(), online ? ", trajectory_online.txt" : "");
+					 dir.c_str(), online ? ", trajectory_online.txt, vectors_live.txt" : "");
 	}
 	if (!quiet || !fig.verdict.ok) printSelfCheck(fig.selfCheck, fig.verdict);  // --quiet: only a suspect run
 	return fig.verdict.ok ? 0 : kSuspectStatus;

@@ -204,29 +204,6 @@ void finalMap(EmResult& res, const EStep& estep, const std::vector<TPose2D>& ePo
 	for (size_t k = 0; k < res.finalVectors.size(); ++k) res.finalVectors[k].id = k + 1;  // unique across both maps
 }
 
-// Sec. 5.4: doors in the final map; a leaf state Eq. 6 kept static is a door state, so dynamic,
-// and so is the stretch of a static wall that runs across a state (merged over the doorway):
-// the wall is cut there (EStep::splitSpans) and keeps its index for its first piece.
-void doorStates(EmResult& res, const EStep& estep, const DoorOptions& opts)
-{
-	const DoorDetector doorDetector(opts);
-	res.doors = doorDetector.detect(res.finalVectors);
-	for (const Door& d : res.doors)
-		for (size_t leaf : d.leaves) res.finalVectors[leaf].state = VectorState::Dynamic;
-	for (size_t i = 0, n = res.finalVectors.size(); i < n; ++i)
-	{
-		if (res.finalVectors[i].state != VectorState::Static) continue;
-		const auto spans = doorDetector.stateSpans(res.doors, res.finalVectors[i]);
-		if (spans.empty()) continue;
-		auto parts = estep.splitSpans(res.finalVectors[i], spans);
-		res.finalVectors[i] = std::move(parts[0]);
-		for (size_t k = 1; k < parts.size(); ++k)
-		{
-			parts[k].id = res.finalVectors.size() + 1;
-			res.finalVectors.push_back(std::move(parts[k]));
-		}
-	}
-}
 }  // namespace
 
 // Sec. 4: M-step (Eq. 16-25) and E-step (Eq. 14-15) alternated until an M-step changes no
@@ -295,10 +272,35 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 	const auto t0 = std::chrono::steady_clock::now();
 	finalMap(res, estep, ePoses, cfg_);
 	const auto td = std::chrono::steady_clock::now();
-	doorStates(res, estep, cfg_.doors);
+	res.doors = doorStates(res.finalVectors, estep, cfg_.doors);
 	res.doorSeconds = since(td);
 	res.finalMapSeconds = since(t0);
 	return res;
+}
+
+// Sec. 5.4: doors in the final map; a leaf state Eq. 6 kept static is a door state, so dynamic,
+// and so is the stretch of a static wall that runs across a state (merged over the doorway):
+// the wall is cut there (EStep::splitSpans) and keeps its index for its first piece.
+std::vector<Door> EmSlam::doorStates(std::vector<GridVector>& vectors, const EStep& estep, const DoorOptions& opts)
+{
+	const DoorDetector doorDetector(opts);
+	std::vector<Door> doors = doorDetector.detect(vectors);
+	for (const Door& d : doors)
+		for (size_t leaf : d.leaves) vectors[leaf].state = VectorState::Dynamic;
+	for (size_t i = 0, n = vectors.size(); i < n; ++i)
+	{
+		if (vectors[i].state != VectorState::Static) continue;
+		const auto spans = doorDetector.stateSpans(doors, vectors[i]);
+		if (spans.empty()) continue;
+		auto parts = estep.splitSpans(vectors[i], spans);
+		vectors[i] = std::move(parts[0]);
+		for (size_t k = 1; k < parts.size(); ++k)
+		{
+			parts[k].id = vectors.size() + 1;
+			vectors.push_back(std::move(parts[k]));
+		}
+	}
+	return doors;
 }
 
 }  // namespace gridvector

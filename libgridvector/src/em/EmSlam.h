@@ -87,6 +87,10 @@ class EmSlam
 	/** keyframes()' rule for one scan: did the odometry move or turn enough since the last keyframe's? */
 	static bool isKeyframe(const mrpt::math::TPose2D& lastKeyOdometry, const mrpt::math::TPose2D& odometry,
 						   const MStepOptions& o);
+	/** Sec. 5.4 on a final map (static then dynamic, ids 1..n): its doors, each leaf state dynamic, and
+	 * the stretch of a static wall across a state cut out dynamic (EStep::splitSpans; new pieces appended,
+	 * ids n+1..). Returns the doors. */
+	static std::vector<Door> doorStates(std::vector<GridVector>& vectors, const EStep& estep, const DoorOptions& opts);
 	/** Did a pose of `b` move from `a` by more than the E-step's re-run threshold (half a grid cell,
 	 * a degree), or do they differ in length? Below it the map, and so the E-step, barely changes. */
 	static bool movedEnough(const std::vector<mrpt::math::TPose2D>& a, const std::vector<mrpt::math::TPose2D>& b);

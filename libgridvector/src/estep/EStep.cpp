@@ -113,10 +113,22 @@ std::vector<GridVector> EStep::split(const GridVector& parent, std::vector<Profi
 std::vector<GridVector> EStep::pieceVectors(const GridVector& parent, std::vector<ProfilePiece>* piecesOut) const
 {
 	const int minCols = std::max(1, int(std::ceil(opts_.minPieceLength / parent.resolution() - 1e-9)));
-	std::vector<GridVector> out;
 	const auto prof = profile(parent);
 	const auto ps = pieces(prof, opts_.staticThreshold, minCols);
 	if (piecesOut) *piecesOut = ps;
+	return vectorsOf(parent, ps);
+}
+
+std::vector<GridVector> EStep::childrenFrom(const GridVector& parent, const std::vector<ProfilePiece>& ps) const
+{
+	std::vector<GridVector> out = vectorsOf(parent, ps);
+	for (size_t k = 0; k < out.size(); ++k) out[k].id = childId(parent.id, k);
+	return out;
+}
+
+std::vector<GridVector> EStep::vectorsOf(const GridVector& parent, const std::vector<ProfilePiece>& ps) const
+{
+	std::vector<GridVector> out;
 	for (size_t k = 0; k < ps.size(); ++k)
 	{
 		if (ps.size() == 1)

@@ -48,6 +48,8 @@ class EStep
 	std::vector<double> profile(const GridVector& v) const;
 	/** The children of one vector; `piecesOut`: the column range of each child. */
 	std::vector<GridVector> split(const GridVector& parent, std::vector<ProfilePiece>* piecesOut = nullptr) const;
+	/** split()'s children for pieces already computed (split(parent, &ps) gave `ps`): no profile. */
+	std::vector<GridVector> childrenFrom(const GridVector& parent, const std::vector<ProfilePiece>& ps) const;
 	/** The E-step over all vectors, from the current map alone (Sec. 4.1). */
 	EStepResult run(const std::vector<GridVector>& parents) const;
 
@@ -108,6 +110,8 @@ class EStep
    private:
 	/** split() without the ids (a single piece is the parent itself, id included). */
 	std::vector<GridVector> pieceVectors(const GridVector& parent, std::vector<ProfilePiece>* piecesOut) const;
+	/** One vector per piece (a single piece: the parent itself, id included). */
+	std::vector<GridVector> vectorsOf(const GridVector& parent, const std::vector<ProfilePiece>& ps) const;
 	/** splitSpans' runs of `staticCols` (1 static, 0 dynamic), a cut static run shorter than
 	 * estep.min_piece_length turned dynamic (in `staticCols` too). */
 	std::vector<ProfilePiece> joinShortStatic(const GridVector& v, std::vector<double>& staticCols) const;

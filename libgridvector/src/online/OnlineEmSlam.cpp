@@ -1,4 +1,5 @@
 #include "online/OnlineEmSlam.h"
+#include "doors/DoorDetector.h"
 #include "doors/DoorExclusion.h"
 #include "em/EmSlam.h"
 #include "map/OccupancyConversion.h"
@@ -240,38 +241,51 @@ std::vector<TPose2D> OnlineEmSlam::trajectory() const
 	return out;
 }
 
-std::vector<GridVector> OnlineEmSlam::vectors() const
+namespace
 {
-	std::vector<GridVector> all = live_->children();
-	std::stable_partition(all.begin(), all.end(), [](const GridVector& v) { return v.state == VectorState::Static; });
-	for (size_t k = 0; k < all.size(); ++k) all[k].id = k + 1;  // unique across both maps
-	return all;
-}
-
-// Sec. 4.1 and Eq. 4 as the batch's last E-step and final map, at the online trajectory.
-std::vector<GridVector> OnlineEmSlam::finalMap() const
+// Sec. 4.1 and Eq. 4 as the batch's final map from E-step children, then Sec. 5.4 as the batch's
+// (EmSlam::doorStates: leaf states dynamic, walls cut across them).
+std::vector<GridVector> mapOf(const std::vector<GridVector>& children, const GridVectorConfig& cfg,
+							  std::vector<Door>* doorsOut)
 {
-	if (keyScans_.empty()) return {};
-	const EStep estep(cfg_.estep, cfg_.grid);
-	const EStepResult e = estep.run(GlobalMap::buildPerScan(keyPose_, keyScans_, cfg_));
-	std::vector<GridVector> out = SplitMap::of(e.children, estep, cfg_).vectors;
+	const EStep estep(cfg.estep, cfg.grid);
+	std::vector<GridVector> out = SplitMap::of(children, estep, cfg).vectors;
 	for (size_t k = 0; k < out.size(); ++k) out[k].id = k + 1;  // unique across both maps
+	std::vector<Door> doors = EmSlam::doorStates(out, estep, cfg.doors);
+	if (doorsOut) *doorsOut = std::move(doors);
 	return out;
+}
+}  // namespace
+
+std::vector<GridVector> OnlineEmSlam::vectors(std::vector<Door>* doors) const { return mapOf(live_->children(), cfg_, doors); }
+
+std::vector<GridVector> OnlineEmSlam::finalMap(std::vector<Door>* doors) const
+{
+	if (keyScans_.empty())
+	{
+		if (doors) doors->clear();
+		return {};
+	}
+	const auto same = [](const TPose2D& a, const TPose2D& b) { return a.x == b.x && a.y == b.y && a.phi == b.phi; };
+	if (!next_ && std::equal(liveAt_.begin(), liveAt_.end(), keyPose_.begin(), keyPose_.end(), same))
+		return vectors(doors);
+	const EStep estep(cfg_.estep, cfg_.grid);
+	return mapOf(estep.run(GlobalMap::buildPerScan(keyPose_, keyScans_, cfg_)).children, cfg_, doors);
 }
 
 std::vector<GridVector> OnlineEmSlam::staticMap() const
 {
-	std::vector<GridVector> out;
-	for (auto& v : live_->children())
-		if (v.state == VectorState::Static) out.push_back(std::move(v));
+	std::vector<GridVector> out = vectors();
+	out.erase(std::remove_if(out.begin(), out.end(), [](const GridVector& v) { return v.state != VectorState::Static; }),
+			  out.end());
 	return out;
 }
 
 std::vector<GridVector> OnlineEmSlam::dynamicVectors() const
 {
-	std::vector<GridVector> out;
-	for (auto& v : live_->children())
-		if (v.state == VectorState::Dynamic) out.push_back(std::move(v));
+	std::vector<GridVector> out = vectors();
+	out.erase(std::remove_if(out.begin(), out.end(), [](const GridVector& v) { return v.state != VectorState::Dynamic; }),
+			  out.end());
 	return out;
 }
 

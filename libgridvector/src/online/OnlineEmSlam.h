@@ -2,6 +2,7 @@
 // objects and the most likely map while walking through the environment": EM-SLAM scan by scan.
 #pragma once
 
+#include "doors/Door.h"
 #include "mstep/ConstraintSet.h"
 #include "mstep/GraphOptimisation.h"
 #include "mstep/LoopClosure.h"
@@ -31,7 +32,7 @@ struct OnlineStep
 	size_t loops = 0;  //!< loop edges this scan added (after the consistency check)
 	std::vector<EdgeKey> edges;  //!< the registration edges (j, i) the keyframe i added, after the check
 	bool optimised = false;  //!< a loop edge made an optimisation of the pose graph due (Eq. 22, see takeOptimisation)
-	size_t classified = 0;  //!< map vectors the E-step re-classified (Eq. 14-15)
+	size_t classified = 0;  //!< map vectors whose cells the scan changed (Eq. 8; Eq. 14-15 redone for them when asked)
 	size_t reanchored = 0;  //!< keyframes re-inserted into the map being re-anchored
 };
 
@@ -42,15 +43,16 @@ struct OnlineStep
  * mstep.sequential_window predecessors (PairRegistration), for every earlier pass near it an
  * overlap edge where the estimate already links the passes (Sec. 4.3, OverlapEdges) or else a loop
  * search in the window of the odometry model (LoopSearch), the new edges checked for consistency
- * (verifyOverlaps); then the scan merged into the map (Eq. 4, 8) and the E-step (Eq. 14-15) on the
- * vectors it touched (ClassifiedMap). A loop edge kept makes Eq. 22 on the whole graph due
+ * (verifyOverlaps); then the scan's vectors added to the map with Eq. 8's full product updated both
+ * ways and the E-step (Eq. 14-15) on the vectors that changed (ClassifiedMap: the batch E-step's map
+ * and verdicts, scan by scan). A loop edge kept makes Eq. 22 on the whole graph due
  * (GraphOptimisation): the one step whose cost grows with the map. It runs outside addScan, in
  * three parts so that a robot can give the middle one to a background thread: takeOptimisation()
  * (a copy of the graph), runOptimisation() (the solve) and applyOptimisation() (the corrected
  * keyframes, those added meanwhile carried along). When that moved a pose by more than
  * EmSlam::movedEnough's threshold, the map is rebuilt at the corrected poses kReanchorPerScan
  * keyframes per scan, and replaces the live map when it has caught up. So addScan's cost is that
- * of the robot's surroundings.
+ * of the robot's surroundings: the keyframes of every pass through them (ClassifiedMap).
  *
  * Registrations use every vector of a keyframe as it was extracted: the batch's first M-step
  * (before any E-step); EmSlam from trajectory() refines them (gv-em-slam --online --refine). */
@@ -110,17 +112,19 @@ class OnlineEmSlam
 	/** Every keyframe's odometry (Eq. 22's odometry edges join consecutive ones). */
 	const Poses& keyframeOdometry() const { return keyOdo_; }
 
-	/** The map with every vector's state (Eq. 14) as of the last scan that touched it. */
+	/** The map with every keyframe's vectors and their state (Eq. 14) as the batch E-step has them
+	 * after the scans so far (ClassifiedMap: stateOf() per vector, at once). */
 	const ClassifiedMap& map() const { return *live_; }
-	/** The map's vectors split into their children, state set: static, then dynamic (Eq. 14). */
-	std::vector<GridVector> vectors() const;
+	/** The batch's final map from the live E-step, at any time (O(map): a query, not per scan): the
+	 * children split at the final threshold and merged per state (SplitMap::of), then Sec. 5.4's doors
+	 * (EmSlam::doorStates: leaf states dynamic, a wall cut across a state), as the batch; static then
+	 * dynamic. `doors`: the doors found. */
+	std::vector<GridVector> vectors(std::vector<Door>* doors = nullptr) const;
 	std::vector<GridVector> staticMap() const;
 	std::vector<GridVector> dynamicVectors() const;
-	/** The batch's final map at the current trajectory, for the end of a run (O(map), not per scan):
-	 * Eq. 8's full product over the keyframes (GlobalMap::buildPerScan), Eq. 14-15 on it
-	 * (EStep::run), the final split and the Eq. 4 merges per state (SplitMap::of); static then
-	 * dynamic, ids 1..n. */
-	std::vector<GridVector> finalMap() const;
+	/** vectors() at the current trajectory, for the end of a run: the live map's when it is built at the
+	 * current keyframe poses, else Eq. 8's full product recomputed there (GlobalMap::buildPerScan, EStep::run). */
+	std::vector<GridVector> finalMap(std::vector<Door>* doors = nullptr) const;
 	/** The static map as an occupancy grid (OccupancyConversion, occupancy.* keys). */
 	mrpt::maps::COccupancyGridMap2D occupancyGrid() const;
 

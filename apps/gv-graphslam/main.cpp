@@ -13,6 +13,7 @@
 #include "graphslam/GroundTruthIndex.h"
 #include "graphslam/IniKeys.h"
 #include "graphslam/RunRecorder.h"
+#include "em/SelfCheck.h"
 #include "common/ArgParser.h"
 #include "io/Counted.h"
 #include "io/AtomicFile.h"
@@ -293,8 +294,25 @@ GridVectorConfig validateGridVectorSections(const mrpt::config::CConfigFileBase&
 	return c;
 }
 
-/** Runs the engine; returns the summary line. */
-std::string run(const Settings& s, DeciderRegistry& reg)
+/** What a run says at the end: its summary line and, with the grid-vector deciders, the self-check. */
+struct RunResult
+{
+	std::string summary;
+	std::optional<SelfCheckVerdict> verdict;
+};
+
+/** The self-check of gv-em-slam (em/SelfCheck.h) on the online EM-SLAM behind CGridVectorNRD: its registrations,
+ * its final graph's fit and edges (the map-based signals judge unconverged EM only, and there is no EM loop). */
+std::optional<SelfCheckVerdict> selfCheck(const mrpt::graphslam::deciders::CNodeRegistrationDecider<graph_t>& nrd)
+{
+	const auto* g = dynamic_cast<const CGridVectorNRD*>(&nrd);
+	if (!g || g->online().keyframes().size() < 2) return std::nullopt;
+	const auto& slam = g->online();
+	return judge(selfCheckEvidence(true, {slam.report()}, slam.keyframes().size(), poseGraphFit(slam.graph()), {}, {}));
+}
+
+/** Runs the engine. */
+RunResult run(const Settings& s, DeciderRegistry& reg)
 {
 	const QuietOutput quiet(s.quiet);  // declared first: the engine and deciders are destroyed inside it
 	requireFile(s.ini, "config file");
@@ -348,6 +366,7 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 	const auto t0 = std::chrono::steady_clock::now();
 	const size_t steps = feed(s.rawlog, engine, rec, gt, s.quiet);
 	finishDeciders(*nrd, *erd);  // the grid-vector deciders' closing edge search and optimisation
+	const auto verdict = selfCheck(*nrd);
 	const double slamSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 	writeEngineOutputs(engine, gc, outDir.create());
 
@@ -374,7 +393,7 @@ std::string run(const Settings& s, DeciderRegistry& reg)
 				  io::counted(graph.nodeCount(), "node").c_str(), io::counted(graph.edgeCount(), "edge").c_str(),
 				  io::counted(loopClosures(graph, lc.lcMinNodeIdDiff), "loop closure").c_str(),
 				  io::counted(map.vectors().size(), "map vector").c_str(), slamSeconds, dir.c_str());
-	return summary;
+	return {summary, verdict};
 }
 }  // namespace
 
@@ -389,8 +408,13 @@ int main(int argc, char** argv)
 		DeciderRegistry reg;
 		if (listings(args, reg)) return 0;
 		const Settings s = settingsFrom(args, reg);
-		const std::string summary = run(s, reg);
-		if (!s.quiet) std::fputs(summary.c_str(), stdout);
-		return 0;
+		const RunResult r = run(s, reg);
+		if (!s.quiet) std::fputs(r.summary.c_str(), stdout);
+		if (!r.verdict) return 0;
+		std::string why;
+		for (const auto& reason : r.verdict->reasons) why += (why.empty() ? "" : "; ") + reason;
+		if (!s.quiet || !r.verdict->ok)  // --quiet: only a suspect run
+			std::fprintf(stderr, "self-check: %s%s\n", r.verdict->ok ? "ok" : "suspect (exit status 3): ", why.c_str());
+		return r.verdict->ok ? 0 : 3;
 	});
 }

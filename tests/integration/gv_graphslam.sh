@@ -27,7 +27,9 @@ done
 
 # a run with the grid-vector deciders
 "$GV_BIN/gv-graphslam" --2d -i "$INI" -r "$W/short.rawlog" --disable-visuals \
-	-n CGridVectorNRD -e CGridVectorERD -o CLevMarqGSO --output-dir "$W/out" > "$W/run.txt"
+	-n CGridVectorNRD -e CGridVectorERD -o CLevMarqGSO --output-dir "$W/out" > "$W/run.txt" 2> "$W/run.err"
+# gv-em-slam's self-check on the online EM-SLAM behind the deciders: this run is ok (exit 0)
+[ "$(tail -n 1 "$W/run.err")" = "self-check: ok" ] || fail "self-check line: $(tail -n 1 "$W/run.err")"
 grep -q "^gv-graphslam: CGridVectorNRD + CGridVectorERD + CLevMarqGSO: 500 entries, 250 scans" "$W/run.txt" \
 	|| fail "unexpected summary: $(grep '^gv-graphslam' "$W/run.txt")"
 # (--quiet prints nothing at all: tests/integration/quiet.sh)
@@ -70,6 +72,23 @@ for ini in "$MRPT_INIS"/*.ini; do
 	n=$((n + 1))
 done
 [ "$n" -eq 6 ] || fail "expected MRPT's 6 graphslam-engine .ini files, found $n"
+
+# a broken input (intel's first 300 scans with aces' first 300 odometry, as integration.self_check): the
+# outputs are written, the self-check says suspect with its reasons, exit 3; under --quiet that line only
+for log in intel aces; do
+	zcat "$GV_SHARED_DIR/data/$log-corrected.log.gz" | awk '/^FLASER/ { n++ } n <= 300' > "$W/$log-300.log"
+	"$GV_BIN/gv-bench-log" "$W/$log-300.log" "$W/$log" --quiet
+done
+python3 "$GV_SOURCE_DIR/bench/self-check/breaklog.py" splice "$W/aces.log" "$W/intel.log" "$W/spliced.log"
+"$GV_BIN/gv-carmen2rawlog" --quiet "$W/spliced.log" "$W/spliced.rawlog"
+set +e
+"$GV_BIN/gv-graphslam" --2d -i "$INI" -r "$W/spliced.rawlog" --output-dir "$W/spliced" --quiet > "$W/sp.out" 2> "$W/sp.err"
+rc=$?
+set -e
+[ "$rc" -eq 3 ] || fail "spliced log: exit $rc, expected 3: $(cat "$W/sp.err")"
+[ "$(grep -c . "$W/sp.err")" -eq 1 ] && grep -q "^self-check: suspect (exit status 3): [a-z]" "$W/sp.err" \
+	|| fail "spliced log --quiet: $(cat "$W/sp.err")"
+[ -s "$W/spliced/trajectory.txt" ] && [ ! -s "$W/sp.out" ] || fail "spliced log: outputs missing or stdout not quiet"
 
 # bad input: one line on stderr, non-zero exit, no crash
 expect_error() {

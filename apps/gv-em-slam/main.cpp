@@ -124,9 +124,7 @@ void printSelfCheck(const SelfCheckEvidence& e, const SelfCheckVerdict& v)
 				 e.converged ? "converged" : "did not converge", io::counted(e.iterations, "iteration").c_str(),
 				 100 * e.failedShare(), e.registrations, 100 * e.rejectedShare(), e.edges, e.graph.normalisedChi2(),
 				 100 * e.unlinkedShare(), e.keyframes, 100 * e.dynamicShare(), 100 * e.beams.share());
-	std::string why;
-	for (const auto& r : v.reasons) why += (why.empty() ? "" : "; ") + r;
-	std::fprintf(stderr, "self-check: %s%s\n", v.ok ? "ok" : "suspect (exit status 3): ", why.c_str());
+	std::fprintf(stderr, "%s\n", verdictLine(v).c_str());
 }
 
 int run(const io::ArgParser& args)

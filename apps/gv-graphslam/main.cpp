@@ -411,10 +411,8 @@ int main(int argc, char** argv)
 		const RunResult r = run(s, reg);
 		if (!s.quiet) std::fputs(r.summary.c_str(), stdout);
 		if (!r.verdict) return 0;
-		std::string why;
-		for (const auto& reason : r.verdict->reasons) why += (why.empty() ? "" : "; ") + reason;
 		if (!s.quiet || !r.verdict->ok)  // --quiet: only a suspect run
-			std::fprintf(stderr, "self-check: %s%s\n", r.verdict->ok ? "ok" : "suspect (exit status 3): ", why.c_str());
+			std::fprintf(stderr, "%s\n", verdictLine(*r.verdict).c_str());
 		return r.verdict->ok ? 0 : 3;
 	});
 }

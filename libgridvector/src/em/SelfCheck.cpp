@@ -229,4 +229,11 @@ SelfCheckVerdict judge(const SelfCheckEvidence& e)
 	return v;
 }
 
+std::string verdictLine(const SelfCheckVerdict& v)
+{
+	std::string why;
+	for (const auto& r : v.reasons) why += (why.empty() ? "" : "; ") + r;
+	return std::string("self-check: ") + (v.ok ? "ok" : "suspect (exit status 3): ") + why;
+}
+
 }  // namespace gridvector

@@ -130,4 +130,7 @@ constexpr double kMaxDynamicShareUnconverged = 0.6;
 
 SelfCheckVerdict judge(const SelfCheckEvidence& e);
 
+/** The verdict's stderr line (doc/io.md): "self-check: ok" or "self-check: suspect (exit status 3): r1; r2". */
+std::string verdictLine(const SelfCheckVerdict& v);
+
 }  // namespace gridvector

@@ -84,9 +84,7 @@ bool CGridVectorNRD::processScan(const mrpt::obs::CObservation2DRangeScan& scan)
 bool CGridVectorNRD::optimiseIfDue()
 {
 	if (!slam_->optimisationDue()) return false;
-	auto job = slam_->takeOptimisation();
-	slam_->runOptimisation(job);
-	slam_->applyOptimisation(job);
+	slam_->optimise();
 	++stats_.optimisations;
 	return true;
 }

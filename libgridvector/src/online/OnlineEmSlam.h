@@ -91,6 +91,8 @@ class OnlineEmSlam
 	};
 	/** Is an optimisation due (a loop edge since the last one was taken)? */
 	bool optimisationDue() const { return due_; }
+	/** takeOptimisation, runOptimisation, applyOptimisation in turn, on this thread (`graduate`: Optimisation's). */
+	void optimise(bool graduate = false);
 	/** The graph as it is now, to optimise; no longer due. */
 	Optimisation takeOptimisation();
 	/** The solve (GraphOptimisation: Eq. 22, the chi2 rejections). May run on another thread while
@@ -139,8 +141,6 @@ class OnlineEmSlam
 								bool& registered) const;
 	/** A new keyframe's edges (sequential, overlap, loop), those kept into `st` (edges, loops). */
 	void addEdges(uint32_t i, OnlineStep& st);
-	/** takeOptimisation, runOptimisation, applyOptimisation in turn (`graduate`: Optimisation's). */
-	void optimise(bool graduate = false);
 	/** Does one of these edges need a correction of the estimate that makes PoseGraph graduate its
 	 * kernel for a loop-search edge (chi2 at keyPose_ above posegraph.graduation_trigger x Phi)? */
 	bool farFromEstimate(const std::vector<EdgeKey>& keys) const;

@@ -54,12 +54,7 @@ OnlineEmSlam::Step OnlineEmSlam::addScan(const LocalScan& scan, const mrpt::math
 
 bool OnlineEmSlam::optimisationDue() const { return impl_->slam.optimisationDue(); }
 
-void OnlineEmSlam::optimise()
-{
-	Optimisation job = takeOptimisation();
-	runOptimisation(job);
-	applyOptimisation(job);
-}
+void OnlineEmSlam::optimise() { impl_->slam.optimise(); }
 
 OnlineEmSlam::Optimisation OnlineEmSlam::takeOptimisation()
 {

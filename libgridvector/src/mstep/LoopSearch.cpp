@@ -1,4 +1,5 @@
 #include "mstep/LoopSearch.h"
+#include "mstep/AliasSweep.h"
 
 #include <mrpt/math/wrap2pi.h>
 
@@ -165,9 +166,10 @@ MatchResult LoopSearch::search(const std::vector<MatchSegment>& a, const std::ve
 	for (const MatchResult& r : results)
 		if (!best.ok() || r.matchedLength > best.matchedLength) best = r;
 	// a loop edge must match enough, fix the translation in both directions (no
-	// corridor slide) and be unambiguous
+	// corridor slide) and be unambiguous, also along its weakest direction (AliasSweep)
 	if (best.ok() && (best.matchedShare < opts_.loopSearchMinShare ||
-					  best.translationDegeneracy < matcher_.options().degenerateRatio || ambiguous(best, results)))
+					  best.translationDegeneracy < matcher_.options().degenerateRatio || ambiguous(best, results) ||
+					  AliasSweep(matcher_, opts_.loopSearchAmbiguity).aliased(a, b, best, w.translation)))
 		best.status = MatchStatus::TooFewMatches;
 	return best;
 }

@@ -1,27 +1,13 @@
 #include "mstep/SequentialChain.h"
+#include "mstep/PoseFusion.h"
 #include <mrpt/math/TPose2D.h>
-
-#include <Eigen/Cholesky>
 
 #include <algorithm>
 #include <cmath>
 
 namespace gridvector
 {
-using Eigen::Matrix3d;
-using Eigen::Vector3d;
 using mrpt::math::TPose2D;
-
-namespace
-{
-// Information of a relative measurement expressed in the frame of `frame` (rotated to the world).
-Matrix3d toWorld(const Matrix3d& info, double framePhi)
-{
-	Matrix3d R = Matrix3d::Identity();
-	R.topLeftCorner<2, 2>() << std::cos(framePhi), -std::sin(framePhi), std::sin(framePhi), std::cos(framePhi);
-	return R * info * R.transpose();
-}
-}  // namespace
 
 // First M-step: register each scan against its predecessors, chaining the fused poses.
 void SequentialChain::chain(const Scans& scans, Poses& poses, MStepReport& rep) const
@@ -34,27 +20,19 @@ void SequentialChain::chain(const Scans& scans, Poses& poses, MStepReport& rep) 
 	{
 		reportProgress(progress_, "sequential registration", i, n);
 		const TPose2D odo = odometry_[i] - odometry_[i - 1];
-		const TPose2D guess0 = poses[i - 1] + odo;
 		// information-weighted fusion of the predictions, linearised at the odometry guess
-		Matrix3d sumI = toWorld(PoseGraph::odometryInformation(odo, cfg_.posegraph), poses[i - 1].phi);
-		Vector3d sumIx = Vector3d::Zero();
-		TPose2D guess = guess0;
+		PoseFusion fusion(poses[i - 1] + odo,
+						  PoseFusion::toWorld(PoseGraph::odometryInformation(odo, cfg_.posegraph), poses[i - 1].phi));
 		const size_t lo = i > size_t(cfg_.mstep.sequentialWindow) ? i - cfg_.mstep.sequentialWindow : 0;
 		for (size_t j = i; j-- > lo;)
 		{
 			Constraint c;
-			if (!registerChained(uint32_t(j), uint32_t(i), scans, guess - poses[j], c, rep)) continue;
-			const TPose2D est = poses[j] + c.z;
-			const Matrix3d Iw = toWorld(c.information, poses[j].phi);
-			const Vector3d d(est.x - guess0.x, est.y - guess0.y, mrpt::math::wrapToPi(est.phi - guess0.phi));
-			sumI += Iw;
-			sumIx += Iw * d;
-			const Vector3d x = sumI.ldlt().solve(sumIx);
-			guess = TPose2D(guess0.x + x.x(), guess0.y + x.y(), mrpt::math::wrapToPi(guess0.phi + x.z()));
+			if (!registerChained(uint32_t(j), uint32_t(i), scans, fusion.pose() - poses[j], c, rep)) continue;
+			fusion.add(poses[j] + c.z, PoseFusion::toWorld(c.information, poses[j].phi));
 			book_.edges[{uint32_t(j), uint32_t(i)}] = std::move(c);
 			++rep.added;
 		}
-		poses[i] = guess;
+		poses[i] = fusion.pose();
 	}
 }
 

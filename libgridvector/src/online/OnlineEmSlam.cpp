@@ -3,8 +3,14 @@
 #include "doors/DoorExclusion.h"
 #include "em/EmSlam.h"
 #include "map/OccupancyConversion.h"
+#include "mstep/AliasSweep.h"
 #include "mstep/Consistency.h"
+#include "mstep/PoseFusion.h"
 #include "mstep/ConstraintUpdate.h"
+
+#include <mrpt/math/wrap2pi.h>
+
+#include <Eigen/Cholesky>
 
 #include <algorithm>
 #include <cmath>
@@ -27,13 +33,31 @@ OnlineEmSlam::OnlineEmSlam(const GridVectorConfig& cfg)
 	  live_(std::make_unique<ClassifiedMap>(cfg_))
 {}
 
-// Sec. 4.2: the scan registered against the last keyframe from the odometry since it.
+namespace
+{
+/** Does a registration `z` (information `info`, singular along a corridor's axis) agree with Eq. 20's odometry
+ * prediction `odo` of the same relative pose? Not when the chi2 of their difference (its information
+ * I_o (I_o + I_z)^-1 I_z) exceeds posegraph.reject_chi2, the level at which the pose graph removes an edge: a
+ * registration the motion model cannot have produced. */
+bool agreesWithOdometry(const TPose2D& odo, const TPose2D& z, const Eigen::Matrix3d& info, const PoseGraphOptions& o)
+{
+	const Eigen::Matrix3d odoInfo = PoseGraph::odometryInformation(odo, o);
+	const Eigen::Vector3d d(z.x - odo.x, z.y - odo.y, mrpt::math::wrapToPi(z.phi - odo.phi));
+	return d.dot(odoInfo * (odoInfo + info).ldlt().solve(info * d)) <= o.rejectChi2;
+}
+}  // namespace
+
+// Sec. 4.2: the scan registered against the last keyframe from the odometry since it and fused with that odometry
+// (PoseFusion), as the batch's SequentialChain does: a corridor's axis, which the match leaves free, and a match
+// the motion model rules out (agreesWithOdometry) come from the odometry.
 TPose2D OnlineEmSlam::poseNow(const std::vector<MatchSegment>& segs, const TPose2D& odometry, bool& registered) const
 {
 	const TPose2D guess = odometry - keyOdo_.back();
 	const MatchResult r = reg_.matcher().match(segs_.back(), segs, guess);
-	registered = r.ok();
-	return keyPose_.back() + (registered ? r.pose : guess);
+	registered = r.ok() && agreesWithOdometry(guess, r.pose, r.information, cfg_.posegraph);
+	PoseFusion fusion(guess, PoseGraph::odometryInformation(guess, cfg_.posegraph));
+	if (registered) fusion.add(r.pose, r.information);
+	return keyPose_.back() + fusion.pose();
 }
 
 OnlineStep OnlineEmSlam::addScan(const LocalScan& scan, const TPose2D& odometry)
@@ -62,6 +86,7 @@ OnlineStep OnlineEmSlam::addScan(const LocalScan& scan, const TPose2D& odometry)
 		book_.beginStep(segs_, nullptr);  // the new keyframe's signature (its vectors never change)
 		loopClosure_.setOdometry(keyOdo_);  // the loop-search windows grow along the path
 		addEdges(i, st);
+		pose = keyPose_[i];  // fused from its sequential edges
 		st.optimised = st.loops > 0;
 		due_ = due_ || st.optimised;
 		st.classified = live_->insert(pose, keyScans_.back());
@@ -78,14 +103,7 @@ void OnlineEmSlam::addEdges(uint32_t i, OnlineStep& st)
 {
 	const auto& m = cfg_.mstep;
 	const uint32_t w = uint32_t(std::max(1, m.sequentialWindow));
-	for (uint32_t j = i > w ? i - w : 0; j < i; ++j)
-	{
-		Constraint c;
-		if (reg_.registerPair(j, i, EdgeKind::Sequential, segs_, keyPose_[i] - keyPose_[j], c, rep_))
-			book_.keep({j, i}, std::move(c), rep_);
-		else
-			book_.fail({j, i}, keyPose_[i] - keyPose_[j]);
-	}
+	if (i > 0) keyPose_[i] = sequentialPose(i, w);
 	const uint32_t K = uint32_t(std::max(1, m.overlapRunGap));
 	const auto& passes = passes_.next(i, keyPose_, w, K, [&](uint32_t j) {
 		return std::hypot(keyPose_[i].x - keyPose_[j].x, keyPose_[i].y - keyPose_[j].y) <
@@ -105,7 +123,8 @@ void OnlineEmSlam::addEdges(uint32_t i, OnlineStep& st)
 				const EdgeKey key{from, i};
 				const TPose2D rel = keyPose_[i] - keyPose_[from];
 				Constraint c;
-				if (overlaps_.registerOverlap(key, from == p.nearest, segs_, rel, c, rep_))
+				if (overlaps_.registerOverlap(key, from == p.nearest, segs_, rel, c, rep_) &&
+					!aliased(from, i, c))
 				{
 					book_.keep(key, std::move(c), rep_);
 					fresh.push_back(key);
@@ -136,6 +155,43 @@ void OnlineEmSlam::addEdges(uint32_t i, OnlineStep& st)
 		if (it->first.second == i) st.edges.push_back(it->first);  // the sequential ones
 	for (const EdgeKey& k : fresh)
 		if (k.first + w < i && book_.edges.count(k)) st.edges.push_back(k);
+}
+
+// The first M-step's chain (SequentialChain) for keyframe i: its sequential edges, nearest predecessor first, each
+// registered from the pose fused so far and kept if it agrees with the odometry; the fused pose.
+TPose2D OnlineEmSlam::sequentialPose(uint32_t i, uint32_t w)
+{
+	const TPose2D odo = keyOdo_[i] - keyOdo_[i - 1];
+	PoseFusion fusion(keyPose_[i - 1] + odo,
+					  PoseFusion::toWorld(PoseGraph::odometryInformation(odo, cfg_.posegraph), keyPose_[i - 1].phi));
+	for (uint32_t j = i; j-- > (i > w ? i - w : 0);)
+	{
+		Constraint c;
+		const TPose2D guess = fusion.pose() - keyPose_[j];
+		if (reg_.registerPair(j, i, EdgeKind::Sequential, segs_, guess, c, rep_) &&
+			agreesWithOdometry(keyOdo_[i] - keyOdo_[j], c.z, c.information, cfg_.posegraph))
+		{
+			fusion.add(keyPose_[j] + c.z, PoseFusion::toWorld(c.information, keyPose_[j].phi));
+			book_.keep({j, i}, std::move(c), rep_);
+		}
+		else
+			book_.fail({j, i}, guess);
+	}
+	return fusion.pose();
+}
+
+// An overlap edge is registered from the estimate, which can be off along a corridor by the loop-search window
+// of its passes: an alias within that reach (AliasSweep) makes it no edge.
+bool OnlineEmSlam::aliased(uint32_t from, uint32_t to, const Constraint& c) const
+{
+	MatchResult r;
+	r.status = MatchStatus::Ok;
+	r.pose = c.z;
+	r.information = c.information;
+	r.matchedLength = c.matchedLength;
+	r.pairs = c.correspondences;
+	const double reach = loopClosure_.windowOf(from, to).translation;
+	return AliasSweep(reg_.matcher(), cfg_.mstep.loopSearchAmbiguity).aliased(segs_[from], segs_[to], r, reach);
 }
 
 OnlineEmSlam::Optimisation OnlineEmSlam::takeOptimisation()

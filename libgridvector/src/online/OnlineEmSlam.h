@@ -139,11 +139,15 @@ class OnlineEmSlam
 	/** The pose of a scan from the last keyframe: its registration from the odometry guess, else the guess. */
 	mrpt::math::TPose2D poseNow(const std::vector<MatchSegment>& segs, const mrpt::math::TPose2D& odometry,
 								bool& registered) const;
+	/** Keyframe i's sequential edges to its `w` predecessors and its pose fused from them and the odometry. */
+	mrpt::math::TPose2D sequentialPose(uint32_t i, uint32_t w);
 	/** A new keyframe's edges (sequential, overlap, loop), those kept into `st` (edges, loops). */
 	void addEdges(uint32_t i, OnlineStep& st);
 	/** Does one of these edges need a correction of the estimate that makes PoseGraph graduate its
 	 * kernel for a loop-search edge (chi2 at keyPose_ above posegraph.graduation_trigger x Phi)? */
 	bool farFromEstimate(const std::vector<EdgeKey>& keys) const;
+	/** Is the overlap edge (from, to) aliased along its weak direction within its passes' loop-search window? */
+	bool aliased(uint32_t from, uint32_t to, const Constraint& c) const;
 	/** Up to `n` keyframes into the map being re-anchored; swaps it in when it has caught up. */
 	size_t reanchor(size_t n);
 

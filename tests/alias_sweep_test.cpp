@@ -59,7 +59,8 @@ TEST(AliasSweep, CovisibleLengthIsWhatBothShowAlongTheDirection)
 	// a 4 m wall along x with a 1 m crosswise wall at x = 2; B's frame shifted by 1 m: both crosswise walls lie in
 	// the slab [1, 4] both cover, the walls along x tell nothing along x
 	const std::vector<Seg> w{{0, 0, 4, 0}, {2, 0, 2, 1}};
-	const auto a = matchtest::observe(w, TPose2D(0, 0, 0), 0, 0, 1), b = matchtest::observe(w, TPose2D(0, 0, 0), 0, 0, 10);
+	const auto a = matchtest::observe(w, TPose2D(0, 0, 0), 0, 0, 1),
+			   b = matchtest::observe(w, TPose2D(0, 0, 0), 0, 0, 10);
 	EXPECT_NEAR(AliasSweep::covisibleLength(a, b, TPose2D(1, 0, 0), Eigen::Vector2d(1, 0)), 1.0, 1e-9);
 	EXPECT_NEAR(AliasSweep::covisibleLength(a, b, TPose2D(5, 0, 0), Eigen::Vector2d(1, 0)), 0.0, 1e-9);
 	// along y the walls along x count whole (the slab is along y), the crosswise ones tell nothing
@@ -81,10 +82,10 @@ TEST(AliasSweep, FindsTheShiftThatLaysOneViewOverTheOther)
 	ASSERT_TRUE(right.ok()) << toString(right.status);
 	EXPECT_GT(wrong.matchedLength, right.matchedLength);  // the matched length prefers the alias
 	const AliasSweep sweep(matcher, MStepOptions{}.loopSearchAmbiguity);
-	EXPECT_TRUE(sweep.aliased(a, b, wrong, 6.0));
-	EXPECT_TRUE(sweep.aliased(a, b, right, 6.0));
+	EXPECT_TRUE(sweep.aliased(a, b, wrong.pose, wrong.information, wrong.pairs, 6.0));
+	EXPECT_TRUE(sweep.aliased(a, b, right.pose, right.information, right.pairs, 6.0));
 	// within less than a period the registration is unique
-	EXPECT_FALSE(sweep.aliased(a, b, right, 3.0));
+	EXPECT_FALSE(sweep.aliased(a, b, right.pose, right.information, right.pairs, 3.0));
 	// and the loop search refuses the place over a window of more than a period
 	MStepOptions o;
 	o.loopSearchVectors = 40;
@@ -111,5 +112,6 @@ TEST(AliasSweep, AUniquePlaceIsNotAliased)
 	const VectorMatcher matcher;
 	const MatchResult r = matcher.match(a, b, xb - xa);
 	ASSERT_TRUE(r.ok()) << toString(r.status);
-	EXPECT_FALSE(AliasSweep(matcher, MStepOptions{}.loopSearchAmbiguity).aliased(a, b, r, 6.0));
+	EXPECT_FALSE(
+		AliasSweep(matcher, MStepOptions{}.loopSearchAmbiguity).aliased(a, b, r.pose, r.information, r.pairs, 6.0));
 }

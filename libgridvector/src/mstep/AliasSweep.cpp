@@ -20,8 +20,6 @@ double clippedLength(double tp, double tq, double len, double lo, double hi)
 	return b > a ? len * (b - a) / std::abs(tq - tp) : 0.0;
 }
 
-/** Shifts closer than this to the registration [m] are the same solution (LoopSearch's kDistinctDistance). */
-constexpr double kDistinct = 0.3;
 /** The sweep samples the shifts a final criterion-2 gate apart and scores each under the final gates widened by
  * this: an alias lies within the widened gates of a sample, so its correspondences are found there. */
 constexpr double kSampleGateFactor = 2.0;
@@ -91,33 +89,33 @@ double AliasSweep::share(const std::vector<MatchSegment>& a, const std::vector<M
 	return std::min(1.0, matched / co);
 }
 
-// Local maxima of the covisible share along the weak direction, refined by the matcher, against r's own share.
-bool AliasSweep::aliased(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b, const MatchResult& r,
-						 double reach) const
+// Local maxima of the covisible share along the weak direction, refined by the matcher, against the registration's.
+bool AliasSweep::aliased(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b, const TPose2D& pose,
+						 const Eigen::Matrix3d& information, const std::vector<VectorPair>& pairs, double reach) const
 {
-	if (!r.ok() || reach <= kDistinct) return false;
-	const Vector2d v = weakDirection(r.information);
-	const double own = share(a, b, r.pose, r.pairs, v);
+	if (reach <= kDistinctDistance) return false;
+	const Vector2d v = weakDirection(information);
+	const double own = share(a, b, pose, pairs, v);
 	const MatchGates gates = matcher_.finalGates(kSampleGateFactor);
 	const double step = matcher_.options().gateRhoFinal;
 	const int n = int(std::floor(reach / step));
-	const auto at = [&](double s) { return TPose2D(r.pose.x + s * v.x(), r.pose.y + s * v.y(), r.pose.phi); };
+	const auto at = [&](double s) { return TPose2D(pose.x + s * v.x(), pose.y + s * v.y(), pose.phi); };
 	std::vector<double> sh(size_t(2 * n + 1));
-	std::vector<VectorPair> pairs;
+	std::vector<VectorPair> found;
 	for (int k = -n; k <= n; ++k)
 	{
 		const TPose2D q = at(k * step);
-		matcher_.correspondences(a, b, q, gates, &pairs);
-		sh[size_t(k + n)] = share(a, b, q, pairs, v);
+		matcher_.correspondences(a, b, q, gates, &found);
+		sh[size_t(k + n)] = share(a, b, q, found, v);
 	}
 	for (int k = -n; k <= n; ++k)
 	{
 		const double s = k * step, here = sh[size_t(k + n)];
-		if (std::abs(s) < kDistinct || here < ambiguity_ * own) continue;
+		if (std::abs(s) < kDistinctDistance || here < ambiguity_ * own) continue;
 		if ((k > -n && sh[size_t(k + n - 1)] > here) || (k < n && sh[size_t(k + n + 1)] >= here)) continue;
 		const MatchResult alt = matcher_.match(a, b, at(s));
-		const Vector2d d(alt.pose.x - r.pose.x, alt.pose.y - r.pose.y);
-		if (alt.ok() && d.norm() >= kDistinct && d.norm() <= reach &&
+		const Vector2d d(alt.pose.x - pose.x, alt.pose.y - pose.y);
+		if (alt.ok() && d.norm() >= kDistinctDistance && d.norm() <= reach &&
 			share(a, b, alt.pose, alt.pairs, v) >= ambiguity_ * own)
 			return true;
 	}

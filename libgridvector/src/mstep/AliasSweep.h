@@ -16,16 +16,21 @@ namespace gridvector
  * Two scans of a corridor taken some metres apart share only part of their view, so the matched length
  * prefers the shift that lays one view over the other: at a wrong shift by one period of the corridor's
  * doors it can match more than at the true one. What each shift explains is compared instead as the share
- * of what both scans show along that direction there (covisibleLength: the crosswise vectors): a distinct registration along that direction, within
- * `reach`, accepted by the matcher and explaining `ambiguity` of the registration's share, makes it aliased.
- * Uses the caller's matcher (its workspace: one thread). */
+ * of what both scans show along that direction there (covisibleLength: the crosswise vectors): a distinct registration
+ * along that direction, within `reach`, accepted by the matcher and explaining `ambiguity` of the registration's share,
+ * makes it aliased. Uses the caller's matcher (its workspace: one thread). */
 class AliasSweep
 {
    public:
+	/** Solutions closer than this [m] are one (LoopSearch's test of distinct solutions too). */
+	static constexpr double kDistinctDistance = 0.3;
+
 	AliasSweep(const VectorMatcher& matcher, double ambiguity) : matcher_(matcher), ambiguity_(ambiguity) {}
 
-	bool aliased(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b, const MatchResult& r,
-				 double reach) const;
+	/** Is the accepted registration `pose` of B in A (its `information`, its correspondences `pairs`) aliased? */
+	bool aliased(const std::vector<MatchSegment>& a, const std::vector<MatchSegment>& b,
+				 const mrpt::math::TPose2D& pose, const Eigen::Matrix3d& information,
+				 const std::vector<VectorPair>& pairs, double reach) const;
 
 	/** The unit translation direction the information constrains least (in A's frame). */
 	static Eigen::Vector2d weakDirection(const Eigen::Matrix3d& information);

@@ -29,8 +29,8 @@ constexpr double kDuplicateDeg = 2.0;
 /** Hypotheses are ranked by the length matched under the final matcher gates widened by this (they are not refined
  * yet). */
 constexpr double kScoreGateFactor = 2.0;
-/** Refined solutions further apart than this [m] or turned more than kDistinctDeg are distinct places (aliasing). */
-constexpr double kDistinctDistance = 0.3;
+/** Refined solutions further apart than AliasSweep::kDistinctDistance or turned more than this [deg] are distinct
+ * places (aliasing). */
 constexpr double kDistinctDeg = 5.0;
 inline double wrap(double a) { return mrpt::math::wrapToPi(a); }
 
@@ -150,7 +150,7 @@ std::vector<MatchResult> LoopSearch::solutions(const std::vector<MatchSegment>& 
 bool LoopSearch::ambiguous(const MatchResult& best, const std::vector<MatchResult>& others) const
 {
 	for (const MatchResult& r : others)
-		if ((std::hypot(r.pose.x - best.pose.x, r.pose.y - best.pose.y) > kDistinctDistance ||
+		if ((std::hypot(r.pose.x - best.pose.x, r.pose.y - best.pose.y) > AliasSweep::kDistinctDistance ||
 			 std::abs(wrap(r.pose.phi - best.pose.phi)) > kDistinctDeg * kDeg) &&
 			r.matchedLength >= opts_.loopSearchAmbiguity * best.matchedLength)
 			return true;
@@ -169,7 +169,8 @@ MatchResult LoopSearch::search(const std::vector<MatchSegment>& a, const std::ve
 	// corridor slide) and be unambiguous, also along its weakest direction (AliasSweep)
 	if (best.ok() && (best.matchedShare < opts_.loopSearchMinShare ||
 					  best.translationDegeneracy < matcher_.options().degenerateRatio || ambiguous(best, results) ||
-					  AliasSweep(matcher_, opts_.loopSearchAmbiguity).aliased(a, b, best, w.translation)))
+					  AliasSweep(matcher_, opts_.loopSearchAmbiguity)
+						  .aliased(a, b, best.pose, best.information, best.pairs, w.translation)))
 		best.status = MatchStatus::TooFewMatches;
 	return best;
 }

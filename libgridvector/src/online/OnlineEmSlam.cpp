@@ -5,8 +5,8 @@
 #include "map/OccupancyConversion.h"
 #include "mstep/AliasSweep.h"
 #include "mstep/Consistency.h"
-#include "mstep/PoseFusion.h"
 #include "mstep/ConstraintUpdate.h"
+#include "mstep/PoseFusion.h"
 
 #include <mrpt/math/wrap2pi.h>
 
@@ -123,8 +123,7 @@ void OnlineEmSlam::addEdges(uint32_t i, OnlineStep& st)
 				const EdgeKey key{from, i};
 				const TPose2D rel = keyPose_[i] - keyPose_[from];
 				Constraint c;
-				if (overlaps_.registerOverlap(key, from == p.nearest, segs_, rel, c, rep_) &&
-					!aliased(from, i, c))
+				if (overlaps_.registerOverlap(key, from == p.nearest, segs_, rel, c, rep_) && !aliased(from, i, c))
 				{
 					book_.keep(key, std::move(c), rep_);
 					fresh.push_back(key);
@@ -184,14 +183,9 @@ TPose2D OnlineEmSlam::sequentialPose(uint32_t i, uint32_t w)
 // of its passes: an alias within that reach (AliasSweep) makes it no edge.
 bool OnlineEmSlam::aliased(uint32_t from, uint32_t to, const Constraint& c) const
 {
-	MatchResult r;
-	r.status = MatchStatus::Ok;
-	r.pose = c.z;
-	r.information = c.information;
-	r.matchedLength = c.matchedLength;
-	r.pairs = c.correspondences;
-	const double reach = loopClosure_.windowOf(from, to).translation;
-	return AliasSweep(reg_.matcher(), cfg_.mstep.loopSearchAmbiguity).aliased(segs_[from], segs_[to], r, reach);
+	return AliasSweep(reg_.matcher(), cfg_.mstep.loopSearchAmbiguity)
+		.aliased(segs_[from], segs_[to], c.z, c.information, c.correspondences,
+				 loopClosure_.windowOf(from, to).translation);
 }
 
 OnlineEmSlam::Optimisation OnlineEmSlam::takeOptimisation()

@@ -136,7 +136,8 @@ class OnlineEmSlam
 	MStepReport report() const;
 
    private:
-	/** The pose of a scan from the last keyframe: its registration from the odometry guess, else the guess. */
+	/** The pose of a scan from the last keyframe: its registration from the odometry guess fused with that odometry
+	 * (the guess alone when the registration fails or the motion model rules it out). */
 	mrpt::math::TPose2D poseNow(const std::vector<MatchSegment>& segs, const mrpt::math::TPose2D& odometry,
 								bool& registered) const;
 	/** Keyframe i's sequential edges to its `w` predecessors and its pose fused from them and the odometry. */

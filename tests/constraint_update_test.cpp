@@ -70,7 +70,7 @@ TEST(ConstraintUpdate, AnEdgeOfAVectorWhoseChildrenChangedIsRegisteredAgain)
 }
 
 // Sec. 4.3: "if two nodes are far apart now, but there is an edge between them at the last step, the edge will
-// be destroyed"; an edge whose vectors are gone fails its re-registration and goes too.
+// be destroyed"; so is an overlap edge whose scans no longer share static vectors.
 TEST(ConstraintUpdate, EdgesThatNoLongerOverlapAreDropped)
 {
 	Room r;
@@ -79,14 +79,40 @@ TEST(ConstraintUpdate, EdgesThatNoLongerOverlapAreDropped)
 	r.book.edges[{0, 2}] = far;
 	r.book.edges[{1, 2}] = far;
 	r.book.edges.at({1, 2}).from = 1;
-	r.book.edges[{0, 1}] = r.registered(0, 1, EdgeKind::Sequential);
+	r.book.edges[{0, 1}] = r.registered(0, 1, EdgeKind::Overlap);
 	r.scans[1].clear();  // the E-step made all of scan 1 dynamic
 	r.book.beginStep(r.scans, nullptr);
 	MStepReport rep;
 	updateConstraints(r.book, r.reg, r.cfg.mstep, r.scans, r.poses, rep);
 	EXPECT_EQ(rep.removed, 3u);
 	EXPECT_TRUE(r.book.edges.empty());
-	EXPECT_EQ(rep.registrations, 1u);  // only the sequential edge was tried (the others are too far apart)
+	EXPECT_EQ(rep.registrations, 0u);  // two too far apart, (0, 1) sharing no static length any more
+}
+
+// A sequential pair the E-step left too few static vectors to register keeps its last measurement: an E-step on a
+// trajectory still off at its loops calls misaligned walls dynamic, and dropping the pair would leave its scans
+// to the odometry (acapulco: EM went from 1.6 m to 39.8 m loop error that way).
+TEST(ConstraintUpdate, ASequentialEdgeWhoseVectorsWentDynamicKeepsItsMeasurement)
+{
+	Room r;
+	const Constraint c = r.registered(0, 1, EdgeKind::Sequential);
+	r.book.edges[{0, 1}] = c;
+	r.scans[1].clear();  // the E-step made all of scan 1 dynamic
+	r.book.beginStep(r.scans, nullptr);
+	MStepReport rep;
+	updateConstraints(r.book, r.reg, r.cfg.mstep, r.scans, r.poses, rep);
+	EXPECT_EQ(rep.registrations, 1u);
+	EXPECT_EQ(rep.failedRegistrations, 1u);
+	EXPECT_EQ(rep.removed + rep.recomputed, 0u);
+	ASSERT_EQ(r.book.edges.count({0, 1}), 1u);
+	const Constraint& kept = r.book.edges.at({0, 1});
+	EXPECT_DOUBLE_EQ(kept.z.x, c.z.x);
+	EXPECT_DOUBLE_EQ(kept.z.phi, c.z.phi);
+	EXPECT_EQ(kept.correspondences, c.correspondences);
+	// confirmed at the current scans: the next M-step with nothing changed does not try it again
+	MStepReport again;
+	updateConstraints(r.book, r.reg, r.cfg.mstep, r.scans, r.poses, again);
+	EXPECT_EQ(again.registrations, 0u);
 }
 
 TEST(ConstraintUpdate, TheChangedShareOfFig11)

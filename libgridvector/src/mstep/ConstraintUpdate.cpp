@@ -56,6 +56,15 @@ void updateConstraints(ConstraintSet& book, const PairRegistration& reg, const M
 		Constraint fresh;
 		if (!reg.registerPair(c.from, c.to, c.kind, scans, rel, fresh, rep))
 		{
+			if (c.kind == EdgeKind::Sequential)
+			{
+				// Too few static vectors left to register the pair: its last measurement (of the vectors
+				// static then) stands. An E-step run on a trajectory still off at its loops calls the walls of
+				// the misaligned passes dynamic (Eq. 8); dropping the pair would hand its scans to the odometry.
+				book.confirm(c, rel);
+				++it;
+				continue;
+			}
 			it = book.edges.erase(it);
 			++rep.removed;
 			continue;

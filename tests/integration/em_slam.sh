@@ -83,6 +83,9 @@ o = json.load(open(sys.argv[1]))["online"]
 assert 0 < o["latency_ms"]["median"] <= o["latency_ms"]["p99"] <= o["latency_ms"]["max"], o["latency_ms"]
 assert 0 < o["cpu_ms"]["median"] <= o["cpu_ms"]["p99"], o["cpu_ms"]
 assert o["keyframes"] > 0 and o["edges"]["sequential"] > 0 and o["refined"] is False, o
+# the doors and the final merges run inside the final map's time online: not timed apart, so null, not 0
+s = json.load(open(sys.argv[1]))["seconds"]
+assert s["doors"] is None and s["final_merge"] is None and s["final_map"] > 0, s
 PY
 for d in online; do
   a=$("$GV_BIN/gv-eval" traj "$tmp/$d/trajectory.txt" "$tmp/sim/truth_trajectory.txt" | sed -n 's/.*ate_rmse_m=\([0-9.]*\).*/\1/p')

@@ -179,12 +179,12 @@ OptimizeStats PoseGraph::optimizeGaussNewton(bool graduate)
 	// a start where (nearly) every registration already fits needs no graduation
 	std::vector<double> chi;
 	updateResiduals(nodes_, false);
-	bool farLoop = false;  // a loop-search edge that needs a large correction
+	bool anyFarLoop = false;  // a loop-search edge that needs a large correction
 	for (const auto& e : edges_)
 		if (e.active && e.kind != EdgeKind::Odometry)
 		{
 			chi.push_back(e.chi2);
-			farLoop = farLoop || (e.kind == EdgeKind::Loop && e.chi2 > trigger);
+			anyFarLoop = anyFarLoop || (e.kind == EdgeKind::Loop && farLoop(e.chi2, opts_));
 		}
 	double pct = 0;  // the chi2 at graduation_percentile
 	if (!chi.empty())
@@ -194,7 +194,7 @@ OptimizeStats PoseGraph::optimizeGaussNewton(bool graduate)
 		std::nth_element(chi.begin(), k, chi.end());
 		pct = *k;
 	}
-	const double phi0 = pct < trigger && !farLoop && !graduate ? target : std::max(target, opts_.graduationStartPhi);
+	const double phi0 = pct < trigger && !anyFarLoop && !graduate ? target : std::max(target, opts_.graduationStartPhi);
 	for (double phi = phi0;; phi = std::max(target, phi * opts_.graduationFactor))
 	{
 		phi_ = phi;

@@ -80,6 +80,9 @@ class PoseGraph
 	 * one's frame, as VectorMatcher gives it) in the frame of error(): its translation is
 	 * in z's frame, so the information is D^T I D with D = diag(R(z.phi), 1). */
 	static Eigen::Matrix3d errorFrameInformation(const Eigen::Matrix3d& information, const mrpt::math::TPose2D& z);
+	/** Does a loop-search edge with this chi2 at the start need a correction so large that Eq. 22
+	 * graduates its robust kernel (chi2 > graduation_trigger x robust_kernel_width)? */
+	static bool farLoop(double chi2, const PoseGraphOptions& o) { return chi2 > o.graduationTrigger * o.robustKernelWidth; }
 	/** Odometry edge information from the motion model of the options. */
 	static Eigen::Matrix3d odometryInformation(const mrpt::math::TPose2D& delta, const PoseGraphOptions& o);
 

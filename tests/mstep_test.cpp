@@ -722,6 +722,9 @@ double relativeError(const AcesSeed8& a, size_t i, size_t j)
 // correct 136-308: the south corridor ends up ~3 m along its axis from the x = 0 corridor.
 // With the setting those registrations moved beyond the matcher's initial gates, so the pairs
 // are registered again from the estimate optimised with the other edges: at the true pose.
+// Since session 20's matcher (no angle step at the final gates) the registrations no longer lock
+// onto the recess even without the setting (0 aliased edges, 149-309 0.055 m off): the setting is
+// checked on its own, and it must not make the place worse.
 TEST(MStep, AnOverlapRegistrationThatMovedFarIsRedoneFromTheOptimisedEstimate)
 {
 	ASSERT_TRUE(MStepOptions{}.overlapReregisterMoved);  // on by default; compared off and on below
@@ -736,8 +739,7 @@ TEST(MStep, AnOverlapRegistrationThatMovedFarIsRedoneFromTheOptimisedEstimate)
 		return n;
 	};
 	const AcesSeed8 off = acesSeed8FirstMStep(false), on = acesSeed8FirstMStep(true);
-	EXPECT_GE(aliased(off), 3u);
-	EXPECT_GT(relativeError(off, 149, 309), 2.5);
+	EXPECT_LE(aliased(on), aliased(off));
 	EXPECT_EQ(aliased(on), 0u);
 	EXPECT_LT(relativeError(on, 149, 309), 0.3);
 	EXPECT_LT(relativeError(on, 136, 308), 0.3);

@@ -258,7 +258,10 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a, const std::
 		if (int(pairs_.size()) < opts_.minMatches) break;
 		for (Pair& p : pairs_) p.weight = 1.0;
 		const bool tight = gates.rho <= fin.rho + 1e-12 && gates.psi <= fin.psi + 1e-12;
-		const double dphi = rotateAboutMatchedCentre(T);  // rotation from weighted angle differences
+		// rotation from the weighted angle differences while the gates are wide (it brings the rotation into the
+		// basin); at the final gates from the Gauss-Newton step alone: short vectors' angles (a wall pieced
+		// into short vectors, far walls) are noisy and biased, and a step from them pulls the fit off its optimum
+		const double dphi = tight ? 0.0 : rotateAboutMatchedCentre(T);
 		// joint Gauss-Newton step on point-to-line distances (translation and rotation)
 		normalEquations(b, T, std::max(kSigmaFloor, kRobustScaleGateShare * gates.rho), H, g, sumW, sumWr2);
 		const double damp = 1e-6 * std::max(1e-12, H.trace());

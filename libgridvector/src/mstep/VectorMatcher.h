@@ -74,9 +74,13 @@ struct MatchGates
  * Each iteration: transform B by the current estimate; correspondences by the
  * three criteria of Sec. 3.2 (direction psi, line (theta, rho), centres closer
  * than half the summed lengths) with gates that start wide and tighten;
- * rotation from the overlap-weighted angle differences; then a Gauss-Newton
- * step on point-to-line distances of the overlap-clipped segments (integrated
- * exactly along each segment by Simpson's rule) with Cauchy weights.
+ * while the gates are wider than their final values, the rotation from the
+ * overlap-weighted angle differences (it brings the rotation into the basin);
+ * then a Gauss-Newton step on point-to-line distances of the overlap-clipped
+ * segments (integrated exactly along each segment by Simpson's rule) with Cauchy
+ * weights, at the final gates alone, so the fit converges to the point-to-line
+ * optimum (short vectors' angles are noisy and biased: an angle step there pulls
+ * the estimate off it every iteration).
  * One workspace per matcher, written by its const members: one matcher per
  * thread. MStep, LoopSearch and the graphslam deciders each own one and call it
  * from the one thread that drives them; CGridVectorMap's const members use none.

@@ -194,8 +194,8 @@ void VectorMatcher::normalEquations(const std::vector<MatchSegment>& b, const TP
 	}
 }
 
-// The rotation step of the weighted angle differences applied to T about the matched centroid; returns it.
-double VectorMatcher::rotateAboutMatchedCentre(TPose2D& T) const
+// The rotation step of the weighted angle differences applied to T about the matched centroid.
+void VectorMatcher::rotateAboutMatchedCentre(TPose2D& T) const
 {
 	const double dphi = rotationStep();
 	Vector2d cen(0, 0);
@@ -207,7 +207,6 @@ double VectorMatcher::rotateAboutMatchedCentre(TPose2D& T) const
 	T.x = cen.x() + cd * t0.x() - sd * t0.y();
 	T.y = cen.y() + sd * t0.x() + cd * t0.y();
 	T.phi = wrap(T.phi + dphi);
-	return dphi;
 }
 
 // Sec. 3.2's criteria at a fixed pose: an edge's M_cor (Eq. 25) and Sec. 4.3's overlap test.
@@ -261,7 +260,7 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a, const std::
 		// rotation from the weighted angle differences while the gates are wide (it brings the rotation into the
 		// basin); at the final gates from the Gauss-Newton step alone: short vectors' angles (a wall pieced
 		// into short vectors, far walls) are noisy and biased, and a step from them pulls the fit off its optimum
-		const double dphi = tight ? 0.0 : rotateAboutMatchedCentre(T);
+		if (!tight) rotateAboutMatchedCentre(T);
 		// joint Gauss-Newton step on point-to-line distances (translation and rotation)
 		normalEquations(b, T, std::max(kSigmaFloor, kRobustScaleGateShare * gates.rho), H, g, sumW, sumWr2);
 		const double damp = 1e-6 * std::max(1e-12, H.trace());
@@ -272,7 +271,7 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a, const std::
 		T.y += delta.y();
 		T.phi = wrap(T.phi + delta.z());
 		if (tight && delta.head<2>().norm() < kConvergenceTranslation &&
-			std::abs(delta.z()) + std::abs(dphi) < kConvergenceRotation)
+			std::abs(delta.z()) < kConvergenceRotation)
 		{
 			++it;
 			break;

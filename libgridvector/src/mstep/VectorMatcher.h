@@ -127,7 +127,7 @@ class VectorMatcher
 	void transformB(const std::vector<MatchSegment>& b, const mrpt::math::TPose2D& T) const;
 	void gather(const MatchGates& g) const;
 	double rotationStep() const;
-	double rotateAboutMatchedCentre(mrpt::math::TPose2D& T) const;
+	void rotateAboutMatchedCentre(mrpt::math::TPose2D& T) const;
 	void normalEquations(const std::vector<MatchSegment>& b, const mrpt::math::TPose2D& T, double robustScale,
 						 Eigen::Matrix3d& H, Eigen::Vector3d& g, double& sumW, double& sumWr2) const;
 	MatchGates gatesAt(int iteration) const;

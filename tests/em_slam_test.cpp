@@ -59,3 +59,40 @@ TEST(EmSlam, ConvergesToTheTrueTrajectoryAndFindsTheTransientObject)
 		for (const auto& s : m->sources) sources += s.size();
 	EXPECT_EQ(sources, r.perScan.size());
 }
+
+// EM from another trajectory (gv-em-slam --init, --online --refine): it starts there, and the odometry edges
+// (Eq. 20) stay the odometry's.
+TEST(EmSlam, StartsFromAnInitialTrajectoryWithTheOdometryEdges)
+{
+	const auto truth = emtest::ringPath(2, 0.5);
+	const auto odo = emtest::odometryOf(truth, 3, 6.0);
+	const auto walls = emtest::corridorWorld();
+	std::vector<LocalScan> scans, blind(truth.size());
+	for (size_t t = 0; t < truth.size(); ++t)
+	{
+		scans.push_back(emtest::observe(walls, truth[t], 6.0, unsigned(t)));
+		scans.back().scanIndex = int64_t(t);
+		blind[t].scanIndex = int64_t(t);
+	}
+	std::vector<TPose2D> first;
+	const EmResult r = EmSlam().run(scans, odo, truth, [&](const EmIteration& it, const std::vector<TPose2D>& p) {
+		if (it.index == 1) first = p;
+	});
+	EXPECT_LT(emtest::ate(r.poses, truth), 0.05);
+	ASSERT_EQ(first.size(), truth.size());
+	EXPECT_LT(emtest::ate(first, truth), 0.05);  // the first M-step registered from the truth, not from the odometry
+	// nothing to register: only the odometry edges act, so the result has the odometry's shape, not the start's
+	const EmResult b = EmSlam().run(blind, odo, truth);
+	ASSERT_EQ(b.poses.size(), odo.size());
+	const auto worstStep = [&](const std::vector<TPose2D>& p) {  // largest step unlike the odometry's [m]
+		double worst = 0;
+		for (size_t t = 1; t < odo.size(); ++t)
+		{
+			const TPose2D d = (p[t] - p[t - 1]) - (odo[t] - odo[t - 1]);
+			worst = std::max(worst, std::hypot(d.x, d.y));
+		}
+		return worst;
+	};
+	ASSERT_GT(worstStep(truth), 0.02);  // (the start's steps are not the odometry's)
+	EXPECT_LT(worstStep(b.poses), 0.25 * worstStep(truth));
+}

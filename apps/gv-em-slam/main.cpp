@@ -170,16 +170,18 @@ int run(const io::ArgParser& args)
 	}
 	progress.done();
 	fig.extractSeconds = since(t1);
-	if (args.has("init")) odo = app::initialTrajectory(log, odo, args.get("init"));
+	// --init: where EM starts; the odometry edges stay the log's odometry
+	const std::vector<mrpt::math::TPose2D> init =
+		args.has("init") ? app::initialTrajectory(log, odo, args.get("init")) : odo;
 
 	// Sec. 6's sequential mode: the log scan by scan (--online), then (--refine) the batch EM from its trajectory
 	EmIteration start;  // index 0
-	dumpIteration(log, start, odo);
+	dumpIteration(log, start, init);
 	t1 = Clock::now();
 	app::OnlineReplay replay;
 	if (online)
 	{
-		replay = app::replayOnline(log, odo, ex, cfg, progress, args.has("refine"));
+		replay = app::replayOnline(log, init, ex, cfg, progress, args.has("refine"));
 		scans = std::move(replay.scans);
 		if (!quiet)
 		{
@@ -198,7 +200,7 @@ int run(const io::ArgParser& args)
 		EmSlam em(cfg);
 		if (std::getenv("GV_EM_DEBUG_DIR")) em.setMStepObserver(dumpEdges);
 		res = em.run(
-			scans, online ? res.poses : odo,
+			scans, odo, online ? res.poses : init,
 			[&](const EmIteration& it, const std::vector<mrpt::math::TPose2D>& poses) {
 				progress.done();
 				if (!quiet) printIteration(it);

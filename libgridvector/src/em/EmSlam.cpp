@@ -103,18 +103,28 @@ bool EmSlam::isKeyframe(const TPose2D& lastKeyOdometry, const TPose2D& odometry,
 EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPose2D>& odometry,
 					 const IterationCallback& onIteration, const ProgressCallback& progress) const
 {
+	return run(scans, odometry, odometry, onIteration, progress);
+}
+
+EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPose2D>& odometry,
+					 const std::vector<TPose2D>& initial, const IterationCallback& onIteration,
+					 const ProgressCallback& progress) const
+{
 	if (scans.size() != odometry.size()) throw std::invalid_argument("EmSlam: scans and odometry differ in length");
+	if (initial.size() != odometry.size())
+		throw std::invalid_argument("EmSlam: initial trajectory and odometry differ in length");
 	const auto key = keyframes(odometry, cfg_.mstep);
 	std::vector<LocalScan> ks;
-	std::vector<TPose2D> ko;
+	std::vector<TPose2D> ko, ki;
 	for (size_t k = 0; k < key.size(); ++k)
 	{
 		ks.push_back(scans[key[k]]);
 		ks.back().scanIndex = int64_t(k);
 		ko.push_back(odometry[key[k]]);
+		ki.push_back(initial[key[k]]);
 	}
 	EmResult res = runKeyframes(
-		ks, ko,
+		ks, ko, ki,
 		[&](const EmIteration& it, const std::vector<TPose2D>& kp) {
 			if (onIteration) onIteration(it, expand(kp, key, odometry));
 		},
@@ -209,12 +219,13 @@ void finalMap(EmResult& res, const EStep& estep, const std::vector<TPose2D>& ePo
 // Sec. 4: M-step (Eq. 16-25) and E-step (Eq. 14-15) alternated until an M-step changes no
 // constraint after an E-step that changed no vector's children (Fig. 11), then the final map.
 EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::vector<TPose2D>& odometry,
-							  const IterationCallback& onIteration, const ProgressCallback& progress,
-							  const std::vector<size_t>& key) const
+							  const std::vector<TPose2D>& initial, const IterationCallback& onIteration,
+							  const ProgressCallback& progress, const std::vector<size_t>& key) const
 {
 	EmResult res;
 	MStep mstep(cfg_);
 	mstep.setOdometry(odometry);
+	if (initial != odometry) mstep.startFromPoses();
 	const EStep estep(cfg_.estep, cfg_.grid);
 	DoorExclusion doorExclusion(cfg_, estep);  // Sec. 5.3 (doors.during_em)
 	auto segs = initialSegments(scans);
@@ -222,7 +233,7 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 	EStepResult prevE;
 	std::vector<std::vector<uint64_t>> changedIds;  // Eq. 25: per scan, vectors whose children changed
 	std::vector<TPose2D> ePoses;  // trajectory of the last E-step
-	res.poses = odometry;
+	res.poses = initial;
 	int current = 0;
 	if (progress) mstep.setProgress([&](const char* stage, double f) { progress(stage, current, f); });
 	for (int k = 1; k <= cfg_.mstep.maxIterations; ++k)

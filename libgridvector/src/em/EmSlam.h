@@ -68,6 +68,11 @@ class EmSlam
 
 	EmResult run(const std::vector<LocalScan>& scans, const std::vector<mrpt::math::TPose2D>& odometry,
 				 const IterationCallback& onIteration = {}, const ProgressCallback& progress = {}) const;
+	/** EM from `initial` (one pose per scan: the online EM-SLAM's or another system's trajectory) instead of
+	 * the odometry; the odometry edges (Eq. 20), the keyframes and the loop-search windows stay the odometry's. */
+	EmResult run(const std::vector<LocalScan>& scans, const std::vector<mrpt::math::TPose2D>& odometry,
+				 const std::vector<mrpt::math::TPose2D>& initial, const IterationCallback& onIteration = {},
+				 const ProgressCallback& progress = {}) const;
 
 	/** Diagnosis: called after each M-step with the iteration (1-based), the M-step (its
 	 * constraints index keyframes), the static vectors it registered (per keyframe, in its
@@ -101,8 +106,8 @@ class EmSlam
 
    private:
 	EmResult runKeyframes(const std::vector<LocalScan>& scans, const std::vector<mrpt::math::TPose2D>& odometry,
-						  const IterationCallback& onIteration, const ProgressCallback& progress,
-						  const std::vector<size_t>& key) const;
+						  const std::vector<mrpt::math::TPose2D>& initial, const IterationCallback& onIteration,
+						  const ProgressCallback& progress, const std::vector<size_t>& key) const;
 
 	GridVectorConfig cfg_;
 	MStepObserver observer_;

@@ -36,7 +36,8 @@ void MStep::setOdometry(std::vector<TPose2D> odometry)
 }
 
 // Eq. 22 re-optimised if a constraint changed (Eq. 24; else the estimate is still optimal).
-void MStep::optimise(const Scans& scans, Poses& poses, const std::vector<MovedPair>& moved, MStepReport& rep)
+void MStep::optimise(const Scans& scans, Poses& poses, const std::vector<MovedPair>& moved, MStepReport& rep,
+					 bool always)
 {
 	if (!moved.empty())
 	{
@@ -45,7 +46,7 @@ void MStep::optimise(const Scans& scans, Poses& poses, const std::vector<MovedPa
 		if (!reregisterMoved(overlaps_, book_, optimiser_, cfg_.mstep, odometry_, scans, poses, moved, rep))
 			optimiser_.countRejections(rejected, book_.edges);  // it was the last
 	}
-	else if (rep.added + rep.removed + rep.recomputed > 0)
+	else if (always || rep.added + rep.removed + rep.recomputed > 0)
 		optimiser_.optimise(poses, odometry_, book_.edges, rep);
 }
 
@@ -59,16 +60,15 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 	if (odometry_.size() != scans.size()) throw std::invalid_argument("MStep: odometry and scans differ in length");
 	const size_t before = book_.edges.size();
 	book_.beginStep(scans, changedChildren);
-	if (!started_)
-	{
-		chain_.chain(scans, poses, rep);
-		started_ = true;
-	}
+	const bool fromPoses = !started_ && startFromPoses_;  // a start that is not the graph's optimum
+	if (!started_ && !startFromPoses_) chain_.chain(scans, poses, rep);
+	else if (fromPoses) chain_.addMissing(scans, poses, rep);
 	else
 	{
 		updateConstraints(book_, reg_, cfg_.mstep, scans, poses, rep);  // Eq. 24-25
 		chain_.addMissing(scans, poses, rep);
 	}
+	started_ = true;
 	rep.updateSeconds = secondsSince(t0);
 	const auto tOverlap = std::chrono::steady_clock::now();
 	std::vector<MovedPair> moved;
@@ -78,7 +78,7 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 	loops_.closeLoops(scans, poses, fresh, rep);
 	rep.loopSeconds = secondsSince(tLoop);
 	rep.registrationSeconds = secondsSince(t0);
-	optimise(scans, poses, moved, rep);
+	optimise(scans, poses, moved, rep, fromPoses);
 	summarise(book_, before, rep);
 	rep.seconds = secondsSince(t0);
 	return rep;

@@ -29,6 +29,9 @@ class MStep
 
 	/** Dead-reckoning pose of every scan (the odometry edges). */
 	void setOdometry(std::vector<mrpt::math::TPose2D> odometry);
+	/** The first call's `poses` are the estimate to start from (another trajectory than the odometry's): its
+	 * sequential pairs are registered from them instead of chained from the odometry. */
+	void startFromPoses() { startFromPoses_ = true; }
 	/** Every vector of each scan as extracted, static or dynamic, in its scan's frame: what the
 	 * loop search falls back to when the static vectors find nothing (mstep.loop_search_all_vectors).
 	 * Not set: the loop search uses the static vectors only. */
@@ -36,7 +39,7 @@ class MStep
 
 	/** One M-step. `scans[t]`: static vectors of scan t in its own frame
 	 * (ids stable across iterations); `poses`: in: current estimate (ignored
-	 * on the first call, which chains from odometry), out: optimised.
+	 * on the first call, which chains from odometry, unless startFromPoses), out: optimised.
 	 * `changedChildren[t]`: ids of the static vectors of scan t whose parent's children M_chd
 	 * the E-step before this M-step changed (Eq. 25, EStep::changedChildren): the edges whose
 	 * correspondences involve one are re-registered (Fig. 5) even where the ids stayed the same
@@ -54,9 +57,10 @@ class MStep
 	Eigen::Matrix3d graphInformation(const Constraint& c) const { return gridvector::graphInformation(c, cfg_.mstep); }
 
    private:
-	/** The optimisation that ends the M-step: without the moved pairs first, if any (mstep.overlap_reregister_moved).
-	 */
-	void optimise(const Scans& scans, Poses& poses, const std::vector<MovedPair>& moved, MStepReport& rep);
+	/** The optimisation that ends the M-step: without the moved pairs first, if any (mstep.overlap_reregister_moved);
+	 * if no constraint changed only when `always`. */
+	void optimise(const Scans& scans, Poses& poses, const std::vector<MovedPair>& moved, MStepReport& rep,
+				  bool always = false);
 
 	GridVectorConfig cfg_;
 	ProgressFn progress_;
@@ -68,6 +72,7 @@ class MStep
 	LoopClosure loops_;
 	GraphOptimisation optimiser_;
 	bool started_ = false;
+	bool startFromPoses_ = false;
 };
 
 }  // namespace gridvector

@@ -7,7 +7,8 @@
 // --online replays the log scan by scan through OnlineEmSlam (Sec. 6's sequential mode) and writes the same
 // files from its final map and trajectory, plus trajectory_online.txt (each scan's pose when it came in) and
 // vectors_live.txt (the live map a robot reads: OnlineEmSlam::vectors() after the last scan, before finish());
-// --refine then runs the batch EM from the online trajectory.
+// --refine then runs the batch EM from the online trajectory (--init: from a given one); the odometry edges stay the
+// log's odometry either way.
 // Writes to DIR: trajectory.txt (t x y theta per scan, the input's timestamps),
 // map.gvmap (serialized mrpt::maps::CGridVectorMap), vectors.txt
 // (x1 y1 x2 y2 p_static static|dynamic), vectors.svg, occupancy.png/.pgm/.yaml,
@@ -282,14 +283,17 @@ int main(int argc, char** argv)
 	args.option("config", "FILE.ini", "gridvector parameters ([gridvector_*] sections)",
 				"the library's defaults (gv-config --ini)");
 	args.option("init", "TRAJ",
-				"start from this 't x y theta' trajectory (e.g. gv-graphslam's) instead of raw odometry",
+				"start from this 't x y theta' trajectory (e.g. gv-graphslam's) instead of raw odometry (the odometry "
+				"edges stay the log's)",
 				"none: raw odometry");
 	args.option("max-iterations", "N", "EM iterations at most (overrides [gridvector_mstep] max_iterations)",
 				std::to_string(GridVectorConfig().mstep.maxIterations));
 	args.flag("online",
 			  "replay the log scan by scan through the online EM-SLAM (OnlineEmSlam); also writes "
 			  "trajectory_online.txt (each scan's pose when it came in) and the per-scan latency in report.json");
-	args.flag("refine", "with --online: run the batch EM afterwards, from the online trajectory");
+	args.flag("refine",
+			  "with --online: run the batch EM afterwards, from the online trajectory (for loops long against the "
+			  "odometry's drift)");
 	args.flag("quiet", "no progress or summary output");
 	return io::runTool(args, argc, argv, [&] {
 		if (!args.has("input") || !args.has("out")) args.fail("--input and --out are required");

@@ -94,7 +94,8 @@ OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::
 	dumpEdges(slam, cfg, "final");
 	EmResult& res = out.result;
 	res.poses = slam.trajectory();
-	res.finalVectors = slam.finalMap(&res.doors);  // Sec. 5.4's doors in it (timed with the final map)
+	if (!keepVectors)  // (--refine's batch EM builds its own final map)
+		res.finalVectors = slam.finalMap(&res.doors);  // Sec. 5.4's doors in it (timed with the final map)
 	res.keyframes = slam.keyframes().size();
 	res.converged = true;  // no EM iterations to converge: the self-check judges the graph and the map
 	res.finalGraph = poseGraphFit(slam.graph());

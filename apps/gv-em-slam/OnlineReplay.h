@@ -41,8 +41,8 @@ struct OnlineReplay
 
 /** Every scan extracted (Sec. 3.1) and given to OnlineEmSlam with its odometry, timed; then finish(),
  * the final map (OnlineEmSlam::finalMap: the batch's, at the online trajectory), doors (Sec. 5.4:
- * leaves dynamic) and the final trajectory in `result`. `keepVectors`: `scans` keeps every V_t (for
- * --refine's batch EM). */
+ * leaves dynamic) and the final trajectory in `result`. `keepVectors` (--refine): `scans` keeps every V_t for the
+ * batch EM, and `result` gets no final map (the batch builds its own). */
 OnlineReplay replayOnline(const io::LogData& log, const std::vector<mrpt::math::TPose2D>& odometry,
 						  const VectorExtractor& ex, const GridVectorConfig& cfg, io::Progress& progress,
 						  bool keepVectors);

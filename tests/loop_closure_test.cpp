@@ -1,9 +1,13 @@
 // LoopClosure: the loop search's orchestration over the trajectory (windows, links between passes).
 #include "mstep/LoopClosure.h"
+#include "extraction/VectorExtractor.h"
+#include "room_loop.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 using namespace gridvector;
 using mrpt::math::TPose2D;
@@ -84,4 +88,43 @@ TEST(LoopClosure, AnUnverifiedEdgeLinksThePlacesOnlyProvisionally)
 	EXPECT_EQ(lc.linked(0, 10, 35, 45, {{5, 40}}), Link::Unverified);
 	book.edges[{7, 42}] = edge(7, 42);
 	EXPECT_EQ(lc.linked(0, 10, 35, 45, {{5, 40}}), Link::Verified);
+}
+
+// MStep::closeLoopsByReach's rounds: the path up to which the window covers its drift, and a maximum path that
+// keeps longer loops out of a round.
+TEST(LoopClosure, ARoundSearchesOnlyLoopsUpToItsPath)
+{
+	const GridVectorConfig cfg;
+	const ProgressFn none;
+	const gvtest::RoomLoop world;
+	const VectorExtractor ex(cfg.extraction, cfg.grid);
+	Scans scans;
+	uint64_t id = 0;
+	for (const auto& t : world.truth)
+	{
+		scans.push_back(MatchSegment::fromVectors(ex.extract(gvtest::castScan(t, gvtest::clutteredRoom())).vectors));
+		for (auto& m : scans.back()) m.id = id++;
+	}
+	std::vector<double> along{0};  // odometry path length from the first pose
+	for (size_t t = 1; t < world.odometry.size(); ++t)
+		along.push_back(along.back() + std::hypot(world.odometry[t].x - world.odometry[t - 1].x,
+												  world.odometry[t].y - world.odometry[t - 1].y));
+	const auto path = [&](const EdgeKey& k) { return along[k.second] - along[k.first]; };
+	const double cut = along.back() / 4;  // half a lap
+	const auto loops = [&](double maxPath) {
+		ConstraintSet book{cfg.matcher};
+		LoopClosure lc(cfg, book, none);
+		lc.setOdometry(world.odometry);
+		EXPECT_NEAR(lc.pathLength(), along.back(), 1e-9);
+		EXPECT_NEAR(lc.coveredPath() * cfg.mstep.loopSearchSigmas * cfg.posegraph.odometrySigmaXYPerM,
+					cfg.mstep.loopSearchMaxRadius, 1e-9);
+		lc.setMaxPath(maxPath);
+		book.beginStep(scans, nullptr);  // the scans' signatures, as MStep::run
+		MStepReport rep;
+		return lc.search(scans, world.odometry, {}, rep);
+	};
+	const auto within = loops(cut);
+	for (const EdgeKey& k : within) EXPECT_LE(path(k), cut) << k.first << " " << k.second;
+	const auto all = loops(std::numeric_limits<double>::infinity());
+	EXPECT_TRUE(std::any_of(all.begin(), all.end(), [&](const EdgeKey& k) { return path(k) > cut; }));
 }

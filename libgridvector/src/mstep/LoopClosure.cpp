@@ -45,6 +45,12 @@ LoopWindow LoopClosure::windowOf(uint32_t from, uint32_t to) const
 	return w;
 }
 
+double LoopClosure::coveredPath() const
+{
+	const double growth = cfg_.mstep.loopSearchSigmas * cfg_.posegraph.odometrySigmaXYPerM;
+	return growth > 0 ? cfg_.mstep.loopSearchMaxRadius / growth : std::numeric_limits<double>::infinity();
+}
+
 // An overlap edge of this M-step not verified yet links the places only provisionally: verifyOverlaps may
 // still drop it, and then no edge would join the passes whose loop search it spared.
 LoopClosure::Link LoopClosure::linked(uint32_t jlo, uint32_t jhi, uint32_t ilo, uint32_t ihi,
@@ -116,6 +122,7 @@ std::vector<EdgeKey> LoopClosure::search(const Scans& scans, const Poses& poses,
 				continue;
 			}
 			if (only && std::find(only->begin(), only->end(), EdgeKey{p.nearest, i}) == only->end()) continue;
+			if (path_[i] - path_[p.nearest] > maxPath_) continue;  // a later round's (MStep::closeLoopsByReach)
 			const Link link = linked(p.lo > K ? p.lo - K : 0, p.hi + K, i > K ? i - K : 0, i, added);
 			if (link == Link::Verified || (link == Link::Unverified && !deferred)) continue;
 			if (searchedNear(i, p.lo, p.hi, poses)) continue;

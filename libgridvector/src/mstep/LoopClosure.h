@@ -5,6 +5,7 @@
 #include "mstep/ConstraintSet.h"
 #include "mstep/LoopSearch.h"
 
+#include <limits>
 #include <map>
 
 namespace gridvector
@@ -43,6 +44,14 @@ class LoopClosure
 	 * join `fresh`), then searchDeferred(); true if a search was deferred. */
 	bool closeLoops(const Scans& scans, const Poses& poses, std::vector<EdgeKey>& fresh, MStepReport& rep);
 
+	/** Loop search only between poses at most this far apart along the odometry path [m] (default: any). */
+	void setMaxPath(double metres) { maxPath_ = metres; }
+	/** The path length below which the loop-search window covers mstep.loop_search_sigmas of the odometry's
+	 * drift (beyond it the window is capped at mstep.loop_search_max_radius); infinite if nothing caps it. */
+	double coveredPath() const;
+	/** The odometry path length from the first pose to the last. */
+	double pathLength() const { return path_.empty() ? 0.0 : path_.back(); }
+
 	/** Loop-search window of the pair from the odometry model along the path between them. */
 	LoopWindow windowOf(uint32_t from, uint32_t to) const;
 	/** Does this edge fix the relative place (see mstep.loop_search_weak_links)? */
@@ -73,6 +82,7 @@ class LoopClosure
 	LoopSearch loops_;
 	Scans all_;  //!< every vector of each scan (setAllVectors), empty if not set
 	std::vector<double> path_;  //!< odometry path length from the first pose
+	double maxPath_ = std::numeric_limits<double>::infinity();  //!< setMaxPath
 	std::map<EdgeKey, mrpt::math::TPose2D> searched_;  //!< loop searches tried (at this relative pose)
 };
 

@@ -5,6 +5,7 @@
 #include <mrpt/math/TPose2D.h>
 
 #include <chrono>
+#include <limits>
 #include <stdexcept>
 
 namespace gridvector
@@ -35,6 +36,32 @@ void MStep::setOdometry(std::vector<TPose2D> odometry)
 	loops_.setOdometry(odometry_);
 }
 
+// Beyond the paper (issue 21): a loop whose path is long against the window (the robot back after 700 m of a
+// corridor) is met from the dead reckoning's drift, where a repeated stretch of the place can fit better than
+// the place; closed after the shorter loops corrected the trajectory, its prior is near the truth.
+namespace
+{
+/** Each round of the first M-step's loop closure reaches loops up to this times as long as the last round's: their
+ * drift, after the shorter loops' correction, is again about what the window covers. */
+constexpr double kReachGrowth = 2.0;
+}  // namespace
+
+void MStep::closeLoopsByReach(const Scans& scans, Poses& poses, std::vector<EdgeKey>& fresh, MStepReport& rep)
+{
+	const double total = loops_.pathLength();
+	for (double reach = loops_.coveredPath();; reach *= kReachGrowth)
+	{
+		const bool last = !(reach < total);
+		loops_.setMaxPath(last ? std::numeric_limits<double>::infinity() : reach);
+		const size_t added = rep.added, recomputed = rep.recomputed;
+		loops_.closeLoops(scans, poses, fresh, rep);
+		fresh.clear();
+		if (last) break;
+		if (rep.added != added || rep.recomputed != recomputed)
+			optimiser_.optimise(poses, odometry_, book_.edges, rep, false);  // counted by the M-step's last one
+	}
+}
+
 // Eq. 22 re-optimised if a constraint changed (Eq. 24; else the estimate is still optimal).
 void MStep::optimise(const Scans& scans, Poses& poses, const std::vector<MovedPair>& moved, MStepReport& rep,
 					 bool always)
@@ -60,7 +87,8 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 	if (odometry_.size() != scans.size()) throw std::invalid_argument("MStep: odometry and scans differ in length");
 	const size_t before = book_.edges.size();
 	book_.beginStep(scans, changedChildren);
-	const bool fromPoses = !started_ && startFromPoses_;  // a start that is not the graph's optimum
+	const bool first = !started_;
+	const bool fromPoses = first && startFromPoses_;  // a start that is not the graph's optimum
 	if (!started_ && !startFromPoses_) chain_.chain(scans, poses, rep);
 	else if (fromPoses) chain_.addMissing(scans, poses, rep);
 	else
@@ -75,7 +103,10 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 	auto fresh = overlaps_.add(scans, poses, rep, cfg_.mstep.overlapReregisterMoved ? &moved : nullptr);
 	rep.overlapSeconds = secondsSince(tOverlap);
 	const auto tLoop = std::chrono::steady_clock::now();
-	loops_.closeLoops(scans, poses, fresh, rep);
+	if (first)
+		closeLoopsByReach(scans, poses, fresh, rep);
+	else
+		loops_.closeLoops(scans, poses, fresh, rep);
 	rep.loopSeconds = secondsSince(tLoop);
 	rep.registrationSeconds = secondsSince(t0);
 	optimise(scans, poses, moved, rep, fromPoses);

@@ -57,6 +57,9 @@ class MStep
 	Eigen::Matrix3d graphInformation(const Constraint& c) const { return gridvector::graphInformation(c, cfg_.mstep); }
 
    private:
+	/** The first M-step's loop closure in rounds: the loops whose search window covers their drift first, then,
+	 * from the trajectory they corrected, loops up to twice as long, and so on. */
+	void closeLoopsByReach(const Scans& scans, Poses& poses, std::vector<EdgeKey>& fresh, MStepReport& rep);
 	/** The optimisation that ends the M-step: without the moved pairs first, if any (mstep.overlap_reregister_moved);
 	 * if no constraint changed only when `always`. */
 	void optimise(const Scans& scans, Poses& poses, const std::vector<MovedPair>& moved, MStepReport& rep,

@@ -96,3 +96,21 @@ TEST(EmSlam, StartsFromAnInitialTrajectoryWithTheOdometryEdges)
 	ASSERT_GT(worstStep(truth), 0.02);  // (the start's steps are not the odometry's)
 	EXPECT_LT(worstStep(b.poses), 0.25 * worstStep(truth));
 }
+
+// The first M-step's loop rounds end when there is no loop window at all (mstep.loop_search_max_radius 0).
+TEST(EmSlam, RunsWithoutALoopWindow)
+{
+	const auto truth = emtest::ringPath(1, 0.5);
+	const auto odo = emtest::odometryOf(truth, 3);
+	std::vector<LocalScan> scans;
+	for (size_t t = 0; t < truth.size(); ++t)
+	{
+		scans.push_back(emtest::observe(emtest::corridorWorld(), truth[t], 6.0, unsigned(t)));
+		scans.back().scanIndex = int64_t(t);
+	}
+	GridVectorConfig cfg;
+	cfg.mstep.loopSearchMaxRadius = 0;
+	const EmResult r = EmSlam(cfg).run(scans, odo);
+	EXPECT_EQ(r.poses.size(), truth.size());
+	EXPECT_FALSE(r.iterations.empty());
+}

@@ -36,9 +36,6 @@ void MStep::setOdometry(std::vector<TPose2D> odometry)
 	loops_.setOdometry(odometry_);
 }
 
-// Beyond the paper (issue 21): a loop whose path is long against the window (the robot back after 700 m of a
-// corridor) is met from the dead reckoning's drift, where a repeated stretch of the place can fit better than
-// the place; closed after the shorter loops corrected the trajectory, its prior is near the truth.
 namespace
 {
 /** Each round of the first M-step's loop closure reaches loops up to this times as long as the last round's: their
@@ -46,12 +43,15 @@ namespace
 constexpr double kReachGrowth = 2.0;
 }  // namespace
 
+// Beyond the paper (issue 21): a loop whose path is long against the window (the robot back after 700 m of a
+// corridor) is met from the dead reckoning's drift, where a repeated stretch of the place can fit better than
+// the place; closed after the shorter loops corrected the trajectory, its prior is near the truth.
 void MStep::closeLoopsByReach(const Scans& scans, Poses& poses, std::vector<EdgeKey>& fresh, MStepReport& rep)
 {
 	const double total = loops_.pathLength();
 	for (double reach = loops_.coveredPath();; reach *= kReachGrowth)
 	{
-		const bool last = !(reach < total);
+		const bool last = !(reach > 0 && reach < total);  // (no window, loop_search_max_radius 0: one round)
 		loops_.setMaxPath(last ? std::numeric_limits<double>::infinity() : reach);
 		const size_t added = rep.added, recomputed = rep.recomputed;
 		loops_.closeLoops(scans, poses, fresh, rep);
@@ -89,14 +89,14 @@ MStepReport MStep::run(const Scans& scans, Poses& poses, const std::vector<std::
 	book_.beginStep(scans, changedChildren);
 	const bool first = !started_;
 	const bool fromPoses = first && startFromPoses_;  // a start that is not the graph's optimum
-	if (!started_ && !startFromPoses_) chain_.chain(scans, poses, rep);
-	else if (fromPoses) chain_.addMissing(scans, poses, rep);
+	started_ = true;
+	if (first && !fromPoses)
+		chain_.chain(scans, poses, rep);
 	else
 	{
-		updateConstraints(book_, reg_, cfg_.mstep, scans, poses, rep);  // Eq. 24-25
+		if (!first) updateConstraints(book_, reg_, cfg_.mstep, scans, poses, rep);  // Eq. 24-25
 		chain_.addMissing(scans, poses, rep);
 	}
-	started_ = true;
 	rep.updateSeconds = secondsSince(t0);
 	const auto tOverlap = std::chrono::steady_clock::now();
 	std::vector<MovedPair> moved;

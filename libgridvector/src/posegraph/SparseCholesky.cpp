@@ -1,9 +1,31 @@
 #include "posegraph/SparseCholesky.h"
 
 #include <Eigen/CholmodSupport>
+#ifdef GRIDVECTOR_HAVE_OPENMP
+#include <omp.h>
+#endif
 
 namespace gridvector
 {
+namespace
+{
+/** CHOLMOD's supernodal factorisation opens OpenMP teams of a size fixed when it was built (4 in
+ * Debian's), whatever cores the process may use: on a pinned or loaded process the extra threads spin
+ * (half of a 5,000-scan run's optimisation time on one core). With the runtime's dynamic adjustment a
+ * team gets at most the idle cores of the process's affinity set; the caller's setting is restored. */
+class DynamicTeams
+{
+   public:
+#ifdef GRIDVECTOR_HAVE_OPENMP
+	DynamicTeams() : before_(omp_get_dynamic()) { omp_set_dynamic(1); }
+	~DynamicTeams() { omp_set_dynamic(before_); }
+
+   private:
+	int before_;
+#endif
+};
+}  // namespace
+
 struct SparseCholesky::Impl
 {
 	Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Lower> llt;
@@ -28,6 +50,7 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& H) { impl_->llt.
 bool SparseCholesky::factorize(const Eigen::SparseMatrix<double>& H, double shift)
 {
 	impl_->llt.setShift(shift);
+	const DynamicTeams teams;
 	impl_->llt.factorize(H);
 	return impl_->llt.info() == Eigen::Success;
 }

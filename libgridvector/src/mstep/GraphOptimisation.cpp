@@ -1,4 +1,6 @@
 #include "mstep/GraphOptimisation.h"
+
+#include <algorithm>
 #include <mrpt/math/TPose2D.h>
 
 namespace gridvector
@@ -10,6 +12,18 @@ using Eigen::Matrix3d;
 Matrix3d graphInformation(const Constraint& c, const MStepOptions& opts)
 {
 	return opts.informationInEdgeFrame ? PoseGraph::errorFrameInformation(c.information, c.z) : c.information;
+}
+
+bool farFromEstimate(const std::map<EdgeKey, Constraint>& edges, const Poses& poses,
+					 const std::vector<EdgeKey>& keys, const GridVectorConfig& cfg)
+{
+	return std::any_of(keys.begin(), keys.end(), [&](const EdgeKey& k) {
+		const auto it = edges.find(k);
+		if (it == edges.end() || it->second.rejected) return false;
+		const Constraint& c = it->second;
+		const Eigen::Vector3d e = PoseGraph::error(poses[c.from], poses[c.to], c.z);
+		return PoseGraph::farLoop(e.dot(graphInformation(c, cfg.mstep) * e), cfg.posegraph);
+	});
 }
 
 // Eq. 20-22: the odometry edges (u^t) and the active registrations of static vectors, Eq. 22 minimised.

@@ -13,6 +13,12 @@ constexpr int kReconsiderFreeSteps = 2;
 /** The constraint's information in the frame of the pose graph's error (mstep.information_in_edge_frame). */
 Eigen::Matrix3d graphInformation(const Constraint& c, const MStepOptions& opts);
 
+/** Is one of these edges (those still in `edges` and not rejected) so far from the estimate `poses` that Eq. 22
+ * would graduate its kernel for it (PoseGraph::farLoop)? Else optimising for them moves the poses by less than
+ * the edges' own uncertainty. */
+bool farFromEstimate(const std::map<EdgeKey, Constraint>& edges, const Poses& poses,
+					 const std::vector<EdgeKey>& keys, const GridVectorConfig& cfg);
+
 /** Drives the pose graph (Eq. 22) over the odometry and the constraints of a ConstraintSet. */
 class GraphOptimisation
 {

@@ -178,18 +178,20 @@ bool LoopClosure::closeLoops(const Scans& scans, const Poses& poses, std::vector
 	const auto found = search(scans, poses, fresh, rep, &deferred);
 	fresh.insert(fresh.end(), found.begin(), found.end());
 	verifyOverlaps(book_, cfg_.mstep, poses, fresh, rep);
-	searchDeferred(scans, poses, deferred, rep);
+	const auto later = searchDeferred(scans, poses, deferred, rep);
+	fresh.insert(fresh.end(), later.begin(), later.end());
 	return !deferred.empty();
 }
 
 // The order of the M-step: overlap edges, loop search, verifyOverlaps; a loop search that an overlap edge of
 // this step deferred runs now, where verifyOverlaps dropped the edge, and its edges are verified in turn.
-void LoopClosure::searchDeferred(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& deferred,
-								 MStepReport& rep)
+std::vector<EdgeKey> LoopClosure::searchDeferred(const Scans& scans, const Poses& poses,
+												 const std::vector<EdgeKey>& deferred, MStepReport& rep)
 {
-	if (deferred.empty()) return;
+	if (deferred.empty()) return {};
 	const auto found = search(scans, poses, {}, rep, nullptr, &deferred);
 	verifyOverlaps(book_, cfg_.mstep, poses, found, rep);
+	return found;
 }
 
 }  // namespace gridvector

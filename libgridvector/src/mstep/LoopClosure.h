@@ -38,10 +38,11 @@ class LoopClosure
 								MStepReport& rep, std::vector<EdgeKey>* deferred = nullptr,
 								const std::vector<EdgeKey>* only = nullptr);
 	/** The loop searches an unverified overlap edge deferred, for the pairs verifyOverlaps left unlinked
-	 * (it dropped the edge), their edges verified in turn. */
-	void searchDeferred(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& deferred, MStepReport& rep);
+	 * (it dropped the edge), their edges verified in turn; their keys. */
+	std::vector<EdgeKey> searchDeferred(const Scans& scans, const Poses& poses, const std::vector<EdgeKey>& deferred,
+										MStepReport& rep);
 	/** The step after the overlap edges `fresh`: search(), verifyOverlaps on `fresh` and the loop edges (which
-	 * join `fresh`), then searchDeferred(); true if a search was deferred. */
+	 * join `fresh`), then searchDeferred() (its edges join `fresh` too); true if a search was deferred. */
 	bool closeLoops(const Scans& scans, const Poses& poses, std::vector<EdgeKey>& fresh, MStepReport& rep);
 
 	/** Loop search only between poses at most this far apart along the odometry path [m] (default: any). */

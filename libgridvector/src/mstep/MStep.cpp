@@ -53,12 +53,12 @@ void MStep::closeLoopsByReach(const Scans& scans, Poses& poses, std::vector<Edge
 	{
 		const bool last = !(reach > 0 && reach < total);  // (no window, loop_search_max_radius 0: one round)
 		loops_.setMaxPath(last ? std::numeric_limits<double>::infinity() : reach);
-		const size_t added = rep.added, recomputed = rep.recomputed;
 		loops_.closeLoops(scans, poses, fresh, rep);
-		fresh.clear();
 		if (last) break;
-		if (rep.added != added || rep.recomputed != recomputed)
+		// the next round's windows move only if this round's edges move the poses beyond their own uncertainty
+		if (farFromEstimate(book_.edges, poses, fresh, cfg_))
 			optimiser_.optimise(poses, odometry_, book_.edges, rep, false);  // counted by the M-step's last one
+		fresh.clear();
 	}
 }
 

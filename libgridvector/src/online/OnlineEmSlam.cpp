@@ -224,16 +224,9 @@ void OnlineEmSlam::optimise(bool graduate)
 	applyOptimisation(job);
 }
 
-// PoseGraph's rule for a loop-search edge (PoseGraph::farLoop), for the given edges still in the graph.
 bool OnlineEmSlam::farFromEstimate(const std::vector<EdgeKey>& keys) const
 {
-	return std::any_of(keys.begin(), keys.end(), [&](const EdgeKey& k) {
-		const auto it = book_.edges.find(k);
-		if (it == book_.edges.end() || it->second.rejected) return false;
-		const Constraint& c = it->second;
-		const Eigen::Vector3d e = PoseGraph::error(keyPose_[c.from], keyPose_[c.to], c.z);
-		return PoseGraph::farLoop(e.dot(graphInformation(c, cfg_.mstep) * e), cfg_.posegraph);
-	});
+	return gridvector::farFromEstimate(book_.edges, keyPose_, keys, cfg_);
 }
 
 size_t OnlineEmSlam::reanchor(size_t n)

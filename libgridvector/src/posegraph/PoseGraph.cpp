@@ -134,6 +134,18 @@ double PoseGraph::updateResiduals(const std::vector<TPose2D>& x, bool robust)
 	return total;
 }
 
+double PoseGraph::fixedScaleCost(const std::vector<TPose2D>& x) const
+{
+	double total = 0;
+	for (const auto& e : edges_)
+		if (e.active)
+		{
+			const Vector3d r = error(x[e.from], x[e.to], e.z);
+			total += e.scale * e.scale * r.dot(e.information * r);
+		}
+	return total;
+}
+
 size_t PoseGraph::rejectOutliers()
 {
 	size_t n = 0;
@@ -272,7 +284,11 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 			cand[i].y += dx(col(uint32_t(i)) + 1);
 			cand[i].phi = mrpt::math::wrapToPi(cand[i].phi + dx(col(uint32_t(i)) + 2));
 		}
-		const double cerr = updateResiduals(cand, true);
+		// IRLS: a step is judged on the cost it was solved for, at the scales of the linearisation point: it
+		// majorises the DCS objective (sum of rho(chi2), rho' = scale^2, concave), which an accepted step lowers;
+		// sum scale^2 chi2 with the scales moved to the candidate is not monotone in chi2: pulling a down-weighted
+		// edge in raises it, and a stage spent its iterations refusing such steps
+		const double cerr = fixedScaleCost(cand);
 		++st.iterations;
 		// Nielsen's damping update: gain ratio rho = actual / predicted decrease
 		if (cerr <= err)
@@ -283,13 +299,12 @@ OptimizeStats PoseGraph::levenbergMarquardt(int maxIterations, double minRelativ
 			lambda = std::max(kLmMinLambda, lambda * std::max(1.0 / 3, 1 - std::pow(2 * rho - 1, 3)));
 			nu = 2;
 			nodes_.swap(cand);
-			err = cerr;
+			err = updateResiduals(nodes_, true);  // the scales at the new estimate
 			linearised = false;
 			if (rel < minRelativeDecrease || dx.cwiseAbs().maxCoeff() < 1e-7) break;
 		}
 		else
 		{
-			updateResiduals(nodes_, true);  // restore the scales of the kept estimate
 			// converged as for an accepted step: the cost changes by less than the tolerance
 			if ((cerr - err) / std::max(1e-12, err) < minRelativeDecrease) break;
 			lambda *= nu, nu *= 2;

@@ -99,6 +99,8 @@ class PoseGraph
 	OptimizeStats optimizeGaussNewton(bool graduate);
 	OptimizeStats levenbergMarquardt(int maxIterations, double minRelativeDecrease);
 	double updateResiduals(const std::vector<mrpt::math::TPose2D>& x, bool robust);
+	/** Sum of scale^2 chi2 at x with every edge's DCS scale as it is (the cost the linearisation minimises). */
+	double fixedScaleCost(const std::vector<mrpt::math::TPose2D>& x) const;
 	size_t rejectOutliers();
 
 	PoseGraphOptions opts_;

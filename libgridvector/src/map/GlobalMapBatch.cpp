@@ -13,6 +13,13 @@ namespace gridvector
 {
 using mrpt::math::TPoint2D;
 
+namespace
+{
+/** Bucket side of Eq. 8's triangle buckets, about a short wall piece: a vector's query meets a few buckets, a
+ * triangle is listed in few more than its area covers (freiburg-079: 2 m 6.0 s, 0.5 m 4.8 s; speed only). */
+constexpr double kWipeBucket = 0.5;  // [m]
+}  // namespace
+
 // Eq. 4 (unmerged) and Eq. 8: every scan's triangles over every other scan's vectors.
 std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TPose2D>& poses,
 												const std::vector<LocalScan>& scans, const GridVectorConfig& cfg)
@@ -37,7 +44,7 @@ std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TP
 
 	std::vector<TPoint2D> sensors(scans.size());
 	for (size_t t = 0; t < scans.size(); ++t) sensors[t] = sensorPosition(poses[t], scans[t]);
-	WipeProduct(cfg.map.hitBand, kBatchWipeCountsBeams, VectorIndex::kCellSize).apply(sensors, first, all);
+	WipeProduct(cfg.map.hitBand, kBatchWipeCountsBeams, kWipeBucket).apply(sensors, first, all);
 	return all;
 }
 

@@ -1,3 +1,4 @@
+#include "map/TriangleBuckets.h"
 #include "map/VectorIndex.h"
 #include "map/WipeProduct.h"
 #include "map/WipeTriangle.h"
@@ -36,14 +37,14 @@ ScanWipe::Stats WipeProduct::apply(const std::vector<mrpt::math::TPoint2D>& sens
 	ScanWipe::Stats st;
 	const std::vector<WipeTriangle> tris = trianglesOf(sensors, first, map, hitBand_, beams_);
 	std::vector<uint32_t> scanOf(map.size());
-	VectorIndex index(cell_);
+	TriangleBuckets index(cell_);
 	for (size_t t = 0; t < sensors.size(); ++t)
 		for (size_t i = first[t]; i < first[t + 1]; ++i)
 		{
 			scanOf[i] = uint32_t(t);
 			if (tris[i].degenerate()) continue;
 			++st.triangles;
-			index.insert(uint32_t(i), {tris[i].minX(), tris[i].minY(), tris[i].maxX(), tris[i].maxY()});
+			index.insert(uint32_t(i), tris[i]);
 		}
 	std::vector<uint32_t> cand;
 	std::vector<ScanWipe::Mark> marks;
@@ -52,16 +53,16 @@ ScanWipe::Stats WipeProduct::apply(const std::vector<mrpt::math::TPoint2D>& sens
 		GridVector& m = map[i];
 		const Box2D box = Box2D::of(m);
 		cand.clear();
-		index.query(box, cand);
+		index.query(box, cand);  // ascending: scan by scan, in each vector by vector (ScanWipe's order)
 		st.candidates += cand.size();
-		// the triangles of other scans that may reach m, scan by scan and in each vector by vector (ScanWipe's order)
 		cand.erase(std::remove_if(cand.begin(), cand.end(),
 								  [&](uint32_t j) {
+									  const WipeTriangle& t = tris[j];
 									  return scanOf[j] == scanOf[i] ||  // Algorithm 1 counted the scan's own
-											 tris[j].misses(box.minX, box.minY, box.maxX, box.maxY);
+											 !Box2D{t.minX(), t.minY(), t.maxX(), t.maxY()}.intersects(box) ||
+											 t.misses(box.minX, box.minY, box.maxX, box.maxY);
 								  }),
 				   cand.end());
-		std::sort(cand.begin(), cand.end());
 		for (size_t a = 0, b = 0; a < cand.size(); a = b)
 		{
 			while (b < cand.size() && scanOf[cand[b]] == scanOf[cand[a]]) ++b;

@@ -13,9 +13,9 @@ namespace gridvector
 {
 /** The full product of Eq. 8 in batch mode, prod_q prod_{v_j in V_q} p(m_{i,p} | v_j, x_q)
  * for every per-scan vector m_{i,p} and every scan q != p, computed map vector
- * by map vector: the triangles of all scans are built once and indexed, and
- * each vector takes the triangles whose box meets its band, scan by scan in
- * ascending order. Every cell receives the same increments in the same order
+ * by map vector: the triangles of all scans are built once and listed in the
+ * buckets they reach (TriangleBuckets), and each vector takes the triangles
+ * that may reach its band, scan by scan in ascending order. Every cell receives the same increments in the same order
  * as ScanWipe::apply run scan by scan (the scan's own vectors left out), so
  * the result is the same bit for bit in both weightings; only the memory
  * access differs (one vector's cells stay in cache while all its scans are
@@ -27,7 +27,7 @@ namespace gridvector
 class WipeProduct
 {
    public:
-	/** hitBand, countBeams: as ScanWipe; indexCellSize: bucket side of the triangles' spatial index [m]. */
+	/** hitBand, countBeams: as ScanWipe; indexCellSize: bucket side of the triangles' buckets [m] (speed only). */
 	WipeProduct(double hitBand, bool countBeams, double indexCellSize)
 		: hitBand_(hitBand), beams_(countBeams), cell_(indexCellSize)
 	{}

@@ -91,6 +91,27 @@ TEST(ConstraintSet, AFailedPairIsRetriedOnlyWhenSomethingChanged)
 	EXPECT_TRUE(book.retry({0, 2}, rel));
 }
 
+// OverlapEdges::partners measures a pair's overlap once per change, as a failed registration is retried.
+TEST(ConstraintSet, AShortOverlapIsMeasuredAgainOnlyWhenSomethingChanged)
+{
+	const MatcherOptions m;
+	ConstraintSet book{m};
+	Scans scans = threeScans();
+	book.beginStep(scans, nullptr);
+	const TPose2D rel(1, 0, 0);
+	EXPECT_FALSE(book.stillShort({0, 1}, rel));  // never measured
+	book.shortOverlap({0, 1}, rel);
+	EXPECT_TRUE(book.stillShort({0, 1}, rel));
+	EXPECT_FALSE(book.stillShort({1, 0}, rel));  // another pair
+	EXPECT_TRUE(book.retry({0, 1}, rel));  // a short overlap is no failed registration
+	const double step = kMovedGateShare * m.gateRhoFinal;
+	EXPECT_TRUE(book.stillShort({0, 1}, TPose2D(1 + 0.9 * step, 0, 0)));
+	EXPECT_FALSE(book.stillShort({0, 1}, TPose2D(1 + 1.1 * step, 0, 0)));
+	scans[0].push_back(seg(6));  // scan 0's static vectors changed
+	book.beginStep(scans, nullptr);
+	EXPECT_FALSE(book.stillShort({0, 1}, rel));
+}
+
 TEST(ConstraintSet, HasEdgeNearLooksAtTheEdgesIntoThePose)
 {
 	ConstraintSet book{MatcherOptions{}};

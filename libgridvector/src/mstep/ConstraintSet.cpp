@@ -93,11 +93,26 @@ void ConstraintSet::fail(const EdgeKey& key, const TPose2D& rel)
 	failed_[key] = {rel, sigs_[key.first], sigs_[key.second]};
 }
 
+bool ConstraintSet::unchangedSince(const Failure& f, const EdgeKey& key, const TPose2D& rel) const
+{
+	return !movedSince(f.rel, rel) && f.sigFrom == sigs_[key.first] && f.sigTo == sigs_[key.second];
+}
+
 bool ConstraintSet::retry(const EdgeKey& key, const TPose2D& rel) const
 {
 	auto f = failed_.find(key);
-	return f == failed_.end() || movedSince(f->second.rel, rel) || f->second.sigFrom != sigs_[key.first] ||
-		   f->second.sigTo != sigs_[key.second];
+	return f == failed_.end() || !unchangedSince(f->second, key, rel);
+}
+
+void ConstraintSet::shortOverlap(const EdgeKey& key, const TPose2D& rel)
+{
+	short_[key] = {rel, sigs_[key.first], sigs_[key.second]};
+}
+
+bool ConstraintSet::stillShort(const EdgeKey& key, const TPose2D& rel) const
+{
+	auto f = short_.find(key);
+	return f != short_.end() && unchangedSince(f->second, key, rel);
 }
 
 bool ConstraintSet::movedSince(const TPose2D& before, const TPose2D& now) const

@@ -65,6 +65,11 @@ class ConstraintSet
 	void fail(const EdgeKey& key, const mrpt::math::TPose2D& rel);
 	/** Retry a failed registration? (poses moved or static vectors changed) */
 	bool retry(const EdgeKey& key, const mrpt::math::TPose2D& rel) const;
+	/** A pair whose views shared less than mstep.overlap_min_length at `rel`: measured again when something
+	 * changed (as retry()). */
+	void shortOverlap(const EdgeKey& key, const mrpt::math::TPose2D& rel);
+	/** Was the pair's overlap short at (nearly) this relative pose, with both scans' static vectors as now? */
+	bool stillShort(const EdgeKey& key, const mrpt::math::TPose2D& rel) const;
 	/** Has a relative pose moved enough since a failed attempt to retry it? */
 	bool movedSince(const mrpt::math::TPose2D& before, const mrpt::math::TPose2D& now) const;
 	/** Is there an edge (j, i) with j in [jlo, jhi]? */
@@ -82,7 +87,11 @@ class ConstraintSet
 		mrpt::math::TPose2D rel;  //!< relative pose tried
 		uint64_t sigFrom = 0, sigTo = 0;
 	};
+	/** Is the attempt `f` still what the pair would give at `rel` (not moved, both scans unchanged)? */
+	bool unchangedSince(const Failure& f, const EdgeKey& key, const mrpt::math::TPose2D& rel) const;
+
 	std::map<EdgeKey, Failure> failed_;  //!< failed registrations, retried when something changed
+	std::map<EdgeKey, Failure> short_;  //!< pairs that overlapped too little, measured again when something changed
 	std::vector<uint64_t> sigs_;  //!< per scan: signature of its static children (signScans)
 	std::vector<uint64_t> childChanges_;  //!< per scan: E-steps that changed one of its static children
 	std::vector<std::vector<uint64_t>> changed_;  //!< per scan: sorted ids whose M_chd changed

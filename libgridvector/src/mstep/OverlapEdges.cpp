@@ -15,14 +15,23 @@ std::vector<uint32_t> OverlapEdges::partners(uint32_t i, uint32_t nearest, const
 											 const Scans& scans, const Poses& poses) const
 {
 	const double need = cfg_.mstep.overlapMinLength;
+	// the overlap of j with i, 0 where it was short and nothing changed since (measured once per change)
+	auto overlap = [&](uint32_t j) {
+		const EdgeKey key{j, i};
+		const TPose2D rel = poses[i] - poses[j];
+		if (book_.stillShort(key, rel)) return 0.0;
+		const double len = reg_.overlapLength(j, i, scans, poses);
+		if (len < need) book_.shortOverlap(key, rel);
+		return len;
+	};
 	if (!book_.retry({nearest, i}, poses[i] - poses[nearest])) return {};  // failed, nothing changed since
-	if (reg_.overlapLength(nearest, i, scans, poses) >= need) return {nearest};
+	if (overlap(nearest) >= need) return {nearest};
 	if (!cfg_.mstep.overlapMostOverlapping) return {};
 	std::vector<std::pair<double, uint32_t>> ranked;
 	for (uint32_t j : members)
 	{
 		if (j == nearest || scans[j].empty() || !book_.retry({j, i}, poses[i] - poses[j])) continue;
-		const double len = reg_.overlapLength(j, i, scans, poses);
+		const double len = overlap(j);
 		if (len >= need) ranked.emplace_back(-len, j);
 	}
 	std::sort(ranked.begin(), ranked.end());

@@ -99,7 +99,6 @@ void VectorMatcher::geometryOf(const MatchSegment& m, const TPose2D& T, Geom& g)
 	g.d = g.len > 1e-12 ? Vector2d(d / g.len) : Vector2d(1, 0);
 	g.n = leftOf(g.d);
 	g.c = 0.5 * (g.s + e);
-	g.psi = std::atan2(g.d.y(), g.d.x());
 }
 
 void VectorMatcher::prepareA(const std::vector<MatchSegment>& a) const
@@ -118,6 +117,9 @@ void VectorMatcher::transformB(const std::vector<MatchSegment>& b, const TPose2D
 void VectorMatcher::gather(const MatchGates& g) const
 {
 	pairs_.clear();
+	// criterion 1 on the unit directions: |psi_a - psi_b| < psi  <=>  d_a . d_b > cos(psi) (no atan2 per vector)
+	const bool anyAngle = !(g.psi < M_PI);
+	const double minCos = std::cos(g.psi);
 	for (size_t ib = 0; ib < gb_.size(); ++ib)
 	{
 		const Geom& B = gb_[ib];
@@ -127,7 +129,7 @@ void VectorMatcher::gather(const MatchGates& g) const
 			const Geom& A = ga_[ia];
 			const double half = 0.5 * (A.len + B.len);
 			if ((A.c - B.c).squaredNorm() >= half * half) continue;  // criterion 3
-			if (std::abs(wrap(A.psi - B.psi)) >= g.psi) continue;  // criterion 1
+			if (!anyAngle && A.d.dot(B.d) <= minCos) continue;  // criterion 1
 			if (std::abs(A.n.dot(B.c - A.s)) >= g.rho) continue;  // criterion 2 (rho at B)
 			if (std::abs(B.n.dot(A.c - B.s)) >= g.rho) continue;  // criterion 2 (rho at A)
 			const double u0 = A.d.dot(B.s - A.s), u1 = u0 + A.d.dot(B.d) * B.len;
@@ -153,7 +155,8 @@ double VectorMatcher::rotationStep() const
 	{
 		const double w = p.overlap * p.weight;
 		sw += w;
-		sa += w * wrap(ga_[size_t(p.ia)].psi - gb_[size_t(p.ib)].psi);
+		const Eigen::Vector2d &da = ga_[size_t(p.ia)].d, &db = gb_[size_t(p.ib)].d;
+		sa += w * std::atan2(db.x() * da.y() - db.y() * da.x(), db.dot(da));  // psi_a - psi_b
 	}
 	return sw > 0 ? sa / sw : 0.0;
 }

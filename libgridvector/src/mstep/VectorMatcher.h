@@ -120,7 +120,7 @@ class VectorMatcher
 	struct Geom
 	{
 		Eigen::Vector2d s, d, n, c;  //!< start, unit direction, left normal, centre
-		double psi = 0, len = 0;
+		double len = 0;
 	};
 	static void geometryOf(const MatchSegment& m, const mrpt::math::TPose2D& T, Geom& g);
 	void prepareA(const std::vector<MatchSegment>& a) const;

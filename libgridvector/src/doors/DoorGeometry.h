@@ -21,6 +21,22 @@ inline double dist(const mrpt::math::TPoint2D& a, const mrpt::math::TPoint2D& b)
 	return std::hypot(a.x - b.x, a.y - b.y);
 }
 
+/** The box of a vector's two ends grown by `margin`: a point farther than `margin` from the segment lies outside
+ * (a cheap test before the rules' distances, which it never changes). */
+struct EndBox
+{
+	double minX, minY, maxX, maxY;
+	EndBox(const GridVector& v, double margin)
+		: minX(std::min(v.start().x, v.end().x) - margin),
+		  minY(std::min(v.start().y, v.end().y) - margin),
+		  maxX(std::max(v.start().x, v.end().x) + margin),
+		  maxY(std::max(v.start().y, v.end().y) + margin)
+	{}
+	bool holds(const mrpt::math::TPoint2D& p) const { return p.x >= minX && p.x <= maxX && p.y >= minY && p.y <= maxY; }
+	/** Could an end of `v` lie in the box? */
+	bool holdsAnEndOf(const GridVector& v) const { return holds(v.start()) || holds(v.end()); }
+};
+
 inline double radians(double deg) { return deg * M_PI / 180; }
 
 /** Position of p along the wall from its centre, and its distance from the wall's line. */

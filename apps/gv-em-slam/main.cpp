@@ -158,16 +158,22 @@ int run(const io::ArgParser& args)
 	const bool online = args.has("online");
 	std::vector<LocalScan> scans;
 	std::vector<mrpt::math::TPose2D> odo;
-	scans.reserve(log.scans.size());
-	for (size_t t = 0; t < log.scans.size(); ++t)
+	for (const auto& r : log.scans)
+		odo.push_back(r.hasOdometry ? r.odometry : r.hasLogPose ? r.logPose : mrpt::math::TPose2D(0, 0, 0));
+	// EM maps the keyframes (EmSlam::run): the other scans keep their sensor origin, not their vectors
+	std::vector<bool> keyframe(log.scans.size(), false);
+	if (!online)
+		for (size_t t : EmSlam::keyframes(odo, cfg.mstep)) keyframe[t] = true;
+	scans.reserve(online ? 0 : log.scans.size());
+	for (size_t t = 0; t < log.scans.size() && !online; ++t)  // --online: extracted scan by scan in the replay
 	{
 		const auto& r = log.scans[t];
-		odo.push_back(r.hasOdometry ? r.odometry : r.hasLogPose ? r.logPose : mrpt::math::TPose2D(0, 0, 0));
-		if (online) continue;  // extracted scan by scan in the replay, timed with it
 		progress.show("extracting vectors", t + 1, log.scans.size());
 		scans.push_back(ex.extract(*r.scan));
 		scans.back().scanIndex = int64_t(t);
 		scans.back().timestamp = r.timestamp;
+		fig.localVectors += scans.back().vectors.size();
+		if (!keyframe[t]) std::vector<GridVector>().swap(scans.back().vectors);
 	}
 	progress.done();
 	fig.extractSeconds = since(t1);
@@ -191,8 +197,6 @@ int run(const io::ArgParser& args)
 		}
 	}
 	if (online) fig.localVectors = replay.localVectors;
-	else
-		for (const auto& s : scans) fig.localVectors += s.vectors.size();
 	const bool batch = !online || args.has("refine");
 	EmResult res = online ? std::move(replay.result) : EmResult{};
 	if (batch)

@@ -19,17 +19,38 @@ double since(std::chrono::steady_clock::time_point t0)
 // The map Sec. 5.4 looks at: Eq. 14 at the final threshold, Eq. 4 per state, unobserved stretches cut.
 SplitMap SplitMap::of(const std::vector<GridVector>& children, const EStep& estep, const GridVectorConfig& cfg)
 {
-	SplitMap m;
 	std::vector<uint64_t> parentIds;
-	m.perScan = estep.finalSplit(children, &parentIds);
+	std::vector<GridVector> split = estep.finalSplit(children, &parentIds);
+	return fromSplit(std::move(split), parentIds, estep, cfg);
+}
+
+SplitMap SplitMap::of(std::vector<GridVector>&& children, const EStep& estep, const GridVectorConfig& cfg)
+{
+	std::vector<uint64_t> parentIds;
+	std::vector<GridVector> split = estep.finalSplit(children, &parentIds);
+	std::vector<GridVector>().swap(children);  // consumed: the map is held once more, not twice
+	return fromSplit(std::move(split), parentIds, estep, cfg);
+}
+
+// The split vectors moved into the two merges' inputs and back (one copy of the map, not two).
+SplitMap SplitMap::fromSplit(std::vector<GridVector> split, const std::vector<uint64_t>& parentIds,
+							 const EStep& estep, const GridVectorConfig& cfg)
+{
+	SplitMap m;
 	std::vector<GridVector> st, dy;
-	for (size_t k = 0; k < m.perScan.size(); ++k)
+	std::vector<std::pair<bool, size_t>> where(split.size());  // (dynamic, position in dy or st)
+	for (size_t k = 0; k < split.size(); ++k)
 	{
-		m.childOf[m.perScan[k].id] = parentIds[k];
-		(m.perScan[k].state == VectorState::Dynamic ? dy : st).push_back(m.perScan[k]);
+		m.childOf[split[k].id] = parentIds[k];
+		const bool dynamic = split[k].state == VectorState::Dynamic;
+		std::vector<GridVector>& to = dynamic ? dy : st;
+		where[k] = {dynamic, to.size()};
+		to.push_back(std::move(split[k]));
 	}
 	m.staticMap = estep.cutUnobserved(GlobalMap::mergeAll(st, cfg), st);
 	m.dynamicMap = estep.cutUnobserved(GlobalMap::mergeAll(dy, cfg), dy);
+	for (size_t k = 0; k < split.size(); ++k) split[k] = std::move(where[k].first ? dy[where[k].second] : st[where[k].second]);
+	m.perScan = std::move(split);
 	for (const auto* r : {&m.staticMap, &m.dynamicMap})
 		for (GridVector v : r->vectors)
 		{

@@ -28,6 +28,12 @@ struct SplitMap
 	std::map<uint64_t, uint64_t> childOf;
 
 	static SplitMap of(const std::vector<GridVector>& children, const EStep& estep, const GridVectorConfig& cfg);
+	/** The same, `children` released once split (the final map's peak holds the map once less). */
+	static SplitMap of(std::vector<GridVector>&& children, const EStep& estep, const GridVectorConfig& cfg);
+
+   private:
+	static SplitMap fromSplit(std::vector<GridVector> split, const std::vector<uint64_t>& parentIds, const EStep& estep,
+							  const GridVectorConfig& cfg);
 };
 
 /** What one detection kept out. */

@@ -205,7 +205,7 @@ void finalMap(EmResult& res, const EStep& estep, const std::vector<TPose2D>& ePo
 {
 	const auto t0 = std::chrono::steady_clock::now();
 	rebase(res.perScan, ePoses, res.poses);
-	SplitMap m = SplitMap::of(res.perScan, estep, cfg);  // Eq. 14 on the converged map, Eq. 4 per state
+	SplitMap m = SplitMap::of(std::move(res.perScan), estep, cfg);  // Eq. 14 on the converged map, Eq. 4 per state
 	res.perScan = std::move(m.perScan);
 	res.staticMap = std::move(m.staticMap);
 	res.dynamicMap = std::move(m.dynamicMap);

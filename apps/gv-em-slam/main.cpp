@@ -204,8 +204,9 @@ int run(const io::ArgParser& args)
 		// Sec. 4: EM, from the raw odometry or (--refine) the online trajectory
 		EmSlam em(cfg);
 		if (std::getenv("GV_EM_DEBUG_DIR")) em.setMStepObserver(dumpEdges);
+		// the keyframes' vectors move into the run; every scan keeps its sensor origin (the self-check's)
 		res = em.run(
-			scans, odo, online ? res.poses : init,
+			std::move(scans), odo, online ? res.poses : init,
 			[&](const EmIteration& it, const std::vector<mrpt::math::TPose2D>& poses) {
 				progress.done();
 				if (!quiet) printIteration(it);

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <algorithm>
+#include <type_traits>
 #include <stdexcept>
 
 namespace gridvector
@@ -110,6 +111,20 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 					 const std::vector<TPose2D>& initial, const IterationCallback& onIteration,
 					 const ProgressCallback& progress) const
 {
+	return runOn(scans, odometry, initial, onIteration, progress);
+}
+
+EmResult EmSlam::run(std::vector<LocalScan>&& scans, const std::vector<TPose2D>& odometry,
+					 const std::vector<TPose2D>& initial, const IterationCallback& onIteration,
+					 const ProgressCallback& progress) const
+{
+	return runOn(std::move(scans), odometry, initial, onIteration, progress);
+}
+
+template <class Scans>
+EmResult EmSlam::runOn(Scans&& scans, const std::vector<TPose2D>& odometry, const std::vector<TPose2D>& initial,
+					   const IterationCallback& onIteration, const ProgressCallback& progress) const
+{
 	if (scans.size() != odometry.size()) throw std::invalid_argument("EmSlam: scans and odometry differ in length");
 	if (initial.size() != odometry.size())
 		throw std::invalid_argument("EmSlam: initial trajectory and odometry differ in length");
@@ -118,7 +133,10 @@ EmResult EmSlam::run(const std::vector<LocalScan>& scans, const std::vector<TPos
 	std::vector<TPose2D> ko, ki;
 	for (size_t k = 0; k < key.size(); ++k)
 	{
-		ks.push_back(scans[key[k]]);
+		if constexpr (std::is_lvalue_reference_v<Scans>)
+			ks.push_back(scans[key[k]]);
+		else
+			ks.push_back(std::move(scans[key[k]]));  // the caller gave them up
 		ks.back().scanIndex = int64_t(k);
 		ko.push_back(odometry[key[k]]);
 		ki.push_back(initial[key[k]]);

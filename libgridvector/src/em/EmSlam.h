@@ -73,6 +73,10 @@ class EmSlam
 	EmResult run(const std::vector<LocalScan>& scans, const std::vector<mrpt::math::TPose2D>& odometry,
 				 const std::vector<mrpt::math::TPose2D>& initial, const IterationCallback& onIteration = {},
 				 const ProgressCallback& progress = {}) const;
+	/** The same, the keyframes' scans moved out of `scans` (not copied: the run holds their vectors once). */
+	EmResult run(std::vector<LocalScan>&& scans, const std::vector<mrpt::math::TPose2D>& odometry,
+				 const std::vector<mrpt::math::TPose2D>& initial, const IterationCallback& onIteration = {},
+				 const ProgressCallback& progress = {}) const;
 
 	/** Diagnosis: called after each M-step with the iteration (1-based), the M-step (its
 	 * constraints index keyframes), the static vectors it registered (per keyframe, in its
@@ -105,6 +109,10 @@ class EmSlam
 												   const std::vector<mrpt::math::TPose2D>& odometry);
 
    private:
+	template <class Scans>
+	EmResult runOn(Scans&& scans, const std::vector<mrpt::math::TPose2D>& odometry,
+				   const std::vector<mrpt::math::TPose2D>& initial, const IterationCallback& onIteration,
+				   const ProgressCallback& progress) const;
 	EmResult runKeyframes(const std::vector<LocalScan>& scans, const std::vector<mrpt::math::TPose2D>& odometry,
 						  const std::vector<mrpt::math::TPose2D>& initial, const IterationCallback& onIteration,
 						  const ProgressCallback& progress, const std::vector<size_t>& key) const;

@@ -114,3 +114,35 @@ TEST(EmSlam, RunsWithoutALoopWindow)
 	EXPECT_EQ(r.poses.size(), truth.size());
 	EXPECT_FALSE(r.iterations.empty());
 }
+
+// The rvalue run moves the keyframes' scans in: the same result as from a copy, every scan's sensor origin left.
+TEST(EmSlam, ARunOnScansGivenUpEqualsARunOnACopy)
+{
+	const auto truth = emtest::ringPath(2, 0.5);
+	const auto odo = emtest::odometryOf(truth, 3, 6.0);
+	const auto walls = emtest::corridorWorld();
+	std::vector<LocalScan> scans;
+	for (size_t t = 0; t < truth.size(); ++t)
+	{
+		scans.push_back(emtest::observe(walls, truth[t], 6.0, unsigned(t)));
+		scans.back().scanIndex = int64_t(t);
+		scans.back().sensorOrigin = mrpt::math::TPoint2D(0.1, 0.0);
+	}
+	const EmResult copied = EmSlam().run(scans, odo, odo);
+	const EmResult moved = EmSlam().run(std::move(scans), odo, odo);
+	ASSERT_EQ(copied.poses.size(), moved.poses.size());
+	for (size_t t = 0; t < copied.poses.size(); ++t)
+	{
+		EXPECT_EQ(copied.poses[t].x, moved.poses[t].x);
+		EXPECT_EQ(copied.poses[t].phi, moved.poses[t].phi);
+	}
+	EXPECT_EQ(copied.finalVectors.size(), moved.finalVectors.size());
+	ASSERT_EQ(scans.size(), truth.size());  // the elements were moved from, not the vector
+	size_t emptied = 0;
+	for (const LocalScan& s : scans)
+	{
+		EXPECT_EQ(s.sensorOrigin.x, 0.1);
+		emptied += s.vectors.empty();
+	}
+	EXPECT_GT(emptied, 0u);  // the keyframes' vectors went into the run
+}

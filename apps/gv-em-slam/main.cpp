@@ -160,20 +160,22 @@ int run(const io::ArgParser& args)
 	std::vector<mrpt::math::TPose2D> odo;
 	for (const auto& r : log.scans)
 		odo.push_back(r.hasOdometry ? r.odometry : r.hasLogPose ? r.logPose : mrpt::math::TPose2D(0, 0, 0));
-	// EM maps the keyframes (EmSlam::run): the other scans keep their sensor origin, not their vectors
-	std::vector<bool> keyframe(log.scans.size(), false);
-	if (!online)
-		for (size_t t : EmSlam::keyframes(odo, cfg.mstep)) keyframe[t] = true;
-	scans.reserve(online ? 0 : log.scans.size());
-	for (size_t t = 0; t < log.scans.size() && !online; ++t)  // --online: extracted scan by scan in the replay
+	if (!online)  // --online: extracted scan by scan in the replay, timed with it
 	{
-		const auto& r = log.scans[t];
-		progress.show("extracting vectors", t + 1, log.scans.size());
-		scans.push_back(ex.extract(*r.scan));
-		scans.back().scanIndex = int64_t(t);
-		scans.back().timestamp = r.timestamp;
-		fig.localVectors += scans.back().vectors.size();
-		if (!keyframe[t]) std::vector<GridVector>().swap(scans.back().vectors);
+		// EM maps the keyframes (EmSlam::run): the other scans keep their sensor origin, not their vectors
+		std::vector<bool> keyframe(log.scans.size(), false);
+		for (size_t t : EmSlam::keyframes(odo, cfg.mstep)) keyframe[t] = true;
+		scans.reserve(log.scans.size());
+		for (size_t t = 0; t < log.scans.size(); ++t)
+		{
+			const auto& r = log.scans[t];
+			progress.show("extracting vectors", t + 1, log.scans.size());
+			scans.push_back(ex.extract(*r.scan));
+			scans.back().scanIndex = int64_t(t);
+			scans.back().timestamp = r.timestamp;
+			fig.localVectors += scans.back().vectors.size();
+			if (!keyframe[t]) std::vector<GridVector>().swap(scans.back().vectors);
+		}
 	}
 	progress.done();
 	fig.extractSeconds = since(t1);

@@ -26,15 +26,15 @@ std::vector<Corner> DoorDetector::corners(const std::vector<GridVector>& v) cons
 	std::vector<Corner> out;
 	// an end of d within max_corner_gap of an end of s (meetingEnds), or within kMaxWallOffset of its line
 	// inside its extent (teeCorners): in the box of s grown by the larger of the two
-	std::vector<EndBox> reach;
+	std::vector<Box2D> reach;
 	reach.reserve(v.size());
-	for (const GridVector& w : v) reach.emplace_back(w, std::max(opts_.maxCornerGap, kMaxWallOffset));
+	for (const GridVector& w : v) reach.push_back(endBox(w, std::max(opts_.maxCornerGap, kMaxWallOffset)));
 	for (size_t d = 0; d < v.size(); ++d)
 	{
 		if (!hinge_.isCandidate(v[d])) continue;  // dynamic, or static of door length (beyond the paper)
 		for (size_t s = 0; s < v.size(); ++s)
 		{
-			if (s == d || v[s].state != VectorState::Static || !reach[s].holdsAnEndOf(v[d])) continue;
+			if (s == d || v[s].state != VectorState::Static || !holdsAnEndOf(reach[s], v[d])) continue;
 			if (auto c = hinge_.meetingEnds(v, s, d))
 				if (hinge_.turns(*c, v[s]) || closedStateCorner(v[s], *c, opts_))
 				{

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <gridvector/GridVector.h>
+#include "map/VectorIndex.h"
 
 #include <mrpt/math/TPoint2D.h>
 #include <mrpt/math/wrap2pi.h>
@@ -23,19 +24,18 @@ inline double dist(const mrpt::math::TPoint2D& a, const mrpt::math::TPoint2D& b)
 
 /** The box of a vector's two ends grown by `margin`: a point farther than `margin` from the segment lies outside
  * (a cheap test before the rules' distances, which it never changes). */
-struct EndBox
+inline Box2D endBox(const GridVector& v, double margin)
 {
-	double minX, minY, maxX, maxY;
-	EndBox(const GridVector& v, double margin)
-		: minX(std::min(v.start().x, v.end().x) - margin),
-		  minY(std::min(v.start().y, v.end().y) - margin),
-		  maxX(std::max(v.start().x, v.end().x) + margin),
-		  maxY(std::max(v.start().y, v.end().y) + margin)
-	{}
-	bool holds(const mrpt::math::TPoint2D& p) const { return p.x >= minX && p.x <= maxX && p.y >= minY && p.y <= maxY; }
-	/** Could an end of `v` lie in the box? */
-	bool holdsAnEndOf(const GridVector& v) const { return holds(v.start()) || holds(v.end()); }
-};
+	return Box2D{std::min(v.start().x, v.end().x), std::min(v.start().y, v.end().y), std::max(v.start().x, v.end().x),
+				 std::max(v.start().y, v.end().y)}
+		.expanded(margin);
+}
+
+/** Could an end of `v` lie in the box? */
+inline bool holdsAnEndOf(const Box2D& b, const GridVector& v)
+{
+	return b.holds(v.start().x, v.start().y) || b.holds(v.end().x, v.end().y);
+}
 
 inline double radians(double deg) { return deg * M_PI / 180; }
 

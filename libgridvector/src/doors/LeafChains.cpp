@@ -17,11 +17,11 @@ LeafChains::LeafChains(const std::vector<GridVector>& vectors, const DoorOptions
 	for (size_t a = 0; a < n_; ++a)
 	{
 		if (v_[a].state != VectorState::Dynamic || v_[a].length() >= opts.minDoorLength) continue;
-		const EndBox near(v_[a], kLeafChainGap);  // b's meeting end lies within kLeafChainGap of a's joint
+		const Box2D near = endBox(v_[a], kLeafChainGap);  // b's meeting end lies within kLeafChainGap of a's joint
 		for (size_t b = 0; b < n_; ++b)
 		{
 			if (b == a || v_[b].state != VectorState::Static || v_[b].length() > opts.maxDoorLength ||
-				!near.holdsAnEndOf(v_[b]))
+				!holdsAnEndOf(near, v_[b]))
 				continue;
 			for (int ea = 0; ea < 2; ++ea)
 				for (int eb = 0; eb < 2; ++eb)

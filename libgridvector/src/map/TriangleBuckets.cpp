@@ -41,7 +41,7 @@ void TriangleBuckets::insertRange(uint32_t id, const WipeTriangle& tri, int64_t 
 	if (tri.misses(double(x0) * cell_, double(y0) * cell_, double(x1 + 1) * cell_, double(y1 + 1) * cell_)) return;
 	if (x0 == x1 && y0 == y1)
 	{
-		buckets_[key(x0, y0)].push_back(id);
+		buckets_[bucketKey(x0, y0)].push_back(id);
 		return;
 	}
 	if (x1 - x0 >= y1 - y0)
@@ -78,7 +78,7 @@ void TriangleBuckets::query(const Box2D& box, std::vector<uint32_t>& out) const
 		for (int64_t ix = int64_t(fx0); ix <= int64_t(fx1); ++ix)
 			for (int64_t iy = int64_t(fy0); iy <= int64_t(fy1); ++iy)
 			{
-				const auto it = buckets_.find(key(ix, iy));
+				const auto it = buckets_.find(bucketKey(ix, iy));
 				if (it != buckets_.end())
 					for (uint32_t id : it->second) add(id);
 			}

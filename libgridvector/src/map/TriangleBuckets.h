@@ -30,10 +30,6 @@ class TriangleBuckets
 
    private:
 	void insertRange(uint32_t id, const WipeTriangle& tri, int64_t x0, int64_t x1, int64_t y0, int64_t y1);
-	static uint64_t key(int64_t ix, int64_t iy)
-	{
-		return (uint64_t(uint32_t(int32_t(ix))) << 32) | uint64_t(uint32_t(int32_t(iy)));
-	}
 
 	double cell_;
 	std::unordered_map<uint64_t, std::vector<uint32_t>> buckets_;

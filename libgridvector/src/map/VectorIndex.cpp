@@ -51,7 +51,7 @@ void VectorIndex::forBuckets(const Box2D& b, F&& f) const
 	const int64_t x0 = int64_t(std::floor(b.minX / cell_)), x1 = int64_t(std::floor(b.maxX / cell_));
 	const int64_t y0 = int64_t(std::floor(b.minY / cell_)), y1 = int64_t(std::floor(b.maxY / cell_));
 	for (int64_t ix = x0; ix <= x1; ++ix)
-		for (int64_t iy = y0; iy <= y1; ++iy) f(key(ix, iy));
+		for (int64_t iy = y0; iy <= y1; ++iy) f(bucketKey(ix, iy));
 }
 
 void VectorIndex::insert(uint32_t slot, const Box2D& box)
@@ -150,7 +150,7 @@ void VectorIndex::query(const Box2D& box, std::vector<uint32_t>& out) const
 	if (!((x1 - x0 + 1) * (y1 - y0 + 1) <= double(buckets_.size())))  // wider than the map (or not finite)
 		queryAll(buckets_, boxes_, box, out);
 	else
-		queryRange(buckets_, boxes_, cell_, box, int64_t(x0), int64_t(x1), int64_t(y0), int64_t(y1), key, out);
+		queryRange(buckets_, boxes_, cell_, box, int64_t(x0), int64_t(x1), int64_t(y0), int64_t(y1), bucketKey, out);
 	for (uint32_t s : wide_)  // listed once each
 		if (boxes_[s].intersects(box)) out.push_back(s);
 }

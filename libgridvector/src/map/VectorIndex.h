@@ -9,6 +9,12 @@
 
 namespace gridvector
 {
+/** Key of the bucket (ix, iy) of a uniform spatial hash (32 bits per coordinate). */
+inline uint64_t bucketKey(int64_t ix, int64_t iy)
+{
+	return (uint64_t(uint32_t(int32_t(ix))) << 32) | uint64_t(uint32_t(int32_t(iy)));
+}
+
 /** Axis-aligned box [minX, maxX] x [minY, maxY]. */
 struct Box2D
 {
@@ -18,6 +24,7 @@ struct Box2D
 		return minX <= o.maxX && o.minX <= maxX && minY <= o.maxY && o.minY <= maxY;
 	}
 	Box2D expanded(double m) const { return {minX - m, minY - m, maxX + m, maxY + m}; }
+	bool holds(double x, double y) const { return x >= minX && x <= maxX && y >= minY && y <= maxY; }
 	/** The box of a vector's whole grid band (all rows and columns). */
 	static Box2D of(const GridVector& v);
 };
@@ -70,10 +77,6 @@ class VectorIndex
 	bool wide(const Box2D& b) const;
 	template <class F>
 	void forBuckets(const Box2D& b, F&& f) const;
-	static uint64_t key(int64_t ix, int64_t iy)
-	{
-		return (uint64_t(uint32_t(int32_t(ix))) << 32) | uint64_t(uint32_t(int32_t(iy)));
-	}
 
 	double cell_;
 	std::unordered_map<uint64_t, std::vector<uint32_t>> buckets_;

@@ -93,7 +93,7 @@ void ConstraintSet::fail(const EdgeKey& key, const TPose2D& rel)
 	failed_[key] = {rel, sigs_[key.first], sigs_[key.second]};
 }
 
-bool ConstraintSet::unchangedSince(const Failure& f, const EdgeKey& key, const TPose2D& rel) const
+bool ConstraintSet::unchangedSince(const Attempt& f, const EdgeKey& key, const TPose2D& rel) const
 {
 	return !movedSince(f.rel, rel) && f.sigFrom == sigs_[key.first] && f.sigTo == sigs_[key.second];
 }

@@ -82,16 +82,16 @@ class ConstraintSet
 	void signScans(const Scans& scans);
 
 	MatcherOptions matcher_;
-	struct Failure
+	struct Attempt  //!< a failed registration or a short overlap, and what it was tried with
 	{
 		mrpt::math::TPose2D rel;  //!< relative pose tried
 		uint64_t sigFrom = 0, sigTo = 0;
 	};
 	/** Is the attempt `f` still what the pair would give at `rel` (not moved, both scans unchanged)? */
-	bool unchangedSince(const Failure& f, const EdgeKey& key, const mrpt::math::TPose2D& rel) const;
+	bool unchangedSince(const Attempt& f, const EdgeKey& key, const mrpt::math::TPose2D& rel) const;
 
-	std::map<EdgeKey, Failure> failed_;  //!< failed registrations, retried when something changed
-	std::map<EdgeKey, Failure> short_;  //!< pairs that overlapped too little, measured again when something changed
+	std::map<EdgeKey, Attempt> failed_;  //!< failed registrations, retried when something changed
+	std::map<EdgeKey, Attempt> short_;  //!< pairs that overlapped too little, measured again when something changed
 	std::vector<uint64_t> sigs_;  //!< per scan: signature of its static children (signScans)
 	std::vector<uint64_t> childChanges_;  //!< per scan: E-steps that changed one of its static children
 	std::vector<std::vector<uint64_t>> changed_;  //!< per scan: sorted ids whose M_chd changed

@@ -234,6 +234,34 @@ TEST(VectorExtractor, BreakpointAllowsTheConfiguredRangeNoise)
 	EXPECT_EQ(runs(1.0), (std::vector<size_t>{0, 90}));  // 0.02 m allowance: still broken
 }
 
+// A straight wall seen by a scanner with 0.1 m range noise: split-and-merge at the 0.04 m keys cuts it at its
+// noise; raised to 3 x the scan's stdError it keeps it whole. The usual 0.01 m leaves the keys as they are.
+TEST(VectorExtractor, FitTolerancesFollowTheScannersRangeNoise)
+{
+	VectorExtractor ex;
+	EXPECT_EQ(ex.tolerance(0.01).split, ExtractionOptions().splitThreshold);
+	EXPECT_EQ(ex.tolerance(0.01).merge, ExtractionOptions().mergeThreshold);
+	EXPECT_NEAR(ex.tolerance(0.1).split, 0.3, 1e-12);
+	EXPECT_EQ(ex.tolerance(50.0).merge, VectorExtractor::kMaxTolerance);
+	EXPECT_EQ(ex.tolerance(std::numeric_limits<double>::quiet_NaN()).split, ExtractionOptions().splitThreshold);
+	EXPECT_EQ(ex.tolerance(-1.0).split, ExtractionOptions().splitThreshold);
+
+	const std::vector<gvtest::Seg> wall{{3, -4, 3, 4}};
+	auto scan = gvtest::castScan(TPose2D(0, 0, 0), wall, {}, 181, M_PI);
+	std::mt19937 rng(3);
+	std::normal_distribution<float> noise(0.f, 0.1f);
+	for (size_t i = 0; i < scan.getScanSize(); ++i)
+		if (scan.getScanRangeValidity(i)) scan.setScanRange(i, scan.getScanRange(i) + noise(rng));
+	auto longest = [&](float stdError) {
+		scan.stdError = stdError;
+		double best = 0;
+		for (const auto& v : ex.extract(scan).vectors) best = std::max(best, v.length());
+		return best;
+	};
+	EXPECT_LT(longest(0.01f), 2.0);  // the noise read as corners: pieces
+	EXPECT_GT(longest(0.1f), 7.5);  // the wall of 8 m in one
+}
+
 TEST(VectorExtractor, ScanToPointsIsEveryStrideThValidPointOfScanToRuns)
 {
 	// invalid beams of every kind (flagged, NaN, inf, too short, at max range), a sensor offset

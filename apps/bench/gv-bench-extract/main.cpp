@@ -37,7 +37,7 @@ void residuals(const VectorExtractor& ex, const mrpt::obs::CObservation2DRangeSc
 	for (size_t r = 0; r + 1 < runs.size(); ++r)
 	{
 		if (runs[r + 1] - runs[r] < size_t(o.minPoints)) continue;
-		for (const auto& s : ex.splitAndMerge(pts, runs[r], runs[r + 1] - 1))
+		for (const auto& s : ex.splitAndMerge(pts, runs[r], runs[r + 1] - 1, scan.stdError))
 		{
 			if (s.last - s.first + 1 < size_t(o.minPoints)) continue;
 			if (ex.makeVector(pts, s, {0, 0}).length() < o.minLength) continue;

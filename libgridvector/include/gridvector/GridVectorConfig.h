@@ -55,16 +55,21 @@ struct ExtractionOptions
 		  Range::above(0, 10));
 		v("break_angle_deg", breakAngleDeg, "Adaptive breakpoint: smallest incidence angle of a surface [deg]",
 		  Range::open(0, 90));
-		v("split_threshold", splitThreshold, "Split a segment where a point lies further than this from its line [m]",
+		v("split_threshold", splitThreshold,
+		  "Split a segment where a point lies further than this from its line; at least break_noise_sigmas x the "
+		  "scan's stdError [m]",
 		  Range::above(0, 1));
 		v("merge_threshold", mergeThreshold,
-		  "Merge neighbouring segments when the joint fit's largest residual is below this [m]", Range::above(0, 1));
+		  "Merge neighbouring segments when the joint fit's largest residual is below this; at least "
+		  "break_noise_sigmas x the scan's stdError [m]",
+		  Range::above(0, 1));
 		v("min_points", minPoints, "Fewest laser points per vector", Range::closed(2, 1000));
 		v("min_length", minLength, "Shortest vector [m]", Range::closed(0, 100));
 		v("max_point_gap", maxPointGap, "Largest gap between consecutive points of one vector [m]",
 		  Range::above(0, 10));
 		v("break_noise_sigmas", breakNoiseSigmas,
-		  "Adaptive breakpoint: range noise allowance in scanner std. devs (Borges & Aldon: 3; 0: geometry only)",
+		  "Range noise allowance in scanner std. devs (the scan's stdError) of the adaptive breakpoint (Borges & "
+		  "Aldon: 3; 0: geometry only) and of the split and merge thresholds",
 		  Range::closed(0, 10));
 	}
 };

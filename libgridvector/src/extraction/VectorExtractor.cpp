@@ -117,7 +117,7 @@ bool VectorExtractor::fitSegment(const std::vector<TPoint2D>& pts, const PrefixM
 // Split step: end-point fit, splitting at the point farthest from the chord; depth first, left part first
 // (an explicit stack: a run of 10^5 points must not take 10^5 frames).
 void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoments& pm, size_t first, size_t last,
-							std::vector<ScanSegment>& out) const
+							double threshold, std::vector<ScanSegment>& out) const
 {
 	std::vector<std::pair<size_t, size_t>> todo{{first, last}};
 	while (!todo.empty())
@@ -138,7 +138,7 @@ void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoment
 			}
 		}
 		ScanSegment seg;
-		if (best <= ext_.splitThreshold && fitSegment(pts, pm, i, j, seg))
+		if (best <= threshold && fitSegment(pts, pm, i, j, seg))
 		{
 			out.push_back(seg);
 			continue;
@@ -150,13 +150,21 @@ void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoment
 	}
 }
 
+VectorExtractor::FitTolerance VectorExtractor::tolerance(double rangeSigma) const
+{
+	const double noise = ext_.breakNoiseSigmas * (std::isfinite(rangeSigma) ? std::max(0.0, rangeSigma) : 0.0);  // unknown: none
+	auto raised = [&](double key) { return std::max(key, std::min(noise, kMaxTolerance)); };
+	return {raised(ext_.splitThreshold), raised(ext_.mergeThreshold)};
+}
+
 // Merge step: neighbouring segments whose joint least-squares fit stays tight.
-std::vector<ScanSegment> VectorExtractor::splitAndMerge(const std::vector<TPoint2D>& pts, size_t first,
-														size_t last) const
+std::vector<ScanSegment> VectorExtractor::splitAndMerge(const std::vector<TPoint2D>& pts, size_t first, size_t last,
+														double rangeSigma) const
 {
 	std::vector<ScanSegment> segs;
 	const PrefixMoments pm(pts, first, last + 1);
-	split(pts, pm, first, last, segs);
+	const FitTolerance tol = tolerance(rangeSigma);
+	split(pts, pm, first, last, tol.split, segs);
 	bool merged = true;
 	while (merged && segs.size() > 1)
 	{
@@ -164,7 +172,7 @@ std::vector<ScanSegment> VectorExtractor::splitAndMerge(const std::vector<TPoint
 		for (size_t s = 0; s + 1 < segs.size(); ++s)
 		{
 			ScanSegment joint;
-			if (fitSegment(pts, pm, segs[s].first, segs[s + 1].last, joint, ext_.mergeThreshold))
+			if (fitSegment(pts, pm, segs[s].first, segs[s + 1].last, joint, tol.merge))
 			{
 				segs[s] = joint;
 				segs.erase(segs.begin() + long(s) + 1);
@@ -211,7 +219,7 @@ LocalScan VectorExtractor::extract(const mrpt::obs::CObservation2DRangeScan& sca
 	for (size_t r = 0; r + 1 < runs.size(); ++r)
 	{
 		if (runs[r + 1] - runs[r] < size_t(ext_.minPoints)) continue;
-		for (const auto& seg : splitAndMerge(pts, runs[r], runs[r + 1] - 1))
+		for (const auto& seg : splitAndMerge(pts, runs[r], runs[r + 1] - 1, scan.stdError))
 		{
 			if (seg.last - seg.first + 1 < size_t(ext_.minPoints)) continue;
 			GridVector v = makeVector(pts, seg, out.sensorOrigin);

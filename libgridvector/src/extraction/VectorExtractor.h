@@ -41,9 +41,22 @@ class VectorExtractor
 	void scanToPoints(const mrpt::obs::CObservation2DRangeScan& scan, std::vector<mrpt::math::TPoint2D>& pts,
 					  size_t stride) const;
 
-	/** Split-and-merge over one run of ordered points [first, last]. */
-	std::vector<ScanSegment> splitAndMerge(const std::vector<mrpt::math::TPoint2D>& pts, size_t first,
-										   size_t last) const;
+	/** Split-and-merge's point-to-line tolerances for a scanner of range std. dev. `rangeSigma` [m]. */
+	struct FitTolerance
+	{
+		double split = 0, merge = 0;
+	};
+	/** split_threshold and merge_threshold, raised to break_noise_sigmas x rangeSigma where the scanner is
+	 * noisier (its noise alone would split a straight wall, as the breakpoint's allowance already says), at
+	 * most kMaxTolerance. With the usual 0.01 m the keys hold unchanged. */
+	FitTolerance tolerance(double rangeSigma) const;
+	/** A noise-raised tolerance stops here: the keys' own upper bound [m]. */
+	static constexpr double kMaxTolerance = 1.0;
+
+	/** Split-and-merge over one run of ordered points [first, last], for a scanner of range std. dev.
+	 * `rangeSigma` (the scan's stdError; tolerance()). */
+	std::vector<ScanSegment> splitAndMerge(const std::vector<mrpt::math::TPoint2D>& pts, size_t first, size_t last,
+										   double rangeSigma = 0) const;
 
 	/** Directed grid vector from a fitted segment: endpoints are the
 	 * projections of the extreme points, open space (sensor) on the left,
@@ -59,7 +72,7 @@ class VectorExtractor
 	bool validBeam(const mrpt::obs::CObservation2DRangeScan& scan, size_t i) const;
 
 	void split(const std::vector<mrpt::math::TPoint2D>& pts, const PrefixMoments& pm, size_t i, size_t j,
-			   std::vector<ScanSegment>& out) const;
+			   double threshold, std::vector<ScanSegment>& out) const;
 	/** LS fit of [i, j] from prefix moments; false if degenerate or, when
 	 * maxResidual > 0, if the fit's residual provably exceeds it. */
 	bool fitSegment(const std::vector<mrpt::math::TPoint2D>& pts, const PrefixMoments& pm, size_t i, size_t j,

@@ -110,9 +110,11 @@ void OnlineEmSlam::addEdges(uint32_t i, OnlineStep& st)
 			   std::max(loopClosure_.windowOf(j, i).translation, m.overlapDistance);
 	});
 	std::vector<EdgeKey> fresh, loops;
-	for (const auto& p : passes)
+	for (size_t k = 0; k < passes.size(); ++k)
 	{
 		if (segs_[i].empty()) break;
+		if (!PassFinder::registeredPass(k, passes.size())) continue;  // as the batch's, the work per keyframe bounded
+		const auto& p = passes[k];
 		const auto link = loopClosure_.linked(p.lo > K ? p.lo - K : 0, p.hi + K, i > K ? i - K : 0, i, fresh);
 		const double dist = std::hypot(keyPose_[i].x - keyPose_[p.nearest].x, keyPose_[i].y - keyPose_[p.nearest].y);
 		if (link != LoopClosure::Link::None)

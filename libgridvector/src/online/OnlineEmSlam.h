@@ -40,8 +40,8 @@ struct OnlineStep
  *
  * Per scan: the pose now, registered (Sec. 4.2, VectorMatcher) against the last keyframe from the
  * odometry guess. Per keyframe (EmSlam::isKeyframe, as the batch's): sequential edges to its
- * mstep.sequential_window predecessors (PairRegistration), for every earlier pass near it an
- * overlap edge where the estimate already links the passes (Sec. 4.3, OverlapEdges) or else a loop
+ * mstep.sequential_window predecessors (PairRegistration), for every earlier pass near it that the
+ * batch registers into (the first and the most recent, PassFinder::registeredPass) an overlap edge where the estimate already links the passes (Sec. 4.3, OverlapEdges) or else a loop
  * search in the window of the odometry model (LoopSearch), the new edges checked for consistency
  * (verifyOverlaps); then the scan's vectors added to the map with Eq. 8's full product updated both
  * ways and the E-step (Eq. 14-15) on the vectors that changed (ClassifiedMap: the batch E-step's map

@@ -118,6 +118,33 @@ TEST(WipeProduct, ScansReachOnlyOtherScansVectorsNearThem)
 	}
 }
 
+// Scan 1 sees scan 0's wall 0.2 m further away. At map.hit_band (0.05 m) it sees through scan 0's vector; from a
+// scanner whose noise allowance is 0.3 m (ScanWipe::hitBandFor) the same cells are its hits.
+TEST(WipeProduct, AScansNoiseWidensItsHitBand)
+{
+	const GridOptions grid;
+	PerScan p;
+	p.map = {GridVector({1, 1.0}, {-1, 1.0}, grid), GridVector({1, 1.2}, {-1, 1.2}, grid)};
+	p.first = {0, 1, 2};
+	p.sensors = {{0, 0}, {0, 0}};
+	auto occupied = [](const GridVector& v) {
+		double n = 0;
+		for (const auto& c : v.cells()) n += c.n_occupy;
+		return n;
+	};
+	LocalScan noisy;
+	noisy.rangeNoise = 0.3;
+	EXPECT_EQ(ScanWipe::hitBandFor(0.05, LocalScan{}), 0.05);
+	EXPECT_EQ(ScanWipe::hitBandFor(0.05, noisy), 0.3);
+	std::vector<GridVector> narrow = p.map, wide = p.map;
+	WipeProduct(0.05, false, 2.0).apply(p.sensors, p.first, narrow);
+	WipeProduct(0.05, false, 2.0).apply(p.sensors, p.first, wide, {0.05, ScanWipe::hitBandFor(0.05, noisy)});
+	EXPECT_EQ(occupied(narrow[0]), occupied(p.map[0]));  // seen through: visits only
+	EXPECT_GT(narrow[0].totalVisit(), p.map[0].totalVisit());
+	EXPECT_GT(occupied(wide[0]), occupied(p.map[0]) + 10);  // hit, row by row
+	EXPECT_THROW(WipeProduct(0.05, false, 2.0).apply(p.sensors, p.first, wide, {0.05}), std::invalid_argument);
+}
+
 TEST(WipeProduct, RejectsRangesThatDoNotCoverTheMap)
 {
 	PerScan p = roomTrajectory(2);

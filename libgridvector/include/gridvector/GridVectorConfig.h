@@ -68,8 +68,8 @@ struct ExtractionOptions
 		v("max_point_gap", maxPointGap, "Largest gap between consecutive points of one vector [m]",
 		  Range::above(0, 10));
 		v("break_noise_sigmas", breakNoiseSigmas,
-		  "Range noise allowance in scanner std. devs (the scan's stdError) of the adaptive breakpoint (Borges & "
-		  "Aldon: 3; 0: geometry only) and of the split and merge thresholds",
+		  "Range noise allowance in scanner std. devs (stdError) of the breakpoint (Borges & Aldon: 3; 0: geometry "
+		  "only), split, merge and hit band",
 		  Range::closed(0, 10));
 	}
 };
@@ -107,7 +107,9 @@ struct MapOptions
 	template <class V>
 	void visit(V&& v)
 	{
-		v("hit_band", hitBand, "Eq. 8 part c: cells within this of the new vector count as hits [m]",
+		v("hit_band", hitBand,
+		  "Eq. 8 part c: cells within this of the new vector count as hits; at least the scan's range noise "
+		  "allowance (extraction.break_noise_sigmas x its stdError) [m]",
 		  Range::above(0, 1));
 		v("max_direction_diff_deg", maxDirectionDiffDeg,
 		  "Correspondence criterion 1: largest difference of directions psi [deg]", Range::closed(0, 180));

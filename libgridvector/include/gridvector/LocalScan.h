@@ -18,6 +18,9 @@ struct LocalScan
 	int64_t scanIndex = -1;  //!< t
 	double timestamp = 0;
 	size_t validBeams = 0;  //!< beams that returned a usable range
+	/** The scanner's range noise allowance: extraction.break_noise_sigmas x its std. error (VectorExtractor), 0 if
+	 * unknown; what Eq. 8's hit band widens to (ScanWipe::hitBandFor) [m]. */
+	double rangeNoise = 0;
 };
 
 }  // namespace gridvector

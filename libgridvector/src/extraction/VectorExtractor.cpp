@@ -150,11 +150,15 @@ void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoment
 	}
 }
 
+double VectorExtractor::noiseAllowance(double rangeSigma) const
+{
+	return std::isfinite(rangeSigma) ? std::min(kMaxTolerance, ext_.breakNoiseSigmas * std::max(0.0, rangeSigma)) : 0.0;
+}
+
 VectorExtractor::FitTolerance VectorExtractor::tolerance(double rangeSigma) const
 {
-	const double noise = ext_.breakNoiseSigmas * (std::isfinite(rangeSigma) ? std::max(0.0, rangeSigma) : 0.0);  // unknown: none
-	auto raised = [&](double key) { return std::max(key, std::min(noise, kMaxTolerance)); };
-	return {raised(ext_.splitThreshold), raised(ext_.mergeThreshold)};
+	const double noise = noiseAllowance(rangeSigma);
+	return {std::max(ext_.splitThreshold, noise), std::max(ext_.mergeThreshold, noise)};
 }
 
 // Merge step: neighbouring segments whose joint least-squares fit stays tight.
@@ -215,6 +219,7 @@ LocalScan VectorExtractor::extract(const mrpt::obs::CObservation2DRangeScan& sca
 	std::vector<size_t> runs;
 	scanToRuns(scan, pts, runs);
 	out.validBeams = pts.size();
+	out.rangeNoise = noiseAllowance(scan.stdError);
 	runs.push_back(pts.size());
 	for (size_t r = 0; r + 1 < runs.size(); ++r)
 	{

@@ -50,6 +50,8 @@ class VectorExtractor
 	 * noisier (its noise alone would split a straight wall, as the breakpoint's allowance already says), at
 	 * most kMaxTolerance. With the usual 0.01 m the keys hold unchanged. */
 	FitTolerance tolerance(double rangeSigma) const;
+	/** break_noise_sigmas x rangeSigma, at most kMaxTolerance; 0 for a negative or non-finite one (unknown). */
+	double noiseAllowance(double rangeSigma) const;
 	/** A noise-raised tolerance stops here: the keys' own upper bound [m]. */
 	static constexpr double kMaxTolerance = 1.0;
 

@@ -110,6 +110,8 @@ ScanWipe::Stats GlobalMap::wipeHolding(const mrpt::math::TPose2D& robotPose, con
 	held = HeldBack{};
 	held.sensor = sensorPosition(robotPose, scan);
 	held.scanIndex = scan.scanIndex;
+	held.hitBand = ScanWipe::hitBandFor(cfg_.map.hitBand, scan);
+	wiper_.setHitBand(held.hitBand);
 	std::vector<std::vector<size_t>> mergeTargets(scan.vectors.size());
 	held.targets.resize(scan.vectors.size());
 	for (size_t j = 0; j < scan.vectors.size(); ++j)
@@ -152,7 +154,10 @@ void GlobalMap::completeRefused(HeldBack& held)
 		if (slot == cand.end()) continue;  // merged: it holds the new vectors' endpoints
 		if (held.scanIndex >= 0 && vectors_[*slot].scanIndex == held.scanIndex) continue;  // not wiped by its scan
 		if (tris.empty())
+		{
+			wiper_.setHitBand(held.hitBand);
 			for (const auto& seg : held.segs) tris.push_back(wiper_.triangleOf(held.sensor, seg));
+		}
 		std::vector<WipePart> applied(tris.size(), WipePart::Hit), wanted(tris.size(), WipePart::Hit);
 		for (size_t k = 0; k < tris.size(); ++k)
 			if (std::binary_search(held.targets[k].begin(), held.targets[k].end(), id)) applied[k] = WipePart::Visited;

@@ -139,6 +139,7 @@ class GlobalMap
 	{
 		mrpt::math::TPoint2D sensor;
 		int64_t scanIndex = -1;
+		double hitBand = 0;  //!< the scan's (ScanWipe::hitBandFor)
 		std::vector<ScanWipe::Segment> segs;
 		std::vector<std::vector<uint64_t>> targets;  //!< per segment, ascending
 		std::vector<std::pair<uint64_t, Box2D>> boxes;  //!< every target once, with its box

@@ -43,8 +43,10 @@ std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TP
 	first[scans.size()] = all.size();
 
 	std::vector<TPoint2D> sensors(scans.size());
-	for (size_t t = 0; t < scans.size(); ++t) sensors[t] = sensorPosition(poses[t], scans[t]);
-	WipeProduct(cfg.map.hitBand, kBatchWipeCountsBeams, kWipeBucket).apply(sensors, first, all);
+	std::vector<double> bands(scans.size());
+	for (size_t t = 0; t < scans.size(); ++t)
+		sensors[t] = sensorPosition(poses[t], scans[t]), bands[t] = ScanWipe::hitBandFor(cfg.map.hitBand, scans[t]);
+	WipeProduct(cfg.map.hitBand, kBatchWipeCountsBeams, kWipeBucket).apply(sensors, first, all, bands);
 	return all;
 }
 

@@ -13,7 +13,7 @@ namespace
 /** Every vector's triangle from its scan's sensor (degenerate ones kept, never indexed). */
 std::vector<WipeTriangle> trianglesOf(const std::vector<mrpt::math::TPoint2D>& sensors,
 									  const std::vector<size_t>& first, const std::vector<GridVector>& map,
-									  double hitBand, bool countBeams)
+									  const std::vector<double>& hitBands, bool countBeams)
 {
 	std::vector<WipeTriangle> tris;
 	tris.reserve(map.size());
@@ -22,7 +22,7 @@ std::vector<WipeTriangle> trianglesOf(const std::vector<mrpt::math::TPoint2D>& s
 		{
 			const ScanWipe::Segment v = ScanWipe::segmentOf(map[i]);
 			const double density = countBeams ? WipeTriangle::beamDensity(sensors[t], v.start, v.end, v.points) : 0.0;
-			tris.emplace_back(sensors[t], v.start, v.end, hitBand, density);
+			tris.emplace_back(sensors[t], v.start, v.end, hitBands[t], density);
 		}
 	return tris;
 }
@@ -32,10 +32,16 @@ std::vector<WipeTriangle> trianglesOf(const std::vector<mrpt::math::TPoint2D>& s
 ScanWipe::Stats WipeProduct::apply(const std::vector<mrpt::math::TPoint2D>& sensors, const std::vector<size_t>& first,
 								   std::vector<GridVector>& map) const
 {
-	if (first.size() != sensors.size() + 1 || first.back() != map.size())
+	return apply(sensors, first, map, std::vector<double>(sensors.size(), hitBand_));
+}
+
+ScanWipe::Stats WipeProduct::apply(const std::vector<mrpt::math::TPoint2D>& sensors, const std::vector<size_t>& first,
+								   std::vector<GridVector>& map, const std::vector<double>& hitBands) const
+{
+	if (first.size() != sensors.size() + 1 || first.back() != map.size() || hitBands.size() != sensors.size())
 		throw std::invalid_argument("WipeProduct: scan ranges do not cover the map");
 	ScanWipe::Stats st;
-	const std::vector<WipeTriangle> tris = trianglesOf(sensors, first, map, hitBand_, beams_);
+	const std::vector<WipeTriangle> tris = trianglesOf(sensors, first, map, hitBands, beams_);
 	std::vector<uint32_t> scanOf(map.size());
 	TriangleBuckets index(cell_);
 	for (size_t t = 0; t < sensors.size(); ++t)

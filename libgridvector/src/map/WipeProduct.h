@@ -37,6 +37,9 @@ class WipeProduct
 	 * sensors[t]: the sensor position of scan t (the triangles' apex). */
 	ScanWipe::Stats apply(const std::vector<mrpt::math::TPoint2D>& sensors, const std::vector<size_t>& first,
 						  std::vector<GridVector>& map) const;
+	/** The same with scan t's triangles at hitBands[t] (ScanWipe::hitBandFor) instead of hitBand. */
+	ScanWipe::Stats apply(const std::vector<mrpt::math::TPoint2D>& sensors, const std::vector<size_t>& first,
+						  std::vector<GridVector>& map, const std::vector<double>& hitBands) const;
 
    private:
 	double hitBand_;

@@ -45,6 +45,7 @@ size_t ClassifiedMap::insert(const TPose2D& pose, const LocalScan& scan)
 	const size_t first = vectors_.size();
 	std::vector<GridVector> fresh;
 	std::vector<WipeTriangle> freshTris;
+	const double band = ScanWipe::hitBandFor(cfg_.map.hitBand, scan);
 	fresh.reserve(scan.vectors.size());
 	for (const auto& v : scan.vectors)
 	{
@@ -53,7 +54,7 @@ size_t ClassifiedMap::insert(const TPose2D& pose, const LocalScan& scan)
 		m.timestamp = scan.timestamp;
 		m.id = first + fresh.size() + 1;
 		const ScanWipe::Segment s = ScanWipe::segmentOf(m);
-		freshTris.emplace_back(sensor, s.start, s.end, cfg_.map.hitBand, 0.0);  // the per-cell unit: density 0
+		freshTris.emplace_back(sensor, s.start, s.end, band, 0.0);  // the per-cell unit: density 0
 		fresh.push_back(std::move(m));
 	}
 	// the new scan's triangles over the earlier vectors they reach (each vector: this scan comes last so far)

@@ -55,6 +55,28 @@ TEST(VectorMatcher, RecoversRelativePoseFromPerturbedGuess)
 	EXPECT_GT(es.eigenvalues()(0), 100.0);
 }
 
+// A perfect fit claims the laser's noise, kSigmaFloor (0.03 m), or its scans' range std. dev. where that is
+// larger: from scans of 0.3 m the same match is worth (0.03 / 0.3)^2 of the information, at the same pose.
+TEST(VectorMatcher, InformationAtMostThatOfTheScansRangeNoise)
+{
+	const TPose2D xa(1.0, 1.0, 0.3), xb(1.6, 1.4, 0.45);
+	auto a = observe(room(), xa, 0.0, 1, 1), b = observe(room(), xb, 0.0, 2, 100);
+	const TPose2D truth = relative(xa, xb);
+	VectorMatcher m;
+	const MatchResult clean = m.match(a, b, truth);
+	for (auto& s : a) s.sigma = 0.01;  // the usual scanner: below the floor, nothing changes
+	for (auto& s : b) s.sigma = 0.01;
+	const MatchResult usual = m.match(a, b, truth);
+	for (auto& s : b) s.sigma = 0.3;  // one noisy scan is enough
+	const MatchResult noisy = m.match(a, b, truth);
+	ASSERT_TRUE(clean.ok() && usual.ok() && noisy.ok());
+	EXPECT_EQ(usual.information, clean.information);
+	EXPECT_NEAR(noisy.pose.x, truth.x, 1e-6);
+	EXPECT_NEAR(noisy.pose.phi, truth.phi, 1e-7);
+	EXPECT_TRUE(noisy.information.isApprox(clean.information * (0.03 * 0.03) / (0.3 * 0.3), 1e-3));
+	EXPECT_EQ(MatchSegment::fromVectors({GridVector({0, 0}, {1, 0}, GridOptions{})}, 0.2).front().sigma, 0.2);
+}
+
 TEST(VectorMatcher, NoisySegmentsGiveCentimetreAccuracy)
 {
 	const TPose2D xa(1.0, 1.0, 0.3), xb(2.0, 1.5, -0.2);

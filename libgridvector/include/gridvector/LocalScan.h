@@ -21,6 +21,9 @@ struct LocalScan
 	/** The scanner's range noise allowance: extraction.break_noise_sigmas x its std. error (VectorExtractor), 0 if
 	 * unknown; what Eq. 8's hit band widens to (ScanWipe::hitBandFor) [m]. */
 	double rangeNoise = 0;
+	/** The scanner's range std. dev. (its stdError; 0 if unknown): the floor of a registration's residual
+	 * (VectorMatcher) [m]. */
+	double rangeSigma = 0;
 };
 
 }  // namespace gridvector

@@ -29,7 +29,7 @@ std::vector<std::vector<MatchSegment>> initialSegments(const std::vector<LocalSc
 	for (size_t t = 0; t < scans.size(); ++t)
 		for (const auto& v : scans[t].vectors)
 		{
-			MatchSegment m = MatchSegment::from(v);
+			MatchSegment m = MatchSegment::from(v, scans[t].rangeSigma);
 			m.id = EStep::childId(id++, 0);
 			out[t].push_back(m);
 		}
@@ -71,14 +71,16 @@ bool EmSlam::movedEnough(const std::vector<TPose2D>& a, const std::vector<TPose2
 
 // Eq. 19-20: the M-step registers the static vectors only; dynamic ones are outliers.
 std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<GridVector>& children,
-															  const std::vector<TPose2D>& poses)
+															  const std::vector<TPose2D>& poses,
+															  const std::vector<LocalScan>* scans)
 {
 	std::vector<std::vector<MatchSegment>> out(poses.size());
 	for (const auto& c : children)
 	{
 		if (c.state != VectorState::Static || c.scanIndex < 0 || size_t(c.scanIndex) >= poses.size()) continue;
 		const TPose2D inv = TPose2D(0, 0, 0) - poses[size_t(c.scanIndex)];
-		MatchSegment m = MatchSegment::from(c.compose(inv));  // back to the scan's frame
+		const size_t t = size_t(c.scanIndex);
+		MatchSegment m = MatchSegment::from(c.compose(inv), scans && t < scans->size() ? (*scans)[t].rangeSigma : 0.0);  // back to the scan's frame
 		out[size_t(c.scanIndex)].push_back(m);
 	}
 	return out;
@@ -287,10 +289,10 @@ EmResult EmSlam::runKeyframes(const std::vector<LocalScan>& scans, const std::ve
 		if (cfg_.doors.duringEm)
 		{
 			if (progress) progress("doors", k, 0.0);
-			segs = staticSegments(doorExclusion.apply(e.children, changedIds, it.doors), res.poses);
+			segs = staticSegments(doorExclusion.apply(e.children, changedIds, it.doors), res.poses, &scans);
 		}
 		else
-			segs = staticSegments(e.children, res.poses);
+			segs = staticSegments(e.children, res.poses, &scans);
 		it.eSeconds = since(t0);
 		prevE = std::move(e);  // its children become res.perScan after the loop (one copy of the map, not two)
 		res.iterations.push_back(it);

@@ -86,9 +86,11 @@ class EmSlam
 						   const std::vector<size_t>& keyframes)>;
 	void setMStepObserver(MStepObserver f) { observer_ = std::move(f); }
 
-	/** Static children of the E-step as registration segments, in their scan's frame. */
+	/** Static children of the E-step as registration segments, in their scan's frame (with `scans`, each with its
+	 * scan's rangeSigma). */
 	static std::vector<std::vector<MatchSegment>> staticSegments(const std::vector<GridVector>& children,
-																 const std::vector<mrpt::math::TPose2D>& poses);
+																 const std::vector<mrpt::math::TPose2D>& poses,
+																 const std::vector<LocalScan>* scans = nullptr);
 
 	/** Scans EM works on: the first, the last, and each one whose odometry moved
 	 * mstep.keyframe_distance or turned mstep.keyframe_rotation_deg since the last. */

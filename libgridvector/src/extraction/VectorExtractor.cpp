@@ -220,6 +220,7 @@ LocalScan VectorExtractor::extract(const mrpt::obs::CObservation2DRangeScan& sca
 	scanToRuns(scan, pts, runs);
 	out.validBeams = pts.size();
 	out.rangeNoise = noiseAllowance(scan.stdError);
+	out.rangeSigma = std::isfinite(scan.stdError) ? std::max(0.0, double(scan.stdError)) : 0.0;
 	runs.push_back(pts.size());
 	for (size_t r = 0; r + 1 < runs.size(); ++r)
 	{

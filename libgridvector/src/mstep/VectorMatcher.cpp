@@ -23,7 +23,7 @@ constexpr int kMaxIterations =
 constexpr double kGateShrink =
 	0.7;  // the gates' factor per iteration: final (0.12 m, 6 deg) from initial (0.6 m, 20 deg) in 5
 constexpr double kSigmaFloor =
-	0.03;  // residual std. dev. floor [m]: a perfect fit must not claim more than the laser's noise
+	0.03;  // residual std. dev. floor [m]: a perfect fit must not claim more than the laser's noise (or its scans' sigma)
 constexpr double kConvergenceTranslation = 1e-4;  // a step under 0.1 mm: far below the laser's noise [m]
 constexpr double kConvergenceRotation = 1e-5;  // ... and under 0.0006 deg [rad]
 constexpr double kRobustScaleGateShare =
@@ -48,21 +48,22 @@ const char* toString(MatchStatus s)
 	return "?";
 }
 
-MatchSegment MatchSegment::from(const GridVector& v)
+MatchSegment MatchSegment::from(const GridVector& v, double sigma)
 {
 	MatchSegment m;
 	m.s = {v.start().x, v.start().y};
 	m.e = {v.end().x, v.end().y};
 	m.length = v.length();
 	m.id = v.id;
+	m.sigma = sigma;
 	return m;
 }
 
-std::vector<MatchSegment> MatchSegment::fromVectors(const std::vector<GridVector>& v)
+std::vector<MatchSegment> MatchSegment::fromVectors(const std::vector<GridVector>& v, double sigma)
 {
 	std::vector<MatchSegment> out;
 	out.reserve(v.size());
-	for (const auto& g : v) out.push_back(from(g));
+	for (const auto& g : v) out.push_back(from(g, sigma));
 	return out;
 }
 
@@ -248,6 +249,9 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a, const std::
 	TPose2D T = guess;
 	prepareA(a);
 	const MatchGates fin = finalGates();
+	double floor = kSigmaFloor;  // the laser's noise: at least the noisier scan's range std. dev.
+	for (const auto* scan : {&a, &b})
+		for (const auto& s : *scan) floor = std::max(floor, s.sigma);
 	Matrix3d H;
 	Vector3d g;
 	double sumW = 0, sumWr2 = 0;
@@ -265,7 +269,7 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a, const std::
 		// into short vectors, far walls) are noisy and biased, and a step from them pulls the fit off its optimum
 		if (!tight) rotateAboutMatchedCentre(T);
 		// joint Gauss-Newton step on point-to-line distances (translation and rotation)
-		normalEquations(b, T, std::max(kSigmaFloor, kRobustScaleGateShare * gates.rho), H, g, sumW, sumWr2);
+		normalEquations(b, T, std::max(floor, kRobustScaleGateShare * gates.rho), H, g, sumW, sumWr2);
 		const double damp = 1e-6 * std::max(1e-12, H.trace());
 		Vector3d delta = -(H + damp * Matrix3d::Identity()).ldlt().solve(g);
 		if (!delta.allFinite()) break;
@@ -286,7 +290,7 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a, const std::
 	transformB(b, T);
 	gather(fin);
 	for (Pair& p : pairs_) p.weight = 1.0;
-	normalEquations(b, T, kSigmaFloor, H, g, sumW, sumWr2);
+	normalEquations(b, T, floor, H, g, sumW, sumWr2);
 	double totalA = 0, totalB = 0;
 	for (const auto& s : a) totalA += s.length;
 	for (const auto& s : b) totalB += s.length;
@@ -298,7 +302,7 @@ MatchResult VectorMatcher::match(const std::vector<MatchSegment>& a, const std::
 	std::sort(res.pairs.begin(), res.pairs.end());
 	res.matchedShare = std::min(1.0, res.matchedLength / std::max(1e-9, std::min(totalA, totalB)));
 	res.rms = sumW > 0 ? std::sqrt(sumWr2 / sumW) : 0;
-	const double var = std::max(kSigmaFloor * kSigmaFloor, res.rms * res.rms);
+	const double var = std::max(floor * floor, res.rms * res.rms);
 	res.information = H / var;
 	const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(H.topLeftCorner<2, 2>());
 	const double lmax = es.eigenvalues()(1);

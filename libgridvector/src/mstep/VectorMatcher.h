@@ -18,9 +18,10 @@ struct MatchSegment
 	Eigen::Vector2d s{0, 0}, e{0, 0};  //!< start and terminal point (open space on the left)
 	double length = 0;
 	uint64_t id = 0;  //!< the grid vector's id (for M_cor, Eq. 25)
+	double sigma = 0;  //!< its scanner's range std. dev. (LocalScan::rangeSigma) [m]
 
-	static MatchSegment from(const GridVector& v);
-	static std::vector<MatchSegment> fromVectors(const std::vector<GridVector>& v);
+	static MatchSegment from(const GridVector& v, double sigma = 0);
+	static std::vector<MatchSegment> fromVectors(const std::vector<GridVector>& v, double sigma = 0);
 };
 
 /** One correspondence: vector `a` of scan A matches vector `b` of scan B. */

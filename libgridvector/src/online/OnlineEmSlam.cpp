@@ -64,7 +64,7 @@ OnlineStep OnlineEmSlam::addScan(const LocalScan& scan, const TPose2D& odometry)
 {
 	OnlineStep st;
 	const size_t t = odometry_.size();
-	std::vector<MatchSegment> segs = MatchSegment::fromVectors(scan.vectors);
+	std::vector<MatchSegment> segs = MatchSegment::fromVectors(scan.vectors, scan.rangeSigma);
 	for (auto& s : segs) s.id = nextSegmentId_++;
 	TPose2D pose = odometry;  // the first scan fixes the frame, as the batch's first pose
 	st.keyframe = keyPose_.empty();

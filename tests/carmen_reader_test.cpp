@@ -419,8 +419,8 @@ TEST(NoReturnRange, SaturationBelowTheDeclaredMaximumIsNoReturn)
 	EXPECT_TRUE(d.scans[1].scan->getScanRangeValidity(1));  // 20.25 m: a hit
 	ASSERT_EQ(d.warnings.size(), 1u);
 	EXPECT_EQ(d.warnings[0],
-			  "readings of exactly 50.00 m (the largest, in >= 1 % and >= 10 of the scans) are the scanner's "
-			  "no-return value: max range 50.00 m instead of 81.00 m");
+			  "readings of 50.00 m and more (a spike at the top, in >= 1 % and >= 10 of the scans) are the "
+			  "scanner's no-return value: max range 50.00 m instead of 81.00 m");
 	// off: the declared maximum stands
 	ReadOptions keep;
 	keep.detectNoReturnRange = false;
@@ -432,10 +432,15 @@ TEST(NoReturnRange, SaturationBelowTheDeclaredMaximumIsNoReturn)
 
 TEST(NoReturnRange, RareLargestReadingIsAWall)
 {
+	// a wall's ranges spread as the robot moves (20.00-20.99 m), the farthest one seen once
 	std::string text = "PARAM robot_front_laser_max 81 h 0\n";
 	for (int t = 0; t < 200; ++t)
-		text += "FLASER 3 1.5 " + std::string(t == 7 ? "50.00" : "20.25") + " 2.5 0 0 0 0 0 0 " +
+	{
+		char wall[16];
+		std::snprintf(wall, sizeof wall, "%.2f", 20.0 + 0.01 * (t % 100));
+		text += "FLASER 3 1.5 " + std::string(t == 7 ? "50.00" : wall) + " 2.5 0 0 0 0 0 0 " +
 				std::to_string(10 + t) + ".5 host 0\n";
+	}
 	const LogData d = parse(text);
 	EXPECT_FALSE(saturationRange(d).has_value());  // 1 of 200 scans: below 1 %
 	const std::string path = tempPath("rare.log");
@@ -447,14 +452,46 @@ TEST(NoReturnRange, RareLargestReadingIsAWall)
 	fs::remove(path);
 }
 
+// A code that jitters (51.14-51.16 m, two stray readings above) and a second code (50.00 m) under real readings
+// that thin out with range: both are no return, the real ones below stay hits.
+TEST(NoReturnRange, JitteringCodesAtTheTopAreNoReturn)
+{
+	std::string text = "PARAM robot_front_laser_max 81 h 0\n";
+	for (int t = 0; t < 400; ++t)
+	{
+		const char* code = t % 25 == 0 ? "50.00" : t % 3 == 0 ? "51.15" : t % 3 == 1 ? "51.14" : "51.16";
+		char far[16];
+		std::snprintf(far, sizeof far, "%.2f", 30.0 + 0.05 * (t % 360));  // 30-48 m, thinning above 40 m
+		const char* stray = t == 5 ? "51.25" : t == 6 ? "51.20" : far;
+		text += std::string("FLASER 4 1.5 ") + code + " " + (t % 2 ? far : stray) + " 2.5 0 0 0 0 0 0 " +
+				std::to_string(10 + t) + ".5 host 0\n";
+	}
+	const LogData d = parse(text);
+	ASSERT_TRUE(saturationRange(d).has_value());
+	EXPECT_FLOAT_EQ(float(*saturationRange(d)), 50.0f);
+	// and the real readings alone have none
+	std::string real = "PARAM robot_front_laser_max 81 h 0\n";
+	for (int t = 0; t < 400; ++t)
+	{
+		char far[16];
+		std::snprintf(far, sizeof far, "%.2f", 30.0 + 0.05 * (t % 360));
+		real += std::string("FLASER 3 1.5 ") + far + " 2.5 0 0 0 0 0 0 " + std::to_string(10 + t) + ".5 host 0\n";
+	}
+	EXPECT_FALSE(saturationRange(parse(real)).has_value());
+}
+
 TEST(NoReturnRange, TinyLogNeedsTenScansAtTheLargestReading)
 {
 	// 20 scans: one scan's 50.00 m is 5 % of them, yet a wall seen once (1 % alone took it as no return)
 	auto text = [](int atTop) {
 		std::string t = "PARAM robot_front_laser_max 81 h 0\n";
 		for (int k = 0; k < 20; ++k)
-			t += "FLASER 3 1.5 " + std::string(k < atTop ? "50.00" : "20.25") + " 2.5 0 0 0 0 0 0 " +
+		{
+			char wall[16];  // a wall's ranges spread as the robot moves
+			std::snprintf(wall, sizeof wall, "%.2f", 20.0 + 0.01 * k);
+			t += "FLASER 3 1.5 " + std::string(k < atTop ? "50.00" : wall) + " 2.5 0 0 0 0 0 0 " +
 				 std::to_string(10 + k) + ".5 host 0\n";
+		}
 		return t;
 	};
 	EXPECT_FALSE(saturationRange(parse(text(1))).has_value());

@@ -63,8 +63,8 @@ void applyNoReturnRange(LogData& log)
 	log.noReturnRange = *range;
 	char buf[224];
 	std::snprintf(buf, sizeof buf,
-				  "readings of exactly %.2f m (the largest, in >= %g %% and >= %zu of the scans) are the scanner's "
-				  "no-return value: max range %.2f m instead of %.2f m",
+				  "readings of %.2f m and more (a spike at the top, in >= %g %% and >= %zu of the scans) are the "
+				  "scanner's no-return value: max range %.2f m instead of %.2f m",
 				  *range, 100 * kNoReturnMinShare, kNoReturnMinScans, *range, double(declared));
 	log.warnings.push_back(buf);
 	log.summary += std::string("; ") + buf;

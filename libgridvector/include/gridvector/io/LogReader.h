@@ -63,9 +63,9 @@ struct ReadOptions
 	bool quiet = true;  //!< false: progress on stderr when it is a terminal
 	bool includeRearLaser = true;  //!< CARMEN RLASER / RAWLASER2 scans
 	std::string sensorLabel;  //!< rawlogs: keep only scans with this label (empty: all)
-	/** CARMEN: when the log's largest reading is shared exactly by >= 1 % of the scans and
-	 * by >= 10 of them, it is the scanner's "no return" value (ACES: 50.00 m under a declared 81 m), and every
-	 * scan's maxRange becomes it (NoReturnRange.h); a warning says so. */
+	/** CARMEN: a spike of readings at the top of the ranges, one value shared exactly by >= 1 % of the scans
+	 * and by >= 10 of them, is the scanner's "no return" code (ACES: 50.00 m under a declared 81 m; codes
+	 * that jitter, 51.06-51.16 m), and every scan's maxRange becomes it (NoReturnRange.h); a warning says so. */
 	bool detectNoReturnRange = true;
 };
 

@@ -132,13 +132,15 @@ TEST(WipeProduct, AScansNoiseWidensItsHitBand)
 		for (const auto& c : v.cells()) n += c.n_occupy;
 		return n;
 	};
+	GridVectorConfig cfg;
+	cfg.map.hitBand = 0.05;
 	LocalScan noisy;
-	noisy.rangeNoise = 0.3;
-	EXPECT_EQ(ScanWipe::hitBandFor(0.05, LocalScan{}), 0.05);
-	EXPECT_EQ(ScanWipe::hitBandFor(0.05, noisy), 0.3);
+	noisy.rangeSigma = 0.1;  // x break_noise_sigmas 3
+	EXPECT_EQ(ScanWipe::hitBandFor(cfg, LocalScan{}), 0.05);
+	EXPECT_DOUBLE_EQ(ScanWipe::hitBandFor(cfg, noisy), 0.3);
 	std::vector<GridVector> narrow = p.map, wide = p.map;
 	WipeProduct(0.05, false, 2.0).apply(p.sensors, p.first, narrow);
-	WipeProduct(0.05, false, 2.0).apply(p.sensors, p.first, wide, {0.05, ScanWipe::hitBandFor(0.05, noisy)});
+	WipeProduct(0.05, false, 2.0).apply(p.sensors, p.first, wide, {0.05, ScanWipe::hitBandFor(cfg, noisy)});
 	EXPECT_EQ(occupied(narrow[0]), occupied(p.map[0]));  // seen through: visits only
 	EXPECT_GT(narrow[0].totalVisit(), p.map[0].totalVisit());
 	EXPECT_GT(occupied(wide[0]), occupied(p.map[0]) + 10);  // hit, row by row

@@ -8,6 +8,7 @@
 
 #include <mrpt/config/CConfigFileBase.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iosfwd>
 #include <string>
@@ -46,6 +47,12 @@ struct ExtractionOptions
 	double minLength = 0.12;
 	double maxPointGap = 1.0;
 	double breakNoiseSigmas = 3.0;
+
+	/** A noise allowance stops here: the thresholds' own upper bound [m]. */
+	static constexpr double kMaxNoiseAllowance = 1.0;
+	/** break_noise_sigmas x a scanner's range std. dev. `sigma` (>= 0, LocalScan::rangeSigma), at most
+	 * kMaxNoiseAllowance: how far the split and merge thresholds and Eq. 8's hit band widen for it [m]. */
+	double noiseAllowance(double sigma) const { return std::min(kMaxNoiseAllowance, breakNoiseSigmas * sigma); }
 
 	template <class V>
 	void visit(V&& v)

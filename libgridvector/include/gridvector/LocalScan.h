@@ -18,11 +18,8 @@ struct LocalScan
 	int64_t scanIndex = -1;  //!< t
 	double timestamp = 0;
 	size_t validBeams = 0;  //!< beams that returned a usable range
-	/** The scanner's range noise allowance: extraction.break_noise_sigmas x its std. error (VectorExtractor), 0 if
-	 * unknown; what Eq. 8's hit band widens to (ScanWipe::hitBandFor) [m]. */
-	double rangeNoise = 0;
 	/** The scanner's range std. dev. (its stdError; 0 if unknown): the floor of a registration's residual
-	 * (VectorMatcher) [m]. */
+	 * (VectorMatcher), Eq. 8's hit band widened by its allowance (ScanWipe::hitBandFor) [m]. */
 	double rangeSigma = 0;
 };
 

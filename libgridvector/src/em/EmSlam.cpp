@@ -78,10 +78,9 @@ std::vector<std::vector<MatchSegment>> EmSlam::staticSegments(const std::vector<
 	for (const auto& c : children)
 	{
 		if (c.state != VectorState::Static || c.scanIndex < 0 || size_t(c.scanIndex) >= poses.size()) continue;
-		const TPose2D inv = TPose2D(0, 0, 0) - poses[size_t(c.scanIndex)];
 		const size_t t = size_t(c.scanIndex);
-		MatchSegment m = MatchSegment::from(c.compose(inv), scans && t < scans->size() ? (*scans)[t].rangeSigma : 0.0);  // back to the scan's frame
-		out[size_t(c.scanIndex)].push_back(m);
+		const double sigma = scans && t < scans->size() ? (*scans)[t].rangeSigma : 0.0;
+		out[t].push_back(MatchSegment::from(c.compose(TPose2D(0, 0, 0) - poses[t]), sigma));  // back to the scan's frame
 	}
 	return out;
 }

@@ -150,14 +150,9 @@ void VectorExtractor::split(const std::vector<TPoint2D>& pts, const PrefixMoment
 	}
 }
 
-double VectorExtractor::noiseAllowance(double rangeSigma) const
-{
-	return std::isfinite(rangeSigma) ? std::min(kMaxTolerance, ext_.breakNoiseSigmas * std::max(0.0, rangeSigma)) : 0.0;
-}
-
 VectorExtractor::FitTolerance VectorExtractor::tolerance(double rangeSigma) const
 {
-	const double noise = noiseAllowance(rangeSigma);
+	const double noise = ext_.noiseAllowance(rangeSigmaOf(rangeSigma));
 	return {std::max(ext_.splitThreshold, noise), std::max(ext_.mergeThreshold, noise)};
 }
 
@@ -219,13 +214,12 @@ LocalScan VectorExtractor::extract(const mrpt::obs::CObservation2DRangeScan& sca
 	std::vector<size_t> runs;
 	scanToRuns(scan, pts, runs);
 	out.validBeams = pts.size();
-	out.rangeNoise = noiseAllowance(scan.stdError);
-	out.rangeSigma = std::isfinite(scan.stdError) ? std::max(0.0, double(scan.stdError)) : 0.0;
+	out.rangeSigma = rangeSigmaOf(scan.stdError);
 	runs.push_back(pts.size());
 	for (size_t r = 0; r + 1 < runs.size(); ++r)
 	{
 		if (runs[r + 1] - runs[r] < size_t(ext_.minPoints)) continue;
-		for (const auto& seg : splitAndMerge(pts, runs[r], runs[r + 1] - 1, scan.stdError))
+		for (const auto& seg : splitAndMerge(pts, runs[r], runs[r + 1] - 1, out.rangeSigma))
 		{
 			if (seg.last - seg.first + 1 < size_t(ext_.minPoints)) continue;
 			GridVector v = makeVector(pts, seg, out.sensorOrigin);

@@ -7,6 +7,7 @@
 
 #include <mrpt/obs/CObservation2DRangeScan.h>
 
+#include <cmath>
 #include <vector>
 
 namespace gridvector
@@ -48,12 +49,13 @@ class VectorExtractor
 	};
 	/** split_threshold and merge_threshold, raised to break_noise_sigmas x rangeSigma where the scanner is
 	 * noisier (its noise alone would split a straight wall, as the breakpoint's allowance already says), at
-	 * most kMaxTolerance. With the usual 0.01 m the keys hold unchanged. */
+	 * most kMaxTolerance (ExtractionOptions::noiseAllowance). With the usual 0.01 m the keys hold unchanged.
+	 * A negative or non-finite rangeSigma is unknown: none. */
 	FitTolerance tolerance(double rangeSigma) const;
-	/** break_noise_sigmas x rangeSigma, at most kMaxTolerance; 0 for a negative or non-finite one (unknown). */
-	double noiseAllowance(double rangeSigma) const;
 	/** A noise-raised tolerance stops here: the keys' own upper bound [m]. */
-	static constexpr double kMaxTolerance = 1.0;
+	static constexpr double kMaxTolerance = ExtractionOptions::kMaxNoiseAllowance;
+	/** A scan's stdError as a range std. dev.: 0 (unknown) if negative or not finite. */
+	static double rangeSigmaOf(double stdError) { return std::isfinite(stdError) && stdError > 0 ? stdError : 0.0; }
 
 	/** Split-and-merge over one run of ordered points [first, last], for a scanner of range std. dev.
 	 * `rangeSigma` (the scan's stdError; tolerance()). */

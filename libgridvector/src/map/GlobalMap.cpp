@@ -110,7 +110,7 @@ ScanWipe::Stats GlobalMap::wipeHolding(const mrpt::math::TPose2D& robotPose, con
 	held = HeldBack{};
 	held.sensor = sensorPosition(robotPose, scan);
 	held.scanIndex = scan.scanIndex;
-	held.hitBand = ScanWipe::hitBandFor(cfg_.map.hitBand, scan);
+	held.hitBand = ScanWipe::hitBandFor(cfg_, scan);
 	wiper_.setHitBand(held.hitBand);
 	std::vector<std::vector<size_t>> mergeTargets(scan.vectors.size());
 	held.targets.resize(scan.vectors.size());

@@ -45,7 +45,7 @@ std::vector<GridVector> GlobalMap::buildPerScan(const std::vector<mrpt::math::TP
 	std::vector<TPoint2D> sensors(scans.size());
 	std::vector<double> bands(scans.size());
 	for (size_t t = 0; t < scans.size(); ++t)
-		sensors[t] = sensorPosition(poses[t], scans[t]), bands[t] = ScanWipe::hitBandFor(cfg.map.hitBand, scans[t]);
+		sensors[t] = sensorPosition(poses[t], scans[t]), bands[t] = ScanWipe::hitBandFor(cfg, scans[t]);
 	WipeProduct(cfg.map.hitBand, kBatchWipeCountsBeams, kWipeBucket).apply(sensors, first, all, bands);
 	return all;
 }

@@ -1,6 +1,7 @@
 // Eq. 8: the update of the map vectors by all wipe triangles of one scan.
 #pragma once
 
+#include <gridvector/GridVectorConfig.h>
 #include <gridvector/LocalScan.h>
 
 #include <gridvector/GridVector.h>
@@ -38,8 +39,11 @@ class ScanWipe
 	explicit ScanWipe(double hitBand, bool countBeams = true) : hitBand_(hitBand), beams_(countBeams) {}
 
 	/** Eq. 8 part c's band for a scan: map.hit_band, or its scanner's noise allowance where that is wider
-	 * (a cell within the range noise of the line is not seen through). */
-	static double hitBandFor(double hitBand, const LocalScan& scan) { return std::max(hitBand, scan.rangeNoise); }
+	 * (a cell within the range noise of the line is not seen through; ExtractionOptions::noiseAllowance). */
+	static double hitBandFor(const GridVectorConfig& cfg, const LocalScan& scan)
+	{
+		return std::max(cfg.map.hitBand, cfg.extraction.noiseAllowance(scan.rangeSigma));
+	}
 	/** The band of the triangles made from now on (a scan's: hitBandFor). */
 	void setHitBand(double hitBand) { hitBand_ = hitBand; }
 

@@ -45,7 +45,7 @@ size_t ClassifiedMap::insert(const TPose2D& pose, const LocalScan& scan)
 	const size_t first = vectors_.size();
 	std::vector<GridVector> fresh;
 	std::vector<WipeTriangle> freshTris;
-	const double band = ScanWipe::hitBandFor(cfg_.map.hitBand, scan);
+	const double band = ScanWipe::hitBandFor(cfg_, scan);
 	fresh.reserve(scan.vectors.size());
 	for (const auto& v : scan.vectors)
 	{
